@@ -1,0 +1,168 @@
+#include "common/bus/run_loop.hpp"
+
+#include <poll.h>
+#include <signal.h>
+#include <sys/signalfd.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <stdexcept>
+
+#include "common/time.hpp"
+
+namespace ifar::bus {
+namespace {
+
+constexpr std::int64_t kErrorLogIntervalUs = 1'000'000;
+
+// Adapts a std::function to LCM 1.3.1's member-function subscription (it has no lambda overload).
+class RawSubscriber {
+ public:
+  explicit RawSubscriber(std::function<void(const lcm::ReceiveBuffer*, const std::string&)> handler)
+      : handler_(std::move(handler))
+  {
+  }
+  void onMessage(const lcm::ReceiveBuffer* buffer, const std::string& channel) { handler_(buffer, channel); }
+
+ private:
+  std::function<void(const lcm::ReceiveBuffer*, const std::string&)> handler_;
+};
+
+sigset_t terminationSignals()
+{
+  sigset_t signals;
+  sigemptyset(&signals);
+  sigaddset(&signals, SIGINT);
+  sigaddset(&signals, SIGTERM);
+  return signals;
+}
+
+}  // namespace
+
+std::string resolveLcmUrl(const std::string& configured)
+{
+  if (!configured.empty()) {
+    return configured;
+  }
+  const char* environment = std::getenv("LCM_DEFAULT_URL");
+  return environment != nullptr ? std::string(environment) : std::string();
+}
+
+struct RunLoop::Subscribers {
+  std::vector<std::unique_ptr<RawSubscriber>> list;
+};
+
+RunLoop::RunLoop(const std::string& url, std::shared_ptr<spdlog::logger> logger)
+    : lcm_(resolveLcmUrl(url)), logger_(std::move(logger)), subscribers_(std::make_unique<Subscribers>())
+{
+  if (!lcm_.good()) {
+    throw std::runtime_error("cannot start LCM on URL '" +
+                             (resolveLcmUrl(url).empty() ? std::string("(default)") : resolveLcmUrl(url)) +
+                             "' (is multicast routed? see docs/deploy.md)");
+  }
+  // Signals become readable events on a file descriptor instead of asynchronous handlers.
+  const sigset_t signals = terminationSignals();
+  pthread_sigmask(SIG_BLOCK, &signals, nullptr);
+  signal_fd_ = signalfd(-1, &signals, SFD_NONBLOCK | SFD_CLOEXEC);
+  if (signal_fd_ < 0) {
+    throw std::runtime_error("cannot create a signalfd for SIGINT/SIGTERM");
+  }
+}
+
+RunLoop::~RunLoop()
+{
+  if (signal_fd_ >= 0) {
+    close(signal_fd_);
+  }
+}
+
+void RunLoop::subscribeRaw(const std::string& channel,
+                           std::function<void(const lcm::ReceiveBuffer*, const std::string&)> handler)
+{
+  auto subscriber = std::make_unique<RawSubscriber>(std::move(handler));
+  lcm_.subscribe(channel, &RawSubscriber::onMessage, subscriber.get());
+  subscribers_->list.push_back(std::move(subscriber));
+}
+
+void RunLoop::guard(const std::string& channel, const std::function<void()>& body)
+{
+  try {
+    body();
+  } catch (const std::exception& error) {
+    ++handler_errors_;
+    const std::int64_t now = common::monotonicMicroseconds();
+    if (now - last_error_log_us_ >= kErrorLogIntervalUs) {
+      last_error_log_us_ = now;
+      logger_->error("handler for {} failed: {} ({} handler errors so far)", channel, error.what(),
+                     handler_errors_);
+    }
+  }
+}
+
+void RunLoop::reportBadMessage(const std::string& channel, const std::string& problem)
+{
+  ++bad_messages_;
+  const std::int64_t now = common::monotonicMicroseconds();
+  if (now - last_error_log_us_ >= kErrorLogIntervalUs) {
+    last_error_log_us_ = now;
+    logger_->warn("skipping a message on {}: {} ({} bad messages so far)", channel, problem, bad_messages_);
+  }
+}
+
+void RunLoop::every(double period_seconds, std::function<void()> callback)
+{
+  const std::int64_t period_us = std::max<std::int64_t>(1, common::secondsToMicroseconds(period_seconds));
+  timers_.push_back(Timer{period_us, common::monotonicMicroseconds() + period_us, std::move(callback)});
+}
+
+void RunLoop::runDueTimers()
+{
+  const std::int64_t now = common::monotonicMicroseconds();
+  for (auto& timer : timers_) {
+    if (now >= timer.next_due_us) {
+      // Skip missed periods instead of bursting to catch up after a stall.
+      timer.next_due_us += timer.period_us * (1 + (now - timer.next_due_us) / timer.period_us);
+      guard("timer", timer.callback);
+    }
+  }
+}
+
+int RunLoop::nextTimeoutMs() const
+{
+  std::int64_t timeout_us = 100'000;
+  const std::int64_t now = common::monotonicMicroseconds();
+  for (const auto& timer : timers_) {
+    timeout_us = std::min(timeout_us, std::max<std::int64_t>(0, timer.next_due_us - now));
+  }
+  return static_cast<int>((timeout_us + 999) / 1000);
+}
+
+void RunLoop::spinOnce(int timeout_ms)
+{
+  pollfd descriptors[2] = {{lcm_.getFileno(), POLLIN, 0}, {signal_fd_, POLLIN, 0}};
+  const int ready = poll(descriptors, 2, timeout_ms);
+  if (ready > 0) {
+    if ((descriptors[1].revents & POLLIN) != 0) {
+      signalfd_siginfo info{};
+      if (read(signal_fd_, &info, sizeof(info)) == static_cast<ssize_t>(sizeof(info))) {
+        logger_->info("received signal {}, shutting down", info.ssi_signo);
+        stopping_ = true;
+      }
+    }
+    if ((descriptors[0].revents & POLLIN) != 0) {
+      lcm_.handleTimeout(0);
+    }
+  }
+  runDueTimers();
+}
+
+int RunLoop::run()
+{
+  while (!stopping_) {
+    spinOnce(nextTimeoutMs());
+  }
+  return 0;
+}
+
+}  // namespace ifar::bus

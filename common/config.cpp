@@ -1,0 +1,352 @@
+#include "common/config.hpp"
+
+#include <cstdint>
+#include <fstream>
+#include <sstream>
+
+namespace ifar::common {
+namespace {
+
+template <typename T>
+const char* typeName();
+template <>
+const char* typeName<bool>()
+{
+  return "boolean (true/false)";
+}
+template <>
+const char* typeName<int>()
+{
+  return "integer";
+}
+template <>
+const char* typeName<std::int64_t>()
+{
+  return "integer";
+}
+template <>
+const char* typeName<double>()
+{
+  return "number";
+}
+template <>
+const char* typeName<std::string>()
+{
+  return "string";
+}
+template <>
+const char* typeName<std::vector<double>>()
+{
+  return "list of numbers";
+}
+template <>
+const char* typeName<std::vector<std::string>>()
+{
+  return "list of strings";
+}
+
+std::string joinPath(const std::string& parent, const std::string& key)
+{
+  return parent.empty() ? key : parent + "." + key;
+}
+
+std::string describeValue(const YAML::Node& node)
+{
+  switch (node.Type()) {
+    case YAML::NodeType::Scalar:
+      return "'" + node.Scalar() + "'";
+    case YAML::NodeType::Sequence:
+      return "a list";
+    case YAML::NodeType::Map:
+      return "a map";
+    case YAML::NodeType::Null:
+      return "nothing";
+    default:
+      return "an undefined value";
+  }
+}
+
+// yaml-cpp converts leniently in places (any scalar is a string, 1.0 is not an int but "1" is a double);
+// these checks keep the reported expectation exact.
+template <typename T>
+bool convert(const YAML::Node& node, T& out)
+{
+  if (!node.IsScalar()) {
+    return false;
+  }
+  try {
+    out = node.as<T>();
+    return true;
+  } catch (const YAML::Exception&) {
+    return false;
+  }
+}
+
+template <typename Element>
+bool convertList(const YAML::Node& node, std::vector<Element>& out)
+{
+  if (!node.IsSequence()) {
+    return false;
+  }
+  out.clear();
+  for (const auto& element : node) {
+    Element value{};
+    if (!convert(element, value)) {
+      return false;
+    }
+    out.push_back(value);
+  }
+  return true;
+}
+
+template <>
+bool convert(const YAML::Node& node, std::vector<double>& out)
+{
+  return convertList(node, out);
+}
+
+template <>
+bool convert(const YAML::Node& node, std::vector<std::string>& out)
+{
+  return convertList(node, out);
+}
+
+std::vector<std::string> splitKey(const std::string& key)
+{
+  std::vector<std::string> parts;
+  std::stringstream stream(key);
+  std::string part;
+  while (std::getline(stream, part, '.')) {
+    parts.push_back(part);
+  }
+  return parts;
+}
+
+}  // namespace
+
+ConfigNode::ConfigNode(const YAML::Node& node, std::string path,
+                       std::shared_ptr<const std::string> source_name,
+                       std::shared_ptr<std::set<std::string>> read_keys)
+    : node_(node),
+      path_(std::move(path)),
+      source_name_(std::move(source_name)),
+      read_keys_(std::move(read_keys))
+{
+}
+
+ConfigNode ConfigNode::loadFile(const std::string& path)
+{
+  std::ifstream stream(path);
+  if (!stream) {
+    throw ConfigError(path + ": cannot open the configuration file");
+  }
+  std::stringstream text;
+  text << stream.rdbuf();
+  return loadString(text.str(), path);
+}
+
+ConfigNode ConfigNode::loadString(const std::string& text, const std::string& source_name)
+{
+  YAML::Node root;
+  try {
+    root = YAML::Load(text);
+  } catch (const YAML::ParserException& error) {
+    throw ConfigError(source_name + ":" + std::to_string(error.mark.line + 1) + ":" +
+                      std::to_string(error.mark.column + 1) + ": YAML syntax error: " + error.msg);
+  }
+  if (root.IsNull()) {
+    root = YAML::Node(YAML::NodeType::Map);
+  }
+  if (!root.IsMap()) {
+    throw ConfigError(source_name + ": the top level must be a map of settings, found " +
+                      describeValue(root));
+  }
+  return ConfigNode(root, "", std::make_shared<const std::string>(source_name),
+                    std::make_shared<std::set<std::string>>());
+}
+
+std::string ConfigNode::describe(const std::string& key) const
+{
+  return *source_name_ + ": key '" + joinPath(path_, key) + "'";
+}
+
+void ConfigNode::fail(const std::string& key, const std::string& problem) const
+{
+  throw ConfigError(describe(key) + ": " + problem);
+}
+
+YAML::Node ConfigNode::lookup(const std::string& key, std::string& full_path) const
+{
+  YAML::Node current = node_;
+  full_path = path_;
+  for (const auto& part : splitKey(key)) {
+    if (!current.IsMap()) {
+      return YAML::Node(YAML::NodeType::Undefined);
+    }
+    // operator[] on a const node does not insert.
+    const YAML::Node& as_const = current;
+    YAML::Node next = as_const[part];
+    full_path = joinPath(full_path, part);
+    read_keys_->insert(full_path);
+    if (!next.IsDefined()) {
+      return next;
+    }
+    current.reset(next);  // operator= would overwrite the referenced node's value in the tree
+  }
+  return current;
+}
+
+bool ConfigNode::has(const std::string& key) const
+{
+  std::string full_path;
+  const YAML::Node value = lookup(key, full_path);
+  return value.IsDefined() && !value.IsNull();
+}
+
+template <typename T>
+T ConfigNode::required(const std::string& key) const
+{
+  std::string full_path;
+  const YAML::Node value = lookup(key, full_path);
+  if (!value.IsDefined() || value.IsNull()) {
+    fail(key, std::string("missing required key (expected ") + typeName<T>() + ")");
+  }
+  T result{};
+  if (!convert(value, result)) {
+    fail(key, std::string("expected ") + typeName<T>() + ", got " + describeValue(value));
+  }
+  return result;
+}
+
+template <typename T>
+T ConfigNode::optional(const std::string& key, const T& fallback) const
+{
+  return has(key) ? required<T>(key) : fallback;
+}
+
+ConfigNode ConfigNode::child(const std::string& key) const
+{
+  std::string full_path;
+  const YAML::Node value = lookup(key, full_path);
+  if (!value.IsDefined() || value.IsNull()) {
+    fail(key, "missing required section (expected a map)");
+  }
+  if (!value.IsMap()) {
+    fail(key, "expected a map, got " + describeValue(value));
+  }
+  return ConfigNode(value, full_path, source_name_, read_keys_);
+}
+
+std::vector<ConfigNode> ConfigNode::sequence(const std::string& key) const
+{
+  std::string full_path;
+  const YAML::Node value = lookup(key, full_path);
+  std::vector<ConfigNode> elements;
+  if (!value.IsDefined() || value.IsNull()) {
+    return elements;
+  }
+  if (!value.IsSequence()) {
+    fail(key, "expected a list, got " + describeValue(value));
+  }
+  for (std::size_t index = 0; index < value.size(); ++index) {
+    const std::string element_path = full_path + "[" + std::to_string(index) + "]";
+    read_keys_->insert(element_path);
+    elements.push_back(ConfigNode(value[index], element_path, source_name_, read_keys_));
+  }
+  return elements;
+}
+
+std::vector<std::string> ConfigNode::keys() const
+{
+  std::vector<std::string> result;
+  if (node_.IsMap()) {
+    for (const auto& entry : node_) {
+      result.push_back(entry.first.as<std::string>());
+    }
+  }
+  return result;
+}
+
+void ConfigNode::collectUnread(const YAML::Node& node, const std::string& path,
+                               std::vector<std::string>& out) const
+{
+  if (node.IsMap()) {
+    for (const auto& entry : node) {
+      const std::string key_path = joinPath(path, entry.first.as<std::string>());
+      if (read_keys_->count(key_path) == 0) {
+        out.push_back(key_path);
+      } else {
+        collectUnread(entry.second, key_path, out);
+      }
+    }
+  } else if (node.IsSequence()) {
+    for (std::size_t index = 0; index < node.size(); ++index) {
+      const std::string element_path = path + "[" + std::to_string(index) + "]";
+      // Lists of scalars are read whole; lists of maps are walked through sequence().
+      if (read_keys_->count(element_path) != 0) {
+        collectUnread(node[index], element_path, out);
+      }
+    }
+  }
+}
+
+void ConfigNode::rejectUnknownKeys() const
+{
+  std::vector<std::string> unread;
+  collectUnread(node_, path_, unread);
+  if (!unread.empty()) {
+    std::string message =
+        *source_name_ + ": key '" + unread.front() + "': unknown key (no setting has this name";
+    if (unread.size() > 1) {
+      message += "; " + std::to_string(unread.size() - 1) + " more unknown key(s)";
+    }
+    throw ConfigError(message + ")");
+  }
+}
+
+void ConfigNode::acceptAllUnder(const std::string& key) const
+{
+  std::string full_path;
+  const YAML::Node value = lookup(key, full_path);
+  if (!value.IsDefined()) {
+    return;
+  }
+  // Record every nested key as read.
+  std::vector<std::pair<YAML::Node, std::string>> pending{{value, full_path}};
+  while (!pending.empty()) {
+    auto [node, path] = pending.back();
+    pending.pop_back();
+    if (node.IsMap()) {
+      for (const auto& entry : node) {
+        const std::string key_path = joinPath(path, entry.first.as<std::string>());
+        read_keys_->insert(key_path);
+        pending.emplace_back(entry.second, key_path);
+      }
+    } else if (node.IsSequence()) {
+      for (std::size_t index = 0; index < node.size(); ++index) {
+        const std::string element_path = path + "[" + std::to_string(index) + "]";
+        read_keys_->insert(element_path);
+        pending.emplace_back(node[index], element_path);
+      }
+    }
+  }
+}
+
+template bool ConfigNode::required<bool>(const std::string&) const;
+template int ConfigNode::required<int>(const std::string&) const;
+template std::int64_t ConfigNode::required<std::int64_t>(const std::string&) const;
+template double ConfigNode::required<double>(const std::string&) const;
+template std::string ConfigNode::required<std::string>(const std::string&) const;
+template std::vector<double> ConfigNode::required<std::vector<double>>(const std::string&) const;
+template std::vector<std::string> ConfigNode::required<std::vector<std::string>>(const std::string&) const;
+template bool ConfigNode::optional<bool>(const std::string&, const bool&) const;
+template int ConfigNode::optional<int>(const std::string&, const int&) const;
+template std::int64_t ConfigNode::optional<std::int64_t>(const std::string&, const std::int64_t&) const;
+template double ConfigNode::optional<double>(const std::string&, const double&) const;
+template std::string ConfigNode::optional<std::string>(const std::string&, const std::string&) const;
+template std::vector<double> ConfigNode::optional<std::vector<double>>(const std::string&,
+                                                                       const std::vector<double>&) const;
+template std::vector<std::string> ConfigNode::optional<std::vector<std::string>>(
+    const std::string&, const std::vector<std::string>&) const;
+
+}  // namespace ifar::common

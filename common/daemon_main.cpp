@@ -1,0 +1,66 @@
+#include "common/daemon_main.hpp"
+
+#include <cstdlib>
+#include <exception>
+#include <iostream>
+
+#include "common/logging.hpp"
+
+namespace ifar::common {
+
+int runDaemon(int argc, char** argv, const DaemonDescription& description,
+              const std::function<int(DaemonContext&)>& body,
+              const std::function<void(CLI::App&)>& add_options)
+{
+  CLI::App app{description.summary, "ifar-" + description.name};
+  std::string config_path = description.default_config;
+  std::string log_level;
+  std::string log_directory = "logs";
+  std::string lcm_url;
+  app.add_option("--config", config_path, "YAML configuration file")->capture_default_str();
+  app.add_option("--log-level", log_level,
+                 "trace, debug, info, warn, error, critical or off (overrides SPDLOG_LEVEL and the config)");
+  app.add_option("--log-dir", log_directory, "folder for the rotating log file (\"\" = console only)")
+      ->capture_default_str();
+  app.add_option("--lcm-url", lcm_url, "LCM URL (overrides the config's lcm_url and LCM_DEFAULT_URL)");
+  if (add_options) {
+    add_options(app);
+  }
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& error) {
+    return app.exit(error);
+  }
+
+  std::shared_ptr<spdlog::logger> logger;
+  try {
+    ConfigNode config = config_path.empty() ? ConfigNode::loadString("", "(no configuration file)")
+                                            : ConfigNode::loadFile(config_path);
+    LoggingOptions logging;
+    logging.log_directory = log_directory;
+    logging.config_level = config.optional<std::string>("log_level", "");
+    logging.command_line_level = log_level;
+    try {
+      chooseLogLevel(logging, std::getenv("SPDLOG_LEVEL"));
+    } catch (const std::invalid_argument& error) {
+      throw ConfigError(std::string("log level: ") + error.what());
+    }
+    logger = makeLogger(description.name, logging);
+    DaemonContext context{config, logger,
+                          lcm_url.empty() ? config.optional<std::string>("lcm_url", "") : lcm_url};
+    return body(context);
+  } catch (const ConfigError& error) {
+    std::cerr << "ifar-" << description.name << ": error: " << error.what() << std::endl;
+    return 2;
+  } catch (const std::exception& error) {
+    if (logger) {
+      logger->critical("stopping on an unexpected error: {}", error.what());
+      logger->flush();
+    } else {
+      std::cerr << "ifar-" << description.name << ": error: " << error.what() << std::endl;
+    }
+    return 1;
+  }
+}
+
+}  // namespace ifar::common

@@ -1,0 +1,45 @@
+#pragma once
+// The start-up every daemon shares: --help, --config FILE, --log-level LEVEL, --lcm-url URL; the config
+// loaded strictly; the named logger made; bad config reported as "error: <file>: key '<k>': ..." and
+// exit code 2; any escaping exception logged and exit code 1.
+//
+//   int main(int argc, char** argv) {
+//     return ifar::common::runDaemon(argc, argv, {"planner", "DV-graph planner", "config/planner.yaml"},
+//                                    [](ifar::common::DaemonContext& context) {
+//                                      const auto settings = loadPlannerSettings(context.config);
+//                                      context.config.rejectUnknownKeys();
+//                                      ... return exit code ...
+//                                    });
+//   }
+//
+// The YAML may hold `log_level: info` and `lcm_url: udpm://...` at top level; runDaemon reads both.
+
+#include <functional>
+#include <memory>
+#include <string>
+
+#include <spdlog/spdlog.h>
+#include <CLI/CLI.hpp>
+
+#include "common/config.hpp"
+
+namespace ifar::common {
+
+struct DaemonDescription {
+  std::string name;            // logger and process name, e.g. "planner"
+  std::string summary;         // one line for --help
+  std::string default_config;  // path relative to the working directory; "" = config optional
+};
+
+struct DaemonContext {
+  ConfigNode config;
+  std::shared_ptr<spdlog::logger> logger;
+  std::string lcm_url;  // from --lcm-url, else the config's lcm_url, else "" (LCM_DEFAULT_URL / default)
+};
+
+/// `add_options` may register extra command-line options before parsing (may be empty).
+int runDaemon(int argc, char** argv, const DaemonDescription& description,
+              const std::function<int(DaemonContext&)>& body,
+              const std::function<void(CLI::App&)>& add_options = {});
+
+}  // namespace ifar::common

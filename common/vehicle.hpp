@@ -1,0 +1,33 @@
+#pragma once
+// The vehicle's dimensions and limits, from config/vehicle.yaml. One struct shared by simulator,
+// planner and executive so they agree on what the vehicle is.
+
+#include "common/config.hpp"
+
+namespace ifar::common {
+
+struct VehicleSettings {
+  double length_m = 0.9;
+  double width_m = 0.7;
+  double wheel_track_m = 0.6;
+  double wheel_radius_m = 0.15;
+  double mass_kg = 80.0;
+  double traction_coefficient = 0.7;
+  double max_linear_velocity = 1.0;
+  double max_angular_velocity = 1.2;
+  double max_linear_acceleration = 1.0;
+  double max_angular_acceleration = 2.0;
+  double bumper_width_m = 0.7;
+  double bumper_friction = 0.5;
+  double lidar_height_m = 0.8;
+  double lidar_x_m = 0.2;
+  double force_sensor_range_n = 800.0;
+
+  /// The largest force the wheels can push with before slipping: traction x mass x g.
+  double maxPushForce() const { return traction_coefficient * mass_kg * 9.81; }
+};
+
+/// Reads every key of vehicle.yaml (all required, all positive) and rejects unknown ones.
+VehicleSettings loadVehicleSettings(const ConfigNode& node);
+
+}  // namespace ifar::common

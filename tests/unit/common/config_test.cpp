@@ -1,0 +1,143 @@
+#include <gtest/gtest.h>
+
+#include "common/config.hpp"
+
+namespace {
+
+using ifar::common::ConfigError;
+using ifar::common::ConfigNode;
+
+// The message of the ConfigError `body` throws, or "" when it throws nothing.
+template <typename Body>
+std::string errorOf(Body body)
+{
+  try {
+    body();
+  } catch (const ConfigError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+const char* kPlanner = R"(
+rate_hz: 2.5
+name: planner
+enabled: true
+graph:
+  votes: 10
+  radius: 0.5
+  weights: [1.0, 2.5]
+layers:
+  - {name: background, cell: 0.15}
+  - {name: movable, cell: 0.3}
+)";
+
+TEST(Config, ReadsValuesOfEveryType)
+{
+  const auto root = ConfigNode::loadString(kPlanner, "planner.yaml");
+  EXPECT_DOUBLE_EQ(root.required<double>("rate_hz"), 2.5);
+  EXPECT_EQ(root.required<std::string>("name"), "planner");
+  EXPECT_TRUE(root.required<bool>("enabled"));
+  EXPECT_EQ(root.required<int>("graph.votes"), 10);
+  EXPECT_EQ(root.child("graph").required<std::int64_t>("votes"), 10);
+  EXPECT_EQ(root.required<std::vector<double>>("graph.weights"), (std::vector<double>{1.0, 2.5}));
+  EXPECT_EQ(root.optional<int>("graph.missing", 7), 7);
+  const auto layers = root.sequence("layers");
+  ASSERT_EQ(layers.size(), 2U);
+  EXPECT_EQ(layers[1].required<std::string>("name"), "movable");
+  EXPECT_DOUBLE_EQ(layers[1].required<double>("cell"), 0.3);
+}
+
+TEST(Config, AcceptsAFileWhoseKeysWereAllRead)
+{
+  const auto root = ConfigNode::loadString(kPlanner, "planner.yaml");
+  root.required<double>("rate_hz");
+  root.required<std::string>("name");
+  root.required<bool>("enabled");
+  const auto graph = root.child("graph");
+  graph.required<int>("votes");
+  graph.required<double>("radius");
+  graph.required<std::vector<double>>("weights");
+  for (const auto& layer : root.sequence("layers")) {
+    layer.required<std::string>("name");
+    layer.required<double>("cell");
+  }
+  EXPECT_NO_THROW(root.rejectUnknownKeys());
+}
+
+TEST(Config, UnknownKeyNamesFileAndKey)
+{
+  const auto root =
+      ConfigNode::loadString("rate_hz: 2.5\ngraph:\n  votes: 3\n  vots: 4\n", "config/planner.yaml");
+  root.required<double>("rate_hz");
+  root.child("graph").required<int>("votes");
+  EXPECT_EQ(errorOf([&] { root.rejectUnknownKeys(); }),
+            "config/planner.yaml: key 'graph.vots': unknown key (no setting has this name)");
+}
+
+TEST(Config, UnknownKeyInsideAListOfMaps)
+{
+  const auto root = ConfigNode::loadString("layers:\n  - {name: a, colour: red}\n", "w.yaml");
+  root.sequence("layers")[0].required<std::string>("name");
+  EXPECT_EQ(errorOf([&] { root.rejectUnknownKeys(); }),
+            "w.yaml: key 'layers[0].colour': unknown key (no setting has this name)");
+}
+
+TEST(Config, MissingRequiredKeyNamesTheExpectedType)
+{
+  const auto root = ConfigNode::loadString("graph: {votes: 3}\n", "planner.yaml");
+  EXPECT_EQ(errorOf([&] { root.required<double>("graph.radius"); }),
+            "planner.yaml: key 'graph.radius': missing required key (expected number)");
+}
+
+TEST(Config, WrongTypesNameExpectationAndValue)
+{
+  const auto root = ConfigNode::loadString("votes: ten\nrate: [1, 2]\nflag: maybe\ncount: 2.5\n", "p.yaml");
+  EXPECT_EQ(errorOf([&] { root.required<int>("votes"); }),
+            "p.yaml: key 'votes': expected integer, got 'ten'");
+  EXPECT_EQ(errorOf([&] { root.required<double>("rate"); }),
+            "p.yaml: key 'rate': expected number, got a list");
+  EXPECT_EQ(errorOf([&] { root.required<bool>("flag"); }),
+            "p.yaml: key 'flag': expected boolean (true/false), got 'maybe'");
+  EXPECT_EQ(errorOf([&] { root.required<int>("count"); }),
+            "p.yaml: key 'count': expected integer, got '2.5'");
+  EXPECT_EQ(errorOf([&] { root.optional<int>("votes", 1); }),
+            "p.yaml: key 'votes': expected integer, got 'ten'");
+  EXPECT_EQ(errorOf([&] { root.child("votes"); }), "p.yaml: key 'votes': expected a map, got 'ten'");
+}
+
+TEST(Config, SyntaxErrorNamesLine)
+{
+  const std::string message = errorOf([] { ConfigNode::loadString("a: 1\nb: [1, 2\n", "bad.yaml"); });
+  EXPECT_EQ(message.rfind("bad.yaml:", 0), 0U) << message;
+  EXPECT_NE(message.find("YAML syntax error"), std::string::npos) << message;
+}
+
+TEST(Config, MissingFileIsAnError)
+{
+  EXPECT_EQ(errorOf([] { ConfigNode::loadFile("/nonexistent/x.yaml"); }),
+            "/nonexistent/x.yaml: cannot open the configuration file");
+}
+
+TEST(Config, TopLevelMustBeAMap)
+{
+  EXPECT_EQ(errorOf([] { ConfigNode::loadString("- 1\n- 2\n", "l.yaml"); }),
+            "l.yaml: the top level must be a map of settings, found a list");
+}
+
+TEST(Config, EmptyFileIsAnEmptyMap)
+{
+  const auto root = ConfigNode::loadString("", "empty.yaml");
+  EXPECT_FALSE(root.has("anything"));
+  EXPECT_NO_THROW(root.rejectUnknownKeys());
+}
+
+TEST(Config, AcceptAllUnderSkipsAFreeFormSection)
+{
+  const auto root = ConfigNode::loadString("name: x\nextra: {a: 1, b: [1, {c: 2}]}\n", "f.yaml");
+  root.required<std::string>("name");
+  root.acceptAllUnder("extra");
+  EXPECT_NO_THROW(root.rejectUnknownKeys());
+}
+
+}  // namespace
