@@ -40,7 +40,10 @@ double signedArea(const Polygon& polygon)
   return 0.5 * twice_area;
 }
 
-double area(const Polygon& polygon) { return std::abs(signedArea(polygon)); }
+double area(const Polygon& polygon)
+{
+  return std::abs(signedArea(polygon));
+}
 
 Point centroid(const Polygon& polygon)
 {

@@ -17,7 +17,10 @@ Polygon rectangle(double x0, double y0, double x1, double y1)
 }
 
 /// An L shape (concave at (1, 1)).
-Polygon lShape() { return {Point(0, 0), Point(2, 0), Point(2, 1), Point(1, 1), Point(1, 2), Point(0, 2)}; }
+Polygon lShape()
+{
+  return {Point(0, 0), Point(2, 0), Point(2, 1), Point(1, 1), Point(1, 2), Point(0, 2)};
+}
 
 TEST(PolygonArea, SignFollowsOrientation)
 {
@@ -80,7 +83,7 @@ TEST(PointInPolygon, ConcavePolygon)
   EXPECT_EQ(locatePoint(shape, Point(0.5, 1.5)), Containment::Inside);
   EXPECT_EQ(locatePoint(shape, Point(1.5, 0.5)), Containment::Inside);
   EXPECT_EQ(locatePoint(shape, Point(1.5, 1.5)), Containment::Outside);  // the notch
-  EXPECT_EQ(locatePoint(shape, Point(1, 1)), Containment::Boundary);    // the reflex vertex
+  EXPECT_EQ(locatePoint(shape, Point(1, 1)), Containment::Boundary);     // the reflex vertex
   EXPECT_EQ(locatePoint(shape, Point(1.5, 1)), Containment::Boundary);
   // Clockwise input gives the same answers.
   const Polygon clockwise(shape.rbegin(), shape.rend());
@@ -105,7 +108,8 @@ TEST(Convexity, ConvexAndConcave)
 
 TEST(Convexity, CollinearVerticesAllowed)
 {
-  const Polygon with_collinear = {Point(0, 0), Point(1, 0), Point(2, 0), Point(2, 2), Point(1, 2), Point(0, 2)};
+  const Polygon with_collinear = {Point(0, 0), Point(1, 0), Point(2, 0),
+                                  Point(2, 2), Point(1, 2), Point(0, 2)};
   EXPECT_TRUE(isConvex(with_collinear));
   // A repeated vertex is a zero-length edge, not a turn.
   EXPECT_TRUE(isConvex({Point(0, 0), Point(1, 0), Point(1, 0), Point(1, 1), Point(0, 1)}));
@@ -199,8 +203,8 @@ TEST(Distance, ToBoundary)
 TEST(PolygonsIntersect, TouchingCounts)
 {
   const Polygon left = rectangle(0, 0, 1, 1);
-  EXPECT_TRUE(polygonsIntersect(left, rectangle(1, 0, 2, 1)));    // shared edge
-  EXPECT_TRUE(polygonsIntersect(left, rectangle(1, 1, 2, 2)));    // shared vertex
+  EXPECT_TRUE(polygonsIntersect(left, rectangle(1, 0, 2, 1)));       // shared edge
+  EXPECT_TRUE(polygonsIntersect(left, rectangle(1, 1, 2, 2)));       // shared vertex
   EXPECT_TRUE(polygonsIntersect(left, rectangle(1, 0.25, 2, 0.5)));  // partial edge contact
   EXPECT_TRUE(polygonsIntersect(left, rectangle(0.5, 0.5, 3, 3)));   // overlap
 }

@@ -5,7 +5,10 @@
 namespace ifar::geometry {
 namespace {
 
-Segment segment(double x0, double y0, double x1, double y1) { return Segment{Point(x0, y0), Point(x1, y1)}; }
+Segment segment(double x0, double y0, double x1, double y1)
+{
+  return Segment{Point(x0, y0), Point(x1, y1)};
+}
 
 TEST(Segment, ProperCrossing)
 {

@@ -1,0 +1,179 @@
+// ifar-can (run as `ifar can ...`): the CAN bus from the command line, on whichever bus config/can.yaml
+// (or --bus) names, so the LCM bridge and SocketCAN look the same to a person debugging.
+//   ifar can dump [-l FILE] [--count N]     print frames in candump -l format (or append them to FILE)
+//   ifar can play FILE [--speed S]          send a candump log's frames with their recorded timing
+// Both take --config FILE (default config/can.yaml), --bus socketcan|lcm, --interface, --channel,
+// --lcm-url.
+
+#include <chrono>
+#include <cstdint>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <thread>
+
+#include <CLI/CLI.hpp>
+
+#include "common/config.hpp"
+#include "drivers/can/candump_log.hpp"
+#include "drivers/can/open_bus.hpp"
+
+namespace {
+
+struct Options {
+  std::string config = "config/can.yaml";
+  std::string bus_kind;
+  std::string interface;
+  std::string channel;
+  std::string lcm_url;
+  std::string output;
+  std::string input;
+  std::int64_t count = 0;
+  double speed = 1.0;
+};
+
+std::int64_t steadyMicroseconds()
+{
+  return std::chrono::duration_cast<std::chrono::microseconds>(
+             std::chrono::steady_clock::now().time_since_epoch())
+      .count();
+}
+
+ifar::can::BusSettings resolveBus(const Options& options)
+{
+  ifar::can::BusSettings settings;
+  std::ifstream probe(options.config);
+  if (probe) {
+    const auto root = ifar::common::ConfigNode::loadFile(options.config);
+    settings = ifar::can::loadBusSettings(root);
+  }
+  if (!options.bus_kind.empty()) {
+    if (options.bus_kind == "socketcan") {
+      settings.kind = ifar::can::BusKind::kSocketCan;
+    } else if (options.bus_kind == "lcm") {
+      settings.kind = ifar::can::BusKind::kLcm;
+    } else {
+      throw std::invalid_argument("--bus '" + options.bus_kind + "' is not socketcan or lcm");
+    }
+  }
+  if (settings.kind == ifar::can::BusKind::kCandump) {
+    settings.kind = ifar::can::BusKind::kLcm;  // a log is what we read or write here, not the bus
+  }
+  if (!options.interface.empty())
+    settings.interface = options.interface;
+  if (!options.channel.empty())
+    settings.lcm_channel = options.channel;
+  return settings;
+}
+
+int dump(ifar::can::CanBus& bus, const Options& options, const std::string& interface_name)
+{
+  std::ofstream file;
+  if (!options.output.empty()) {
+    file.open(options.output, std::ios::app);
+    if (!file) {
+      std::cerr << "ifar can dump: cannot open '" << options.output << "' for writing\n";
+      return 1;
+    }
+  }
+  std::ostream& out = options.output.empty() ? std::cout : file;
+  std::int64_t written = 0;
+  while (options.count <= 0 || written < options.count) {
+    const auto received = bus.receive(std::chrono::milliseconds(200));
+    if (received.status == ifar::can::IoStatus::kError) {
+      std::cerr << "ifar can dump: " << received.error << "\n";
+      return 1;
+    }
+    if (received.status != ifar::can::IoStatus::kOk) {
+      continue;
+    }
+    out << ifar::can::formatCandumpLine(received.frame, interface_name) << "\n" << std::flush;
+    ++written;
+  }
+  return 0;
+}
+
+int play(ifar::can::CanBus& bus, const Options& options)
+{
+  auto opened = ifar::can::CandumpLogBus::open(options.input, "");
+  if (!opened.bus) {
+    std::cerr << "ifar can play: " << opened.error << "\n";
+    return 1;
+  }
+  std::int64_t first_log_us = -1;
+  const std::int64_t start_us = steadyMicroseconds();
+  std::int64_t sent = 0;
+  while (true) {
+    const auto next = opened.bus->receive(std::chrono::microseconds(0));
+    if (next.status != ifar::can::IoStatus::kOk)
+      break;
+    if (first_log_us < 0)
+      first_log_us = next.frame.timestamp_us;
+    if (options.speed > 0.0) {
+      const auto due_us =
+          start_us + static_cast<std::int64_t>(static_cast<double>(next.frame.timestamp_us - first_log_us) /
+                                               options.speed);
+      const std::int64_t wait_us = due_us - steadyMicroseconds();
+      if (wait_us > 0)
+        std::this_thread::sleep_for(std::chrono::microseconds(wait_us));
+    }
+    const auto result = bus.send(next.frame);
+    if (result.status != ifar::can::IoStatus::kOk) {
+      std::cerr << "ifar can play: " << result.error << "\n";
+      return 1;
+    }
+    ++sent;
+  }
+  std::cerr << "ifar can play: sent " << sent << " frames, skipped " << opened.bus->counters().bad_frames
+            << " bad lines\n";
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+  CLI::App app("CAN bus tool: dump frames in candump format, or play a candump log onto the bus", "ifar can");
+  Options options;
+  app.add_option("--config", options.config, "can.yaml whose `bus` section is used when present")
+      ->capture_default_str();
+  app.add_option("--bus", options.bus_kind, "socketcan or lcm (overrides the config)");
+  app.add_option("--interface", options.interface, "SocketCAN interface (e.g. can0, vcan0)");
+  app.add_option("--channel", options.channel, "LCM channel carrying can_frame_t (e.g. CAN_VEHICLE)");
+  app.add_option("--lcm-url", options.lcm_url, "LCM URL (default: LCM_DEFAULT_URL or LCM's default)");
+  app.fallthrough();  // set before the subcommands, which inherit it: `ifar can dump --bus lcm` works
+  auto* dump_command = app.add_subcommand("dump", "print received frames in candump -l format");
+  dump_command->add_option("-l,--log", options.output, "append to this file instead of printing");
+  dump_command->add_option("-n,--count", options.count, "stop after this many frames (0 = run until killed)");
+  auto* play_command = app.add_subcommand("play", "send the frames of a candump log with their timing");
+  play_command->add_option("file", options.input, "candump -l log")->required();
+  play_command->add_option("--speed", options.speed, "time scale; 0 = as fast as possible")
+      ->capture_default_str();
+  app.require_subcommand(1);
+  CLI11_PARSE(app, argc, argv);
+
+  try {
+    const ifar::can::BusSettings settings = resolveBus(options);
+    lcm::LCM lcm(options.lcm_url);
+    if (settings.kind == ifar::can::BusKind::kLcm && !lcm.good()) {
+      std::cerr << "ifar can: cannot start LCM (url '" << options.lcm_url << "')\n";
+      return 1;
+    }
+    auto opened = ifar::can::openBus(settings, lcm);
+    if (!opened.bus) {
+      std::cerr << "ifar can: " << opened.error << "\n";
+      return 1;
+    }
+    const std::string interface_name =
+        settings.kind == ifar::can::BusKind::kSocketCan ? settings.interface : settings.lcm_channel;
+    return dump_command->parsed() ? dump(*opened.bus, options, interface_name) : play(*opened.bus, options);
+  } catch (const ifar::common::ConfigError& error) {
+    std::cerr << "ifar can: error: " << error.what() << "\n";
+    return 2;
+  } catch (const std::invalid_argument& error) {
+    std::cerr << "ifar can: error: " << error.what() << "\n";
+    return 2;
+  }
+}

@@ -1,0 +1,230 @@
+// ifar-force-driver: reads the bumper force sensor's frames from the configured CAN bus (SocketCAN, the
+// LCM bridge, or a candump log), publishes force_t on FORCE for every valid frame (and while the sensor
+// is silent, every timeout period with STATUS_SILENT), republishes raw frames from a SocketCAN/candump
+// bus as can_frame_t, and reports the bus's health on CAN_STATUS once a second.
+
+#include <chrono>
+#include <cstdint>
+#include <string>
+
+#include "common/bus/run_loop.hpp"
+#include "common/daemon_main.hpp"
+#include "common/rate_limiter.hpp"
+#include "common/time.hpp"
+#include "drivers/can/error_frame.hpp"
+#include "drivers/can/lcm_bridge_bus.hpp"
+#include "drivers/can/open_bus.hpp"
+#include "drivers/force_sensor/force_monitor.hpp"
+#include "ifar/can_bus_status_t.hpp"
+#include "ifar/force_t.hpp"
+
+namespace {
+
+struct DriverSettings {
+  ifar::can::BusSettings bus;
+  std::string raw_channel;
+  std::string status_channel;
+  std::string force_channel;
+  ifar::force_sensor::ForceMonitorSettings monitor;
+};
+
+DriverSettings loadSettings(const ifar::common::ConfigNode& root)
+{
+  DriverSettings settings;
+  settings.bus = ifar::can::loadBusSettings(root);
+  settings.raw_channel = root.optional<std::string>("raw_channel", "CAN_VEHICLE");
+  settings.status_channel = root.optional<std::string>("status_channel", "CAN_STATUS");
+  const auto sensor = root.child("force_sensor");
+  const int frame_id = sensor.required<int>("frame_id");
+  if (frame_id < 0 || frame_id > 0x7FF) {
+    sensor.fail("frame_id", "must be a standard id, 0..2047 (0x7FF)");
+  }
+  settings.monitor.frame_id = static_cast<std::uint32_t>(frame_id);
+  const int silence_ms = sensor.optional<int>("silence_timeout_ms", 50);
+  if (silence_ms <= 0) {
+    sensor.fail("silence_timeout_ms", "must be positive");
+  }
+  settings.monitor.silence_timeout_us = silence_ms * 1000LL;
+  settings.monitor.stuck_counter_frames = sensor.optional<int>("stuck_counter_frames", 3);
+  if (settings.monitor.stuck_counter_frames < 2) {
+    sensor.fail("stuck_counter_frames", "must be at least 2");
+  }
+  settings.force_channel = sensor.optional<std::string>("channel", "FORCE");
+  root.acceptAllUnder("motor");  // the motor client's section of the shared file
+  return settings;
+}
+
+std::int8_t toLcmState(ifar::can::BusState state)
+{
+  switch (state) {
+    case ifar::can::BusState::kActive:
+      return ifar::can_bus_status_t::STATE_ACTIVE;
+    case ifar::can::BusState::kWarning:
+      return ifar::can_bus_status_t::STATE_WARNING;
+    case ifar::can::BusState::kPassive:
+      return ifar::can_bus_status_t::STATE_PASSIVE;
+    case ifar::can::BusState::kBusOff:
+      return ifar::can_bus_status_t::STATE_BUS_OFF;
+  }
+  return ifar::can_bus_status_t::STATE_ACTIVE;
+}
+
+ifar::force_t toMessage(const ifar::force_sensor::ForceSample& sample, std::int64_t utime)
+{
+  ifar::force_t message{};
+  message.utime = utime;
+  message.force_n = static_cast<float>(sample.force_newtons);
+  message.counter = sample.counter;
+  message.status = sample.status;
+  message.frames_bad = sample.frames_bad;
+  return message;
+}
+
+int run(ifar::common::DaemonContext& context)
+{
+  const DriverSettings settings = loadSettings(context.config);
+  context.config.rejectUnknownKeys();
+  auto& logger = *context.logger;
+
+  ifar::bus::RunLoop loop(context.lcm_url, context.logger);
+  auto opened = ifar::can::openBus(settings.bus, loop.lcm());
+  if (!opened.bus) {
+    logger.error("{}", opened.error);
+    return 1;
+  }
+  ifar::can::CanBus& bus = *opened.bus;
+  logger.info("force sensor id 0x{:03X} on {} ({})", settings.monitor.frame_id, bus.name(),
+              ifar::can::toString(settings.bus.kind));
+  const bool republish_raw = settings.bus.kind != ifar::can::BusKind::kLcm;
+
+  ifar::force_sensor::ForceMonitor monitor(settings.monitor);
+  ifar::common::RateLimiter bad_frame_log(ifar::common::kMicrosecondsPerSecond);
+  std::int64_t unknown_frames = 0;
+  std::int64_t last_silent_publish_us = 0;
+  std::int32_t last_status = -1;
+  ifar::can::BusState last_bus_state = bus.state();
+  // A replayed log is paced as it was recorded: frame time + offset = wall time.
+  std::int64_t replay_offset_us = 0;
+  bool replay_started = false;
+  bool replay_pending = false;
+  ifar::can::Frame replay_frame;
+
+  const auto handleFrame = [&](const ifar::can::Frame& received) {
+    const std::int64_t now_us = ifar::common::nowMicroseconds();
+    ifar::can::Frame frame = received;
+    if (settings.bus.kind != ifar::can::BusKind::kSocketCan) {
+      frame.timestamp_us = now_us;  // kernel timestamps only come from SocketCAN
+    }
+    if (republish_raw) {
+      loop.publish(settings.raw_channel, ifar::can::toLcm(frame));
+    }
+    if (frame.error()) {
+      if (bus.state() != last_bus_state) {
+        logger.warn("{}: {} ({})", bus.name(), ifar::can::toString(bus.state()),
+                    ifar::can::describeErrorFrame(frame));
+        last_bus_state = bus.state();
+      }
+      return;
+    }
+    const auto verdict = monitor.onFrame(frame, now_us);
+    if (verdict == ifar::force_sensor::FrameVerdict::kIgnored) {
+      ++unknown_frames;
+      return;
+    }
+    if (verdict == ifar::force_sensor::FrameVerdict::kBad) {
+      if (bad_frame_log.allow(now_us)) {
+        logger.warn("bad force sensor frame (dlc {}) skipped; {} bad so far", frame.dlc,
+                    monitor.sample(now_us).frames_bad);
+      }
+      return;
+    }
+    const auto sample = monitor.sample(now_us);
+    loop.publish(settings.force_channel, toMessage(sample, frame.timestamp_us));
+    if (sample.status != last_status) {
+      logger.info("force sensor status {} -> {}", last_status, sample.status);
+      last_status = sample.status;
+    }
+  };
+
+  const auto drain = [&] {
+    const std::int64_t now_us = ifar::common::nowMicroseconds();
+    for (int budget = 0; budget < 1000; ++budget) {
+      if (settings.bus.kind == ifar::can::BusKind::kCandump) {
+        if (!replay_pending) {
+          const auto result = bus.receive(std::chrono::microseconds(0));
+          if (result.status != ifar::can::IoStatus::kOk) {
+            if (result.status == ifar::can::IoStatus::kEndOfStream) {
+              logger.info("{}: end of log", bus.name());
+              loop.stop();
+            }
+            break;
+          }
+          replay_frame = result.frame;
+          replay_pending = true;
+          if (!replay_started) {
+            replay_offset_us = now_us - replay_frame.timestamp_us;
+            replay_started = true;
+          }
+        }
+        if (replay_frame.timestamp_us + replay_offset_us > now_us) {
+          break;
+        }
+        replay_pending = false;
+        handleFrame(replay_frame);
+        continue;
+      }
+      const auto result = bus.receive(std::chrono::microseconds(0));
+      if (result.status == ifar::can::IoStatus::kError) {
+        if (bad_frame_log.allow(now_us)) {
+          logger.error("{}", result.error);
+        }
+        break;
+      }
+      if (result.status != ifar::can::IoStatus::kOk) {
+        break;
+      }
+      handleFrame(result.frame);
+    }
+    // A silent sensor is reported every timeout period, so listeners see the flag without the frames.
+    const auto sample = monitor.sample(now_us);
+    if ((sample.status & ifar::force_sensor::kHealthSilent) != 0 &&
+        now_us - last_silent_publish_us >= settings.monitor.silence_timeout_us) {
+      loop.publish(settings.force_channel, toMessage(sample, now_us));
+      last_silent_publish_us = now_us;
+      if (sample.status != last_status) {
+        logger.warn("force sensor silent: no valid frame for {} ms",
+                    settings.monitor.silence_timeout_us / 1000);
+        last_status = sample.status;
+      }
+    }
+  };
+
+  loop.every(0.001, drain);
+  loop.every(1.0, [&] {
+    const auto counters = bus.counters();
+    ifar::can_bus_status_t status{};
+    status.utime = ifar::common::nowMicroseconds();
+    status.bus_name = bus.name();
+    status.state = toLcmState(bus.state());
+    status.frames_received = counters.frames_received;
+    status.frames_sent = counters.frames_sent;
+    status.error_frames = counters.error_frames;
+    status.write_errors = counters.write_errors;
+    status.bad_frames = counters.bad_frames + monitor.sample(status.utime).frames_bad + unknown_frames;
+    loop.publish(settings.status_channel, status);
+    const auto suppressed = bad_frame_log.takeSuppressed();
+    if (suppressed > 0) {
+      logger.warn("{} more bad-frame reports suppressed", suppressed);
+    }
+  });
+  return loop.run();
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+  return ifar::common::runDaemon(
+      argc, argv, {"force-driver", "Bumper force sensor driver: CAN frames to force_t", "config/can.yaml"},
+      run);
+}

@@ -1,0 +1,194 @@
+// ifar-velodyne-driver: VLP-16 packets from UDP (or a pcap file) onto LCM, raw, with a 1 Hz status.
+
+#include <poll.h>
+
+#include <algorithm>
+#include <array>
+#include <string>
+#include <vector>
+
+#include "common/bus/run_loop.hpp"
+#include "common/daemon_main.hpp"
+#include "common/time.hpp"
+#include "drivers/velodyne/driver_settings.hpp"
+#include "drivers/velodyne/packet_forwarder.hpp"
+#include "drivers/velodyne/pcap_reader.hpp"
+#include "drivers/velodyne/udp_receiver.hpp"
+
+namespace ifar::velodyne {
+namespace {
+
+struct ReplayOptions {
+  std::string pcap_path;  // "" = live UDP
+  double speed = 1.0;     // 0 = as fast as possible
+};
+
+// Bounds how long the loop sleeps in poll() so timers and signals are served promptly.
+constexpr int kPollTimeoutMs = 20;
+
+class StatusClock {
+ public:
+  double takeInterval()
+  {
+    const std::int64_t now = common::monotonicMicroseconds();
+    const double interval = common::microsecondsToSeconds(now - last_us_);
+    last_us_ = now;
+    return interval;
+  }
+
+ private:
+  std::int64_t last_us_ = common::monotonicMicroseconds();
+};
+
+int runUdp(const DriverSettings& settings, bus::RunLoop& loop, PacketForwarder& forwarder,
+           spdlog::logger& logger)
+{
+  std::vector<UdpReceiver> receivers;
+  receivers.emplace_back(settings.data_port, settings.bind_address,
+                         static_cast<std::size_t>(settings.receive_buffer_bytes));
+  if (settings.position_packets) {
+    receivers.emplace_back(settings.position_port, settings.bind_address,
+                           static_cast<std::size_t>(settings.receive_buffer_bytes));
+  }
+  for (const auto& receiver : receivers) {
+    if (!receiver.isOpen()) {
+      logger.error("{}", receiver.lastError());
+      return 1;
+    }
+  }
+  logger.info("receiving VLP-16 data on {}:{}{}", settings.bind_address, settings.data_port,
+              settings.position_packets
+                  ? " and position packets on port " + std::to_string(settings.position_port)
+                  : std::string());
+  std::vector<pollfd> descriptors;
+  for (const auto& receiver : receivers) {
+    descriptors.push_back(pollfd{receiver.fd(), POLLIN, 0});
+  }
+  common::RateLimiter error_log_limiter(common::kMicrosecondsPerSecond);
+  ReceivedDatagram datagram;
+  while (!loop.stopping()) {
+    for (auto& descriptor : descriptors) {
+      descriptor.revents = 0;
+    }
+    poll(descriptors.data(), descriptors.size(), kPollTimeoutMs);
+    for (auto& receiver : receivers) {
+      // Drain what is pending, but hand control back to LCM and timers now and then.
+      for (int count = 0; count < 64; ++count) {
+        const ReceiveStatus status = receiver.receive(datagram);
+        if (status == ReceiveStatus::kWouldBlock) {
+          break;
+        }
+        if (status == ReceiveStatus::kError) {
+          if (error_log_limiter.allow(common::monotonicMicroseconds())) {
+            logger.warn("{}", receiver.lastError());
+          }
+          break;
+        }
+        if (datagram.wire_size > datagram.payload.size()) {
+          forwarder.onOversizedDatagram(receiver.port(), datagram.wire_size);
+          continue;
+        }
+        forwarder.onDatagram(receiver.port(), datagram.payload, datagram.receive_time_us);
+      }
+    }
+    loop.spinOnce(0);
+  }
+  return 0;
+}
+
+int runPcap(const ReplayOptions& replay, const DriverSettings& settings, bus::RunLoop& loop,
+            PacketForwarder& forwarder, spdlog::logger& logger)
+{
+  PcapReader reader = PcapReader::open(replay.pcap_path);
+  if (reader.error() != PcapError::kNone) {
+    logger.error("cannot replay '{}': {}", replay.pcap_path, toString(reader.error()));
+    return 1;
+  }
+  logger.info("replaying '{}' at {}", replay.pcap_path,
+              replay.speed > 0.0 ? std::to_string(replay.speed) + "x real time" : std::string("full speed"));
+  UdpDatagram datagram;
+  bool have_first = false;
+  std::int64_t first_capture_us = 0;
+  std::int64_t start_monotonic_us = 0;
+  std::int64_t skipped = 0;
+  while (!loop.stopping()) {
+    const PcapRecord record = reader.next(datagram);
+    if (record == PcapRecord::kEndOfFile) {
+      break;
+    }
+    if (record == PcapRecord::kTruncatedFile) {
+      logger.warn("'{}' ends inside a record: stopping the replay there", replay.pcap_path);
+      break;
+    }
+    if (record != PcapRecord::kUdpDatagram) {
+      ++skipped;
+      continue;
+    }
+    if (datagram.destination_port != settings.data_port &&
+        !(settings.position_packets && datagram.destination_port == settings.position_port)) {
+      ++skipped;
+      continue;
+    }
+    if (!have_first) {
+      have_first = true;
+      first_capture_us = datagram.capture_time_us;
+      start_monotonic_us = common::monotonicMicroseconds();
+    }
+    if (replay.speed > 0.0) {
+      // Pace by the capture timestamps, scaled; keep serving LCM and timers while waiting.
+      const auto due_us =
+          start_monotonic_us +
+          static_cast<std::int64_t>(static_cast<double>(datagram.capture_time_us - first_capture_us) /
+                                    replay.speed);
+      for (std::int64_t now = common::monotonicMicroseconds(); now < due_us && !loop.stopping();
+           now = common::monotonicMicroseconds()) {
+        loop.spinOnce(static_cast<int>(std::min<std::int64_t>((due_us - now) / 1000, kPollTimeoutMs)));
+      }
+    }
+    // Host receive time of a replayed packet is the time it is sent on, as for a live sensor.
+    forwarder.onDatagram(datagram.destination_port, datagram.payload, common::nowMicroseconds());
+    loop.spinOnce(0);
+  }
+  logger.info("replay finished: {} packets published, {} bad, {} records skipped",
+              forwarder.monitor().counts().packets_valid, forwarder.monitor().counts().bad_packets, skipped);
+  return 0;
+}
+
+}  // namespace
+}  // namespace ifar::velodyne
+
+int main(int argc, char** argv)
+{
+  namespace common = ifar::common;
+  namespace bus = ifar::bus;
+  namespace velodyne = ifar::velodyne;
+  velodyne::ReplayOptions replay;
+  return common::runDaemon(
+      argc, argv,
+      {"velodyne-driver", "VLP-16 driver: data packets from UDP or a pcap file onto LCM (VELODYNE_PACKET)",
+       "config/velodyne.yaml"},
+      [&replay](common::DaemonContext& context) {
+        const velodyne::DriverSettings settings = velodyne::loadDriverSettings(context.config);
+        context.config.optional<std::string>("lcm_url", "");  // read by runDaemon unless --lcm-url is given
+        context.config.optional<std::string>("log_level", "");
+        context.config.rejectUnknownKeys();
+        bus::RunLoop loop(context.lcm_url, context.logger);
+        velodyne::PacketForwarder forwarder(settings, loop, context.logger);
+        velodyne::StatusClock status_clock;
+        loop.every(settings.status_period_s,
+                   [&forwarder, &status_clock] { forwarder.publishStatus(status_clock.takeInterval()); });
+        const int result = replay.pcap_path.empty()
+                               ? velodyne::runUdp(settings, loop, forwarder, *context.logger)
+                               : velodyne::runPcap(replay, settings, loop, forwarder, *context.logger);
+        forwarder.publishStatus(status_clock.takeInterval());
+        return result;
+      },
+      [&replay](CLI::App& app) {
+        app.add_option("--pcap", replay.pcap_path,
+                       "replay this classic pcap file instead of listening on UDP")
+            ->check(CLI::ExistingFile);
+        app.add_option("--speed", replay.speed, "replay speed factor for --pcap (0 = as fast as possible)")
+            ->check(CLI::NonNegativeNumber)
+            ->capture_default_str();
+      });
+}

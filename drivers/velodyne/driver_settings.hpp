@@ -1,0 +1,28 @@
+#pragma once
+// Settings of ifar-velodyne-driver, read from config/velodyne.yaml.
+
+#include <cstdint>
+#include <string>
+
+#include "common/config.hpp"
+
+namespace ifar::velodyne {
+
+struct DriverSettings {
+  std::string bind_address = "0.0.0.0";  // local IPv4 address the sockets bind
+  std::uint16_t data_port = 2368;        // VLP-16 data packets
+  bool position_packets = false;         // also forward position packets
+  std::uint16_t position_port = 8308;
+  std::int64_t receive_buffer_bytes = 4 * 1024 * 1024;  // SO_RCVBUF: rides out scheduling stalls
+  std::string data_channel = "VELODYNE_PACKET";
+  std::string position_channel = "VELODYNE_POSITION";
+  std::string status_channel = "VELODYNE_STATUS";
+  double status_period_s = 1.0;
+  double bad_packet_log_interval_s = 1.0;  // at most one warning per interval; the rest are counted
+};
+
+/// Reads every key of the driver's section (all optional, defaults above). Throws ConfigError naming the
+/// key for a wrong type or a value out of range (ports 1..65535, positive periods).
+DriverSettings loadDriverSettings(const common::ConfigNode& node);
+
+}  // namespace ifar::velodyne

@@ -1,0 +1,108 @@
+#include "drivers/velodyne/packet_forwarder.hpp"
+
+#include <algorithm>
+#include <utility>
+
+#include "common/time.hpp"
+#include "drivers/velodyne/packet_format.hpp"
+#include "ifar/velodyne_packet_t.hpp"
+#include "ifar/velodyne_status_t.hpp"
+
+namespace ifar::velodyne {
+
+PacketForwarder::PacketForwarder(const DriverSettings& settings, bus::RunLoop& loop,
+                                 std::shared_ptr<spdlog::logger> logger)
+    : settings_(settings),
+      loop_(loop),
+      logger_(std::move(logger)),
+      bad_packet_log_limiter_(common::secondsToMicroseconds(settings.bad_packet_log_interval_s))
+{
+}
+
+void PacketForwarder::onDatagram(std::uint16_t port, common::ByteView payload, std::int64_t receive_time_us)
+{
+  monitor_.recordReceived();
+  if (port == settings_.data_port) {
+    const PacketInfo info = inspectPacket(payload);
+    if (info.status != PacketStatus::kOk) {
+      reject(std::string("data packet (") + std::to_string(payload.size()) +
+             " bytes): " + toString(info.status));
+      return;
+    }
+    monitor_.recordValid(info);
+    publish(settings_.data_channel, port, payload, receive_time_us, info.device_time_past_hour);
+    return;
+  }
+  if (settings_.position_packets && port == settings_.position_port) {
+    if (payload.size() != kPositionPacketSize) {
+      reject("position packet: " + std::to_string(payload.size()) + " bytes, expected 512");
+      return;
+    }
+    // The position packet's timestamp (microseconds past the hour) sits at byte 198 (VLP-16 manual).
+    constexpr std::size_t kPositionTimestampOffset = 198;
+    publish(settings_.position_channel, port, payload, receive_time_us,
+            readUint32Le(payload.data() + kPositionTimestampOffset));
+    return;
+  }
+  reject("datagram on port " + std::to_string(port) + " that the driver does not read");
+}
+
+void PacketForwarder::onOversizedDatagram(std::uint16_t port, std::size_t wire_size)
+{
+  monitor_.recordReceived();
+  reject("datagram of " + std::to_string(wire_size) + " bytes on port " + std::to_string(port) +
+         ", larger than any VLP-16 packet");
+}
+
+void PacketForwarder::reject(const std::string& reason)
+{
+  monitor_.recordBad(reason);
+  if (bad_packet_log_limiter_.allow(common::monotonicMicroseconds())) {
+    const std::int64_t suppressed = bad_packet_log_limiter_.takeSuppressed();
+    logger_->warn("skipping bad input: {} ({} bad so far, {} not logged since the last warning)", reason,
+                  monitor_.counts().bad_packets, suppressed);
+  }
+}
+
+void PacketForwarder::publish(const std::string& channel, std::uint16_t port, common::ByteView payload,
+                              std::int64_t receive_time_us, std::uint32_t device_time_past_hour)
+{
+  ifar::velodyne_packet_t message;
+  message.utime = receive_time_us;
+  message.device_time_past_hour = static_cast<std::int32_t>(device_time_past_hour);
+  message.port = port;
+  message.size = static_cast<std::int32_t>(payload.size());
+  message.data.assign(payload.begin(), payload.end());
+  loop_.publish(channel, message);
+  constexpr std::size_t kMostLatenciesKept = 100'000;  // bounded even if the status timer stalls
+  if (publish_latencies_us_.size() < kMostLatenciesKept) {
+    publish_latencies_us_.push_back(common::nowMicroseconds() - receive_time_us);
+  }
+}
+
+void PacketForwarder::publishStatus(double interval_s)
+{
+  const MonitorCounts& counts = monitor_.counts();
+  ifar::velodyne_status_t status;
+  status.utime = common::nowMicroseconds();
+  const std::int64_t valid = monitor_.takeValidSinceLastReport();
+  status.packets_per_second =
+      interval_s > 0.0 ? static_cast<float>(static_cast<double>(valid) / interval_s) : 0.0F;
+  status.packets_received = counts.packets_received;
+  status.packets_published = counts.packets_valid;  // every valid data packet is published
+  status.bad_packets = counts.bad_packets;
+  status.dropped_packets = counts.dropped_packets;
+  status.last_error = counts.last_error;
+  loop_.publish(settings_.status_channel, status);
+
+  if (!publish_latencies_us_.empty() && logger_->should_log(spdlog::level::debug)) {
+    auto& latencies = publish_latencies_us_;
+    std::sort(latencies.begin(), latencies.end());
+    logger_->debug("receive-to-publish latency over {} packets: p50 {} us, p99 {} us, max {} us",
+                   latencies.size(), latencies[latencies.size() / 2], latencies[latencies.size() * 99 / 100],
+                   latencies.back());
+  }
+  publish_latencies_us_.clear();
+}
+
+}  // namespace ifar::velodyne

@@ -1,0 +1,47 @@
+#include "drivers/velodyne/driver_settings.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace ifar::velodyne {
+namespace {
+
+using common::ConfigError;
+using common::ConfigNode;
+
+TEST(VelodyneDriverSettings, DefaultsWhenEmpty)
+{
+  const DriverSettings settings = loadDriverSettings(ConfigNode::loadString("{}", "test.yaml"));
+  EXPECT_EQ(settings.data_port, 2368);
+  EXPECT_EQ(settings.position_port, 8308);
+  EXPECT_FALSE(settings.position_packets);
+  EXPECT_EQ(settings.data_channel, "VELODYNE_PACKET");
+  EXPECT_EQ(settings.status_channel, "VELODYNE_STATUS");
+}
+
+TEST(VelodyneDriverSettings, ShippedConfigLoadsCompletely)
+{
+  const auto node = ConfigNode::loadFile(std::string(IFAR_SOURCE_DIR) + "/config/velodyne.yaml");
+  const DriverSettings settings = loadDriverSettings(node);
+  node.optional<std::string>("log_level", "");
+  EXPECT_NO_THROW(node.rejectUnknownKeys());
+  EXPECT_EQ(settings.data_port, 2368);
+  EXPECT_EQ(settings.receive_buffer_bytes, 4194304);
+}
+
+TEST(VelodyneDriverSettings, BadValuesNameTheKey)
+{
+  try {
+    loadDriverSettings(ConfigNode::loadString("data_port: 70000", "velodyne.yaml"));
+    FAIL() << "expected a ConfigError";
+  } catch (const ConfigError& error) {
+    EXPECT_NE(std::string(error.what()).find("data_port"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("70000"), std::string::npos) << error.what();
+  }
+  EXPECT_THROW(loadDriverSettings(ConfigNode::loadString("status_period_s: 0", "v.yaml")), ConfigError);
+  EXPECT_THROW(loadDriverSettings(ConfigNode::loadString("position_packets: maybe", "v.yaml")), ConfigError);
+}
+
+}  // namespace
+}  // namespace ifar::velodyne
