@@ -1,0 +1,127 @@
+#include "planner/perception/local_layer.hpp"
+
+#include <cmath>
+
+#include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
+
+namespace ifar::perception {
+namespace {
+
+/// The disc structuring element. Contours run through the centres of border cells, half a cell
+/// inside the occupied area, so the disc reaches half a cell further to put the traced border on the
+/// inflated obstacle's true outline on average.
+cv::Mat discKernel(double radius_cells)
+{
+  const double reach = radius_cells + 0.5;
+  const int half = static_cast<int>(std::floor(reach));
+  cv::Mat kernel = cv::Mat::zeros(2 * half + 1, 2 * half + 1, CV_8UC1);
+  for (int row = -half; row <= half; ++row) {
+    for (int column = -half; column <= half; ++column) {
+      if (std::hypot(row, column) <= reach) {
+        kernel.at<std::uint8_t>(row + half, column + half) = 1;
+      }
+    }
+  }
+  return kernel;
+}
+
+/// Marks the cells of `points`; returns how many fell outside the grid.
+std::size_t rasterise(const std::vector<geometry::Point>& points, const LayerGrid& grid, cv::Mat& image)
+{
+  std::size_t outside = 0;
+  const double inverse_cell = 1.0 / grid.cell_size_m;
+  for (const geometry::Point& point : points) {
+    const double column = std::floor((point.x() - grid.origin.x()) * inverse_cell);
+    const double row = std::floor((point.y() - grid.origin.y()) * inverse_cell);
+    if (column < 0.0 || row < 0.0 || column >= grid.cells || row >= grid.cells) {
+      ++outside;
+      continue;
+    }
+    image.at<std::uint8_t>(static_cast<int>(row), static_cast<int>(column)) = 255;
+  }
+  return outside;
+}
+
+void traceContours(const cv::Mat& image, const LayerGrid& grid, ObstacleClass obstacle_class,
+                   const PerceptionSettings& settings, LocalLayer& layer)
+{
+  std::vector<std::vector<cv::Point>> contours;
+  std::vector<cv::Vec4i> hierarchy;
+  // Two-level hierarchy: outer borders at the top, holes (enclosed free space) below them.
+  cv::findContours(image, contours, hierarchy, cv::RETR_CCOMP, cv::CHAIN_APPROX_SIMPLE);
+  const double epsilon_cells = settings.simplify_epsilon_m / grid.cell_size_m;
+  std::vector<cv::Point> simplified;
+  for (std::size_t index = 0; index < contours.size(); ++index) {
+    cv::approxPolyDP(contours[index], simplified, epsilon_cells, true);
+    LayerPolygon polygon;
+    polygon.obstacle_class = obstacle_class;
+    polygon.boundary = hierarchy[index][3] < 0 ? BoundaryKind::Outer : BoundaryKind::Hole;
+    polygon.vertices.reserve(simplified.size());
+    for (const cv::Point& cell : simplified) {
+      polygon.vertices.push_back(grid.cellCentre(cell.x, cell.y));
+    }
+    if (polygon.vertices.size() < 3 || geometry::area(polygon.vertices) < settings.min_polygon_area_m2) {
+      ++layer.dropped_contours;
+      continue;
+    }
+    polygon.vertices = geometry::counterClockwise(std::move(polygon.vertices));
+    layer.polygons.push_back(std::move(polygon));
+  }
+}
+
+std::vector<std::uint8_t> occupancyOf(const cv::Mat& image)
+{
+  std::vector<std::uint8_t> cells(image.total());
+  for (int row = 0; row < image.rows; ++row) {
+    const std::uint8_t* source = image.ptr<std::uint8_t>(row);
+    for (int column = 0; column < image.cols; ++column) {
+      cells[static_cast<std::size_t>(row) * static_cast<std::size_t>(image.cols) +
+            static_cast<std::size_t>(column)] = source[column] != 0 ? 1 : 0;
+    }
+  }
+  return cells;
+}
+
+}  // namespace
+
+geometry::Point LayerGrid::cellCentre(int column, int row) const
+{
+  return geometry::Point(origin.x() + (column + 0.5) * cell_size_m, origin.y() + (row + 0.5) * cell_size_m);
+}
+
+LayerGrid makeLayerGrid(const geometry::Point& centre, const PerceptionSettings& settings)
+{
+  LayerGrid grid;
+  grid.cell_size_m = settings.cell_size_m;
+  grid.cells = settings.layerCells();
+  const double half_cells = 0.5 * grid.cells;
+  grid.origin = geometry::Point(std::round(centre.x() / grid.cell_size_m - half_cells) * grid.cell_size_m,
+                                std::round(centre.y() / grid.cell_size_m - half_cells) * grid.cell_size_m);
+  return grid;
+}
+
+LocalLayer buildLocalLayer(const ClassifiedPoints& points, const geometry::Point& centre,
+                           const PerceptionSettings& settings)
+{
+  LocalLayer layer;
+  layer.grid = makeLayerGrid(centre, settings);
+  const int cells = layer.grid.cells;
+  const cv::Mat kernel = discKernel(settings.inflation_radius_m / settings.cell_size_m);
+  // Each class gets its own image: a movable object must not merge into the wall it leans on.
+  const auto build_class = [&](const std::vector<geometry::Point>& class_points, ObstacleClass obstacle_class,
+                               std::vector<std::uint8_t>& occupancy) {
+    cv::Mat image = cv::Mat::zeros(cells, cells, CV_8UC1);
+    layer.points_outside_layer += rasterise(class_points, layer.grid, image);
+    if (!class_points.empty()) {
+      cv::dilate(image, image, kernel, cv::Point(-1, -1), 1, cv::BORDER_CONSTANT, cv::Scalar(0));
+      traceContours(image, layer.grid, obstacle_class, settings, layer);
+    }
+    occupancy = occupancyOf(image);
+  };
+  build_class(points.background, ObstacleClass::Background, layer.background_occupancy);
+  build_class(points.movable, ObstacleClass::Movable, layer.movable_occupancy);
+  return layer;
+}
+
+}  // namespace ifar::perception

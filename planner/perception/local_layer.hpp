@@ -1,0 +1,59 @@
+#pragma once
+// The vehicle-centred local layer: obstacle points rasterised into two binary images (background,
+// movable), inflated by the vehicle's half width, traced into contours and simplified into world-frame
+// polygons. OpenCV stays inside the .cpp.
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "common/geometry/polygon.hpp"
+#include "planner/perception/classification.hpp"
+#include "planner/perception/perception_settings.hpp"
+
+namespace ifar::perception {
+
+enum class ObstacleClass { Background, Movable };
+
+/// Outer: the border of an inflated obstacle (the obstacle is inside the polygon). Hole: the border of
+/// free space enclosed by an inflated obstacle (the free space is inside the polygon), e.g. a room.
+enum class BoundaryKind { Outer, Hole };
+
+struct LayerPolygon {
+  geometry::Polygon vertices;  // world frame, counter-clockwise, not closed
+  ObstacleClass obstacle_class = ObstacleClass::Background;
+  BoundaryKind boundary = BoundaryKind::Outer;
+};
+
+/// The layer's raster: cells x cells square cells; cell (column, row) covers world
+/// [origin.x + column * cell_size_m, +cell_size_m) x [origin.y + row * cell_size_m, +cell_size_m).
+/// The origin sits on multiples of the cell size so the raster does not shift between frames.
+struct LayerGrid {
+  geometry::Point origin = geometry::Point::Zero();
+  double cell_size_m = 0.15;
+  int cells = 0;
+
+  geometry::Point cellCentre(int column, int row) const;
+  /// Size of one side in metres.
+  double sideLength() const { return cells * cell_size_m; }
+};
+
+/// The grid of the given size centred (to the nearest cell) on `centre`.
+LayerGrid makeLayerGrid(const geometry::Point& centre, const PerceptionSettings& settings);
+
+struct LocalLayer {
+  LayerGrid grid;
+  std::vector<LayerPolygon> polygons;
+  /// Inflated occupancy, row-major (index row * cells + column), 1 = occupied: for free-space queries.
+  std::vector<std::uint8_t> background_occupancy;
+  std::vector<std::uint8_t> movable_occupancy;
+  std::size_t points_outside_layer = 0;
+  std::size_t dropped_contours = 0;  // smaller than min_polygon_area_m2 or fewer than 3 vertices
+};
+
+/// Rasterises, inflates (disc of settings.inflation_radius_m), traces outer borders and holes
+/// (Suzuki-Abe border following) and simplifies (Douglas-Peucker) each class.
+LocalLayer buildLocalLayer(const ClassifiedPoints& points, const geometry::Point& centre,
+                           const PerceptionSettings& settings);
+
+}  // namespace ifar::perception

@@ -1,0 +1,99 @@
+#include "planner/perception/perception_pipeline.hpp"
+
+#include <chrono>
+
+#include "planner/perception/classification.hpp"
+#include "planner/perception/height_filter.hpp"
+#include "planner/perception/motion_compensation.hpp"
+
+namespace ifar::perception {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double millisecondsSince(Clock::time_point start)
+{
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+}  // namespace
+
+const char* toString(PerceptionStatus status)
+{
+  switch (status) {
+    case PerceptionStatus::Ok:
+      return "ok";
+    case PerceptionStatus::EmptyScan:
+      return "empty scan";
+    case PerceptionStatus::NoObstaclePoints:
+      return "no obstacle points";
+    case PerceptionStatus::InvalidMotion:
+      return "invalid motion";
+    case PerceptionStatus::InvalidSettings:
+      return "invalid settings";
+  }
+  return "unknown";
+}
+
+PerceptionResult runPerception(const PerceptionInput& input, const PerceptionSettings& settings)
+{
+  const Clock::time_point frame_start = Clock::now();
+  PerceptionResult result;
+  result.stats.input_points = input.points.size();
+  if (const auto problem = findSettingsProblem(settings)) {
+    result.status = PerceptionStatus::InvalidSettings;
+    result.message = "perception settings: " + *problem;
+    return result;
+  }
+  if (!isValidMotion(input.motion) || !input.mount.matrix().allFinite()) {
+    result.status = PerceptionStatus::InvalidMotion;
+    result.message = "scan motion or sensor mount is not a finite rigid transform with duration >= 0";
+    return result;
+  }
+  const auto vehicle_position = input.motion.vehicle_at_end.translation();
+  const geometry::Point centre(vehicle_position.x(), vehicle_position.y());
+
+  Clock::time_point stage_start = Clock::now();
+  const std::vector<WorldPoint> world_points = compensateMotion(input.points, input.mount, input.motion);
+  result.stats.compensation_ms = millisecondsSince(stage_start);
+
+  stage_start = Clock::now();
+  const HeightFilterResult filtered = filterObstaclePoints(world_points, settings);
+  result.stats.filter_ms = millisecondsSince(stage_start);
+  result.stats.non_finite_points = filtered.counts.non_finite;
+  result.stats.too_close_points = filtered.counts.too_close;
+  result.stats.outside_height_band_points = filtered.counts.outside_height_band;
+
+  stage_start = Clock::now();
+  const ClassifiedPoints classified =
+      input.detector_polygons
+          ? classifyByDetector(filtered.obstacle_points, *input.detector_polygons)
+          : classifyByReflectivity(filtered.obstacle_points, settings.movable_reflectivity_threshold);
+  result.stats.classification_ms = millisecondsSince(stage_start);
+  result.stats.background_points = classified.background.size();
+  result.stats.movable_points = classified.movable.size();
+
+  stage_start = Clock::now();
+  result.layer = buildLocalLayer(classified, centre, settings);
+  result.stats.layer_ms = millisecondsSince(stage_start);
+  result.stats.points_outside_layer = result.layer.points_outside_layer;
+  result.stats.dropped_contours = result.layer.dropped_contours;
+
+  if (input.points.empty()) {
+    result.status = PerceptionStatus::EmptyScan;
+    result.message = "empty scan: no points, no polygons";
+  } else if (filtered.obstacle_points.empty()) {
+    result.status = PerceptionStatus::NoObstaclePoints;
+    result.message = "no obstacle points between ground clearance and vehicle height, no polygons";
+  } else {
+    result.status = PerceptionStatus::Ok;
+    result.message = std::to_string(result.layer.polygons.size()) + " polygons";
+  }
+  if (filtered.counts.non_finite > 0) {
+    result.message += "; dropped " + std::to_string(filtered.counts.non_finite) + " non-finite points";
+  }
+  result.stats.total_ms = millisecondsSince(frame_start);
+  return result;
+}
+
+}  // namespace ifar::perception

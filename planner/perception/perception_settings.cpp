@@ -1,0 +1,85 @@
+#include "planner/perception/perception_settings.hpp"
+
+#include <cmath>
+#include <string>
+
+namespace ifar::perception {
+namespace {
+
+double requirePositive(const common::ConfigNode& node, const std::string& key)
+{
+  const auto value = node.required<double>(key);
+  if (!std::isfinite(value) || value <= 0.0) {
+    node.fail(key, "must be a positive number of the stated unit, got " + std::to_string(value));
+  }
+  return value;
+}
+
+constexpr int kMaxLayerCells = 20000;
+
+}  // namespace
+
+std::optional<std::string> findSettingsProblem(const PerceptionSettings& settings)
+{
+  const struct {
+    const char* name;
+    double value;
+  } positive[] = {{"ground_clearance_m", settings.ground_clearance_m},
+                  {"vehicle_height_m", settings.vehicle_height_m},
+                  {"min_range_m", settings.min_range_m},
+                  {"movable_reflectivity_threshold", settings.movable_reflectivity_threshold},
+                  {"layer_size_m", settings.layer_size_m},
+                  {"cell_size_m", settings.cell_size_m},
+                  {"inflation_radius_m", settings.inflation_radius_m},
+                  {"simplify_epsilon_m", settings.simplify_epsilon_m},
+                  {"min_polygon_area_m2", settings.min_polygon_area_m2}};
+  for (const auto& field : positive) {
+    if (!std::isfinite(field.value) || field.value <= 0.0) {
+      return std::string(field.name) + " must be positive and finite, got " + std::to_string(field.value);
+    }
+  }
+  if (settings.vehicle_height_m <= settings.ground_clearance_m) {
+    return std::string("vehicle_height_m must be above ground_clearance_m");
+  }
+  if (settings.cell_size_m > settings.layer_size_m) {
+    return std::string("cell_size_m must not exceed layer_size_m");
+  }
+  if (settings.layer_size_m / settings.cell_size_m > kMaxLayerCells) {
+    return std::string("layer_size_m / cell_size_m gives more than 20000 cells per side");
+  }
+  return std::nullopt;
+}
+
+int PerceptionSettings::layerCells() const
+{
+  return static_cast<int>(std::ceil(layer_size_m / cell_size_m - 1e-9));
+}
+
+PerceptionSettings loadPerceptionSettings(const common::ConfigNode& root)
+{
+  const common::ConfigNode node = root.child("perception");
+  PerceptionSettings settings;
+  settings.ground_clearance_m = requirePositive(node, "ground_clearance_m");
+  settings.vehicle_height_m = requirePositive(node, "vehicle_height_m");
+  settings.min_range_m = requirePositive(node, "min_range_m");
+  settings.movable_reflectivity_threshold =
+      static_cast<float>(requirePositive(node, "movable_reflectivity_threshold"));
+  settings.layer_size_m = requirePositive(node, "layer_size_m");
+  settings.cell_size_m = requirePositive(node, "cell_size_m");
+  settings.inflation_radius_m = requirePositive(node, "inflation_radius_m");
+  settings.simplify_epsilon_m = requirePositive(node, "simplify_epsilon_m");
+  settings.min_polygon_area_m2 = requirePositive(node, "min_polygon_area_m2");
+  if (settings.vehicle_height_m <= settings.ground_clearance_m) {
+    node.fail("vehicle_height_m", "must be above ground_clearance_m");
+  }
+  if (settings.cell_size_m > settings.layer_size_m) {
+    node.fail("cell_size_m", "must not exceed layer_size_m");
+  }
+  if (settings.layer_size_m / settings.cell_size_m > kMaxLayerCells) {
+    node.fail("cell_size_m", "gives more than 20000 cells per side of the layer; use larger cells");
+  }
+  node.rejectUnknownKeys();
+  return settings;
+}
+
+}  // namespace ifar::perception

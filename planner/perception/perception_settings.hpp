@@ -1,0 +1,42 @@
+#pragma once
+// Settings of the perception stages, read from the `perception:` section of config/planner.yaml.
+
+#include <optional>
+#include <string>
+
+#include "common/config.hpp"
+
+namespace ifar::perception {
+
+struct PerceptionSettings {
+  /// Obstacle points lie between these heights above the ground under the vehicle (metres).
+  double ground_clearance_m = 0.15;
+  double vehicle_height_m = 1.2;
+  /// Returns closer than this to the sensor are dropped (no-return zeros, the vehicle itself).
+  double min_range_m = 0.4;
+  /// Points with calibrated reflectivity at or above this are movable (retro-reflective tags read
+  /// 101..255 on a VLP-16); used when no detector polygons are given.
+  float movable_reflectivity_threshold = 101.0F;
+  /// The vehicle-centred local layer: square side and cell size (metres).
+  double layer_size_m = 60.0;
+  double cell_size_m = 0.15;
+  /// Obstacles grow by this radius before contours are taken: the vehicle's half width.
+  double inflation_radius_m = 0.35;
+  /// Douglas-Peucker tolerance for contour simplification (metres).
+  double simplify_epsilon_m = 0.1;
+  /// Contours (outer borders and holes) enclosing less area than this are dropped (square metres).
+  double min_polygon_area_m2 = 0.05;
+
+  /// Cells along one side of the layer.
+  int layerCells() const;
+};
+
+/// The first problem with `settings` (a non-positive or non-finite value, an empty height band, a layer
+/// of more than 20000 cells a side), naming the field; empty when they are usable.
+std::optional<std::string> findSettingsProblem(const PerceptionSettings& settings);
+
+/// Reads the `perception` child of `root` (every key required, all positive, vehicle height above
+/// ground clearance) and rejects unknown keys inside it. Throws common::ConfigError naming file and key.
+PerceptionSettings loadPerceptionSettings(const common::ConfigNode& root);
+
+}  // namespace ifar::perception

@@ -1,0 +1,147 @@
+#include "planner/perception/local_layer.hpp"
+
+#include <gtest/gtest.h>
+
+#include "planner/perception/synthetic/synthetic_scan.hpp"
+#include "tests/unit/perception/inflated_box_matching.hpp"
+
+namespace ifar::perception {
+namespace {
+
+using testing::mismatchToInflatedBox;
+using testing::polygonsOf;
+
+/// Points along the outline of `box` every 0.05 m.
+std::vector<geometry::Point> outlinePoints(const geometry::Polygon& box)
+{
+  std::vector<geometry::Point> points;
+  for (std::size_t index = 0; index < box.size(); ++index) {
+    const geometry::Segment edge = geometry::polygonEdge(box, index);
+    const int steps = static_cast<int>(std::ceil(edge.length() / 0.05));
+    for (int step = 0; step < steps; ++step) {
+      points.push_back(edge.start + (edge.end - edge.start) * (static_cast<double>(step) / steps));
+    }
+  }
+  return points;
+}
+
+TEST(LocalLayer, GridIsCentredAndSnappedToCells)
+{
+  PerceptionSettings settings;
+  const LayerGrid grid = makeLayerGrid(geometry::Point(10.07, -3.0), settings);
+  EXPECT_EQ(grid.cells, 400);
+  EXPECT_NEAR(grid.sideLength(), 60.0, 1e-9);
+  EXPECT_NEAR(grid.origin.x(), -19.95, 1e-9);  // 10.07 / 0.15 = 67.1 -> 67 cells, minus 200
+  EXPECT_NEAR(grid.origin.y(), -33.0, 1e-9);
+  const geometry::Point centre = grid.cellCentre(0, 0);
+  EXPECT_NEAR(centre.x(), -19.875, 1e-9);
+  EXPECT_NEAR(centre.y(), -32.925, 1e-9);
+}
+
+TEST(LocalLayer, InflatedBoxesMatchWithinTwoCells)
+{
+  PerceptionSettings settings;
+  const geometry::Polygon wall_box = synthetic::boxFootprint(4.0, 1.0, 2.0, 0.6);
+  const geometry::Polygon movable_box = synthetic::boxFootprint(-3.0, -2.0, 0.8, 0.8);
+  ClassifiedPoints points;
+  points.background = outlinePoints(wall_box);
+  points.movable = outlinePoints(movable_box);
+  const LocalLayer layer = buildLocalLayer(points, geometry::Point(0.0, 0.0), settings);
+
+  const auto background = polygonsOf(layer, ObstacleClass::Background, BoundaryKind::Outer);
+  const auto movable = polygonsOf(layer, ObstacleClass::Movable, BoundaryKind::Outer);
+  ASSERT_EQ(background.size(), 1U);
+  ASSERT_EQ(movable.size(), 1U);
+  EXPECT_EQ(layer.polygons.size(), 2U);  // no holes: both interiors fill when inflated
+  EXPECT_LE(mismatchToInflatedBox(background[0].vertices, wall_box, settings.inflation_radius_m),
+            2.0 * settings.cell_size_m);
+  EXPECT_LE(mismatchToInflatedBox(movable[0].vertices, movable_box, settings.inflation_radius_m),
+            2.0 * settings.cell_size_m);
+  EXPECT_GT(geometry::signedArea(background[0].vertices), 0.0);
+  EXPECT_GT(geometry::signedArea(movable[0].vertices), 0.0);
+  EXPECT_EQ(layer.points_outside_layer, 0U);
+}
+
+TEST(LocalLayer, EnclosedFreeSpaceIsAHole)
+{
+  PerceptionSettings settings;
+  const geometry::Polygon room = synthetic::boxFootprint(0.0, 0.0, 6.0, 4.0);
+  ClassifiedPoints points;
+  points.background = outlinePoints(room);
+  const LocalLayer layer = buildLocalLayer(points, geometry::Point(0.0, 0.0), settings);
+  const auto outer = polygonsOf(layer, ObstacleClass::Background, BoundaryKind::Outer);
+  const auto holes = polygonsOf(layer, ObstacleClass::Background, BoundaryKind::Hole);
+  ASSERT_EQ(outer.size(), 1U);
+  ASSERT_EQ(holes.size(), 1U);
+  EXPECT_LE(mismatchToInflatedBox(outer[0].vertices, room, settings.inflation_radius_m),
+            2.0 * settings.cell_size_m);
+  // The hole is the room shrunk by the inflation radius: 5.3 m x 3.3 m.
+  const geometry::Polygon shrunk = synthetic::boxFootprint(0.0, 0.0, 5.3, 3.3);
+  for (const geometry::Point& vertex : holes[0].vertices) {
+    EXPECT_LE(geometry::distanceToBoundary(shrunk, vertex), 2.0 * settings.cell_size_m);
+  }
+  EXPECT_NEAR(geometry::area(holes[0].vertices), 5.3 * 3.3, 5.3 * 3.3 * 0.1);
+  EXPECT_GT(geometry::signedArea(holes[0].vertices), 0.0);
+}
+
+TEST(LocalLayer, OccupancyMarksInflatedCells)
+{
+  PerceptionSettings settings;
+  ClassifiedPoints points;
+  points.movable = {geometry::Point(1.0, 1.0)};
+  const LocalLayer layer = buildLocalLayer(points, geometry::Point(0.0, 0.0), settings);
+  const auto cell_index = [&](const geometry::Point& point) {
+    const int column =
+        static_cast<int>(std::floor((point.x() - layer.grid.origin.x()) / layer.grid.cell_size_m));
+    const int row =
+        static_cast<int>(std::floor((point.y() - layer.grid.origin.y()) / layer.grid.cell_size_m));
+    return static_cast<std::size_t>(row) * static_cast<std::size_t>(layer.grid.cells) +
+           static_cast<std::size_t>(column);
+  };
+  ASSERT_EQ(layer.movable_occupancy.size(), 400U * 400U);
+  EXPECT_EQ(layer.movable_occupancy[cell_index(geometry::Point(1.0, 1.0))], 1);
+  EXPECT_EQ(layer.movable_occupancy[cell_index(geometry::Point(1.3, 1.0))], 1);  // within the radius
+  EXPECT_EQ(layer.movable_occupancy[cell_index(geometry::Point(1.6, 1.0))], 0);
+  EXPECT_EQ(layer.background_occupancy[cell_index(geometry::Point(1.0, 1.0))], 0);
+  // A single point inflates to a disc of the vehicle's half width: one movable polygon.
+  ASSERT_EQ(layer.polygons.size(), 1U);
+  EXPECT_NEAR(geometry::width(layer.polygons[0].vertices), 0.7, 2.0 * settings.cell_size_m);
+}
+
+TEST(LocalLayer, PointsOutsideTheLayerAreCounted)
+{
+  PerceptionSettings settings;
+  ClassifiedPoints points;
+  points.background = {geometry::Point(31.0, 0.0), geometry::Point(0.0, -40.0), geometry::Point(5.0, 5.0)};
+  const LocalLayer layer = buildLocalLayer(points, geometry::Point(0.0, 0.0), settings);
+  EXPECT_EQ(layer.points_outside_layer, 2U);
+  EXPECT_EQ(layer.polygons.size(), 1U);
+}
+
+TEST(LocalLayer, ObstacleCutByTheLayerEdgeKeepsItsInsidePart)
+{
+  PerceptionSettings settings;
+  ClassifiedPoints points;
+  points.background = {geometry::Point(29.95, 0.0)};  // the last column of a layer centred on the origin
+  const LocalLayer layer = buildLocalLayer(points, geometry::Point(0.0, 0.0), settings);
+  ASSERT_EQ(layer.polygons.size(), 1U);
+  double min_x = 1e9;
+  double max_x = -1e9;
+  for (const geometry::Point& vertex : layer.polygons[0].vertices) {
+    min_x = std::min(min_x, vertex.x());
+    max_x = std::max(max_x, vertex.x());
+  }
+  EXPECT_NEAR(max_x, 29.925, 2.0 * settings.cell_size_m);  // the last cell centre
+  EXPECT_NEAR(min_x, 29.95 - settings.inflation_radius_m, 2.0 * settings.cell_size_m);
+}
+
+TEST(LocalLayer, NoPointsNoPolygons)
+{
+  const LocalLayer layer =
+      buildLocalLayer(ClassifiedPoints{}, geometry::Point(0.0, 0.0), PerceptionSettings{});
+  EXPECT_TRUE(layer.polygons.empty());
+  EXPECT_EQ(layer.dropped_contours, 0U);
+}
+
+}  // namespace
+}  // namespace ifar::perception

@@ -1,0 +1,99 @@
+#include "planner/perception/perception_settings.hpp"
+
+#include <cmath>
+#include <string>
+
+#include <gtest/gtest.h>
+
+namespace ifar::perception {
+namespace {
+
+const char* const kValid = R"(
+perception:
+  ground_clearance_m: 0.2
+  vehicle_height_m: 1.5
+  min_range_m: 0.5
+  movable_reflectivity_threshold: 120
+  layer_size_m: 40.0
+  cell_size_m: 0.2
+  inflation_radius_m: 0.4
+  simplify_epsilon_m: 0.05
+  min_polygon_area_m2: 0.1
+)";
+
+std::string messageOf(const std::string& text)
+{
+  try {
+    loadPerceptionSettings(common::ConfigNode::loadString(text, "planner.yaml"));
+  } catch (const common::ConfigError& error) {
+    return error.what();
+  }
+  return "no error";
+}
+
+std::string replaced(const std::string& from, const std::string& to)
+{
+  std::string text = kValid;
+  text.replace(text.find(from), from.size(), to);
+  return text;
+}
+
+TEST(PerceptionSettings, ReadsEveryKey)
+{
+  const PerceptionSettings settings = loadPerceptionSettings(common::ConfigNode::loadString(kValid, "test"));
+  EXPECT_DOUBLE_EQ(settings.ground_clearance_m, 0.2);
+  EXPECT_DOUBLE_EQ(settings.vehicle_height_m, 1.5);
+  EXPECT_DOUBLE_EQ(settings.min_range_m, 0.5);
+  EXPECT_FLOAT_EQ(settings.movable_reflectivity_threshold, 120.0F);
+  EXPECT_DOUBLE_EQ(settings.layer_size_m, 40.0);
+  EXPECT_DOUBLE_EQ(settings.cell_size_m, 0.2);
+  EXPECT_DOUBLE_EQ(settings.inflation_radius_m, 0.4);
+  EXPECT_DOUBLE_EQ(settings.simplify_epsilon_m, 0.05);
+  EXPECT_DOUBLE_EQ(settings.min_polygon_area_m2, 0.1);
+  EXPECT_EQ(settings.layerCells(), 200);
+}
+
+TEST(PerceptionSettings, ProjectConfigLoads)
+{
+  const PerceptionSettings settings = loadPerceptionSettings(
+      common::ConfigNode::loadFile(std::string(IFAR_SOURCE_DIR) + "/config/planner.yaml"));
+  EXPECT_DOUBLE_EQ(settings.layer_size_m, 60.0);
+  EXPECT_DOUBLE_EQ(settings.cell_size_m, 0.15);
+  EXPECT_EQ(settings.layerCells(), 400);
+  EXPECT_DOUBLE_EQ(settings.inflation_radius_m, 0.35);
+}
+
+TEST(PerceptionSettings, BadValuesNameTheKey)
+{
+  EXPECT_NE(messageOf(replaced("cell_size_m: 0.2", "cell_size_m: -0.2")).find("cell_size_m"),
+            std::string::npos);
+  EXPECT_NE(messageOf(replaced("vehicle_height_m: 1.5", "vehicle_height_m: 0.1")).find("vehicle_height_m"),
+            std::string::npos);
+  EXPECT_NE(messageOf(replaced("layer_size_m: 40.0", "layer_size_m: wide")).find("layer_size_m"),
+            std::string::npos);
+  EXPECT_NE(messageOf(replaced("  min_range_m: 0.5\n", "")).find("min_range_m"), std::string::npos);
+  EXPECT_NE(messageOf(replaced("min_range_m: 0.5", "min_range_m: 0.5\n  colour: red")).find("colour"),
+            std::string::npos);
+  EXPECT_NE(messageOf("graph: {}\n").find("perception"), std::string::npos);
+}
+
+TEST(PerceptionSettings, ProblemsInProgrammaticSettingsNameTheField)
+{
+  EXPECT_FALSE(findSettingsProblem(PerceptionSettings{}).has_value());
+  PerceptionSettings settings;
+  settings.cell_size_m = 0.0;
+  ASSERT_TRUE(findSettingsProblem(settings).has_value());
+  EXPECT_NE(findSettingsProblem(settings)->find("cell_size_m"), std::string::npos);
+  settings = PerceptionSettings{};
+  settings.inflation_radius_m = std::nan("");
+  EXPECT_NE(findSettingsProblem(settings).value_or("").find("inflation_radius_m"), std::string::npos);
+  settings = PerceptionSettings{};
+  settings.cell_size_m = 1e-6;  // 60 million cells a side
+  EXPECT_TRUE(findSettingsProblem(settings).has_value());
+  settings = PerceptionSettings{};
+  settings.vehicle_height_m = 0.1;
+  EXPECT_NE(findSettingsProblem(settings).value_or("").find("vehicle_height_m"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace ifar::perception
