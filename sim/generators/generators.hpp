@@ -1,0 +1,36 @@
+#pragma once
+// Seeded generators for the paper's kinds of place. The same kind and seed give the same world on every
+// run and platform; different seeds give different layouts. Every generated world passes validation.
+//
+// - Room: 32 m x 32 m, a partition with a doorway (the short cut) and a wide opening (the long way),
+//   static furniture. RoomObjects: the same room plus movable boxes, one in the doorway.
+// - Office: rooms either side of a corridor, doors, a corridor fire door; start and goal in rooms at
+//   opposite ends (paths about 50 m); boxes in some doors and rooms.
+// - Tunnel: a 330 m x 270 m network of 4 m tunnels through rock; the goal is the junction whose shortest
+//   route from the start is nearest 450 m; crates block some tunnels on that route.
+// - DemoRoom: RoomObjects with a fixed layout: the goal is behind a light box in the doorway.
+// Light objects slide with well under the vehicle's maximum push; heavy ones cannot be pushed.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "sim/world/world_result.hpp"
+
+namespace ifar::sim {
+
+enum class WorldKind { Room, RoomObjects, Office, Tunnel, DemoRoom };
+
+/// "room", "room_objects", "office", "tunnel", "demo_room".
+std::optional<WorldKind> parseWorldKind(const std::string& text);
+std::string worldKindName(WorldKind kind);
+
+World generateRoom(std::uint64_t seed, bool with_objects);
+World generateDemoRoom();
+World generateOffice(std::uint64_t seed);
+World generateTunnel(std::uint64_t seed);
+
+/// Generates and validates (a generator bug becomes an error naming the generator and seed).
+WorldResult generateWorld(WorldKind kind, std::uint64_t seed);
+
+}  // namespace ifar::sim

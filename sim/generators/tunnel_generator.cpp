@@ -1,0 +1,247 @@
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <queue>
+#include <vector>
+
+#include "sim/generators/generators.hpp"
+#include "sim/generators/world_builder.hpp"
+
+namespace ifar::sim {
+namespace {
+
+constexpr double kWidth = 330.0;
+constexpr double kHeight = 270.0;
+constexpr double kTunnel = 4.0;  // tunnel width
+constexpr double kFrame = 3.0;   // rock around the network
+constexpr int kColumns = 7;
+constexpr int kRows = 6;
+constexpr double kTargetPath = 450.0;
+
+struct Edge {
+  int from = 0;  // junction index = row * kColumns + column
+  int to = 0;
+  bool horizontal = true;
+  bool open = true;
+};
+
+class Lattice {
+ public:
+  Lattice(std::vector<double> xs, std::vector<double> ys) : xs_(std::move(xs)), ys_(std::move(ys))
+  {
+    for (int row = 0; row < kRows; ++row) {
+      for (int column = 0; column < kColumns; ++column) {
+        if (column + 1 < kColumns) {
+          edges_.push_back({index(column, row), index(column + 1, row), true, true});
+        }
+        if (row + 1 < kRows) {
+          edges_.push_back({index(column, row), index(column, row + 1), false, true});
+        }
+      }
+    }
+  }
+
+  static int index(int column, int row) { return row * kColumns + column; }
+  geometry::Point junction(int node) const { return {xs_[node % kColumns], ys_[node / kColumns]}; }
+  double length(const Edge& edge) const { return (junction(edge.to) - junction(edge.from)).norm(); }
+  std::vector<Edge>& edges() { return edges_; }
+  const std::vector<Edge>& edges() const { return edges_; }
+  double x(int column) const { return xs_[column]; }
+  double y(int row) const { return ys_[row]; }
+
+  /// Shortest distances over open edges, skipping edge `skip` (-1 = none); `previous` gets the edge
+  /// index each node was reached by.
+  std::vector<double> distances(int source, int skip, std::vector<int>* previous = nullptr) const
+  {
+    const int count = kColumns * kRows;
+    std::vector<double> distance(count, std::numeric_limits<double>::infinity());
+    std::vector<int> via(count, -1);
+    using Entry = std::pair<double, int>;
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+    distance[source] = 0.0;
+    queue.push({0.0, source});
+    while (!queue.empty()) {
+      const auto [cost, node] = queue.top();
+      queue.pop();
+      if (cost > distance[node]) {
+        continue;
+      }
+      for (int index = 0; index < static_cast<int>(edges_.size()); ++index) {
+        const Edge& edge = edges_[index];
+        if (!edge.open || index == skip || (edge.from != node && edge.to != node)) {
+          continue;
+        }
+        const int other = edge.from == node ? edge.to : edge.from;
+        const double next = cost + length(edge);
+        if (next < distance[other]) {
+          distance[other] = next;
+          via[other] = index;
+          queue.push({next, other});
+        }
+      }
+    }
+    if (previous != nullptr) {
+      *previous = via;
+    }
+    return distance;
+  }
+
+  bool connected() const
+  {
+    const auto distance = distances(0, -1);
+    return std::all_of(distance.begin(), distance.end(), [](double value) { return std::isfinite(value); });
+  }
+
+ private:
+  std::vector<double> xs_;
+  std::vector<double> ys_;
+  std::vector<Edge> edges_;
+};
+
+std::vector<double> positions(SeededRandom& random, double extent, int count)
+{
+  const double first = kFrame + 0.5 * kTunnel;
+  const double last = extent - kFrame - 0.5 * kTunnel;
+  const double spacing = (last - first) / (count - 1);
+  std::vector<double> values;
+  for (int index = 0; index < count; ++index) {
+    const double jitter = (index == 0 || index == count - 1) ? 0.0 : random.uniform(-0.15, 0.15) * spacing;
+    values.push_back(std::round((first + index * spacing + jitter) * 10.0) / 10.0);
+  }
+  return values;
+}
+
+/// Where along an edge a crate goes (a point on the tunnel's centre line at least 8 m from junctions).
+geometry::Point alongEdge(const Lattice& lattice, const Edge& edge, SeededRandom& random)
+{
+  const geometry::Point from = lattice.junction(edge.from);
+  const geometry::Point to = lattice.junction(edge.to);
+  const double length = (to - from).norm();
+  const double at = random.uniform(8.0, length - 8.0);
+  const geometry::Point point = from + (to - from) * (at / length);
+  return {std::round(point.x() * 10.0) / 10.0, std::round(point.y() * 10.0) / 10.0};
+}
+
+}  // namespace
+
+World generateTunnel(std::uint64_t seed)
+{
+  SeededRandom random(seed);
+  Lattice lattice(positions(random, kWidth, kColumns), positions(random, kHeight, kRows));
+
+  // Close about a third of the tunnels while everything stays connected.
+  auto& edges = lattice.edges();
+  std::vector<int> order(edges.size());
+  for (int index = 0; index < static_cast<int>(order.size()); ++index) {
+    order[index] = index;
+  }
+  for (int index = static_cast<int>(order.size()) - 1; index > 0; --index) {
+    std::swap(order[index], order[random.integer(0, index)]);
+  }
+  const std::size_t to_close = edges.size() / 3;
+  std::size_t closed = 0;
+  for (const int candidate : order) {
+    if (closed == to_close) {
+      break;
+    }
+    edges[candidate].open = false;
+    if (lattice.connected()) {
+      ++closed;
+    } else {
+      edges[candidate].open = true;
+    }
+  }
+
+  WorldBuilder builder("tunnel", "generator tunnel seed " + std::to_string(seed));
+  const double half = 0.5 * kTunnel;
+  builder.addRectangle("rock", {0.0, 0.0, kWidth, kFrame}, 4.0);
+  builder.addRectangle("rock", {0.0, kHeight - kFrame, kWidth, kHeight}, 4.0);
+  builder.addRectangle("rock", {0.0, kFrame, kFrame, kHeight - kFrame}, 4.0);
+  builder.addRectangle("rock", {kWidth - kFrame, kFrame, kWidth, kHeight - kFrame}, 4.0);
+  for (int row = 0; row + 1 < kRows; ++row) {
+    for (int column = 0; column + 1 < kColumns; ++column) {
+      builder.addRectangle("rock",
+                           {lattice.x(column) + half, lattice.y(row) + half, lattice.x(column + 1) - half,
+                            lattice.y(row + 1) - half},
+                           4.0);
+    }
+  }
+  for (const auto& edge : edges) {
+    if (edge.open) {
+      continue;
+    }
+    const auto a = lattice.junction(edge.from);
+    const auto b = lattice.junction(edge.to);
+    if (edge.horizontal) {
+      builder.addRectangle("rock", {a.x() + half, a.y() - half, b.x() - half, a.y() + half}, 4.0);
+    } else {
+      builder.addRectangle("rock", {a.x() - half, a.y() + half, a.x() + half, b.y() - half}, 4.0);
+    }
+  }
+
+  // Goal: the junction whose shortest route from the start junction is nearest the target length.
+  const int start_node = 0;
+  std::vector<int> previous;
+  const auto distance = lattice.distances(start_node, -1, &previous);
+  int goal_node = start_node;
+  for (int node = 0; node < static_cast<int>(distance.size()); ++node) {
+    if (std::abs(distance[node] - kTargetPath) < std::abs(distance[goal_node] - kTargetPath)) {
+      goal_node = node;
+    }
+  }
+  builder.setStart({lattice.junction(start_node).x(), lattice.junction(start_node).y(), 0.0});
+  builder.addGoal(lattice.junction(goal_node));
+
+  // Crates across tunnels of the shortest route: light ones to push, heavy ones only where a way round
+  // exists (the tunnel is not a bridge between start and goal).
+  std::vector<int> route;
+  for (int node = goal_node; node != start_node;) {
+    const int via = previous[node];
+    route.push_back(via);
+    node = edges[via].from == node ? edges[via].to : edges[via].from;
+  }
+  int crates = 0;
+  std::vector<geometry::Point> placed_objects;
+  for (const int edge_index : route) {
+    if (crates == 3 || lattice.length(edges[edge_index]) < 20.0) {
+      continue;
+    }
+    const bool bridge = !std::isfinite(lattice.distances(start_node, edge_index)[goal_node]);
+    const ObjectWeight weight = (crates == 1 && !bridge) ? ObjectWeight::Heavy : ObjectWeight::Light;
+    const auto centre = alongEdge(lattice, edges[edge_index], random);
+    // 3.6 m across a 4 m tunnel, 1.2 m deep.
+    const bool horizontal = edges[edge_index].horizontal;
+    builder.addObject(centre, horizontal ? 1.2 : kTunnel - 0.4, horizontal ? kTunnel - 0.4 : 1.2, 0.0, weight,
+                      random);
+    placed_objects.push_back(centre);
+    ++crates;
+  }
+  // Loose boxes against tunnel sides elsewhere: they narrow a tunnel but do not close it.
+  for (int placed = 0, tries = 0; placed < 12 && tries < 100; ++tries) {
+    const int edge_index = random.integer(0, static_cast<int>(edges.size()) - 1);
+    const Edge& edge = edges[edge_index];
+    if (!edge.open || std::find(route.begin(), route.end(), edge_index) != route.end() ||
+        lattice.length(edge) < 20.0) {
+      continue;
+    }
+    const auto point = alongEdge(lattice, edge, random);
+    const double side = random.chance(0.5) ? 1.0 : -1.0;
+    const geometry::Point centre = edge.horizontal
+                                       ? geometry::Point(point.x(), point.y() + side * (half - 0.6))
+                                       : geometry::Point(point.x() + side * (half - 0.6), point.y());
+    // Rock lines every tunnel, so only the distance to other objects matters.
+    bool free = true;
+    for (const auto& other : placed_objects) {
+      free = free && (other - centre).norm() > 5.0;
+    }
+    if (free) {
+      placed_objects.push_back(centre);
+      builder.addObject(centre, 1.0, 1.0, 0.0, placed % 3 == 0 ? ObjectWeight::Heavy : ObjectWeight::Light,
+                        random);
+      ++placed;
+    }
+  }
+  return builder.build();
+}
+
+}  // namespace ifar::sim

@@ -1,0 +1,174 @@
+#include "sim/world/world_validation.hpp"
+
+#include <cmath>
+#include <map>
+
+#include "sim/world/world_geometry.hpp"
+
+namespace ifar::sim {
+namespace {
+
+std::string obstacleEntity(const StaticObstacle& obstacle)
+{
+  return "obstacle '" + obstacle.name + "'";
+}
+
+std::string objectEntity(const MovableObject& object)
+{
+  return "object '" + object.name + "' (id " + std::to_string(object.id) + ")";
+}
+
+bool finite(const geometry::Point& point)
+{
+  return std::isfinite(point.x()) && std::isfinite(point.y());
+}
+
+void checkObject(const MovableObject& object, std::vector<WorldProblem>& problems)
+{
+  const auto entity = objectEntity(object);
+  if (object.id <= 0) {
+    problems.push_back({entity, "id must be positive"});
+  }
+  if (!(object.mass_kg > 0.0) || !std::isfinite(object.mass_kg)) {
+    problems.push_back({entity, "mass must be positive, got " + std::to_string(object.mass_kg) + " kg"});
+  }
+  if (!(object.height_m > 0.0) || !std::isfinite(object.height_m)) {
+    problems.push_back({entity, "height must be positive, got " + std::to_string(object.height_m) + " m"});
+  }
+  if (!(object.ground_friction >= 0.0) || !std::isfinite(object.ground_friction)) {
+    problems.push_back(
+        {entity, "ground friction must be >= 0, got " + std::to_string(object.ground_friction)});
+  }
+  if (!(object.reflectivity >= 0.0 && object.reflectivity <= 1.0)) {
+    problems.push_back(
+        {entity, "reflectivity must be within 0..1, got " + std::to_string(object.reflectivity)});
+  }
+  if (!std::isfinite(object.pose.x) || !std::isfinite(object.pose.y) || !std::isfinite(object.pose.heading)) {
+    problems.push_back({entity, "pose is not finite"});
+  }
+  if (const auto problem = polygonProblem(object.outline)) {
+    problems.push_back({entity, *problem});
+  }
+}
+
+void checkObstacle(const StaticObstacle& obstacle, std::vector<WorldProblem>& problems)
+{
+  const auto entity = obstacleEntity(obstacle);
+  if (!(obstacle.height_m > 0.0) || !std::isfinite(obstacle.height_m)) {
+    problems.push_back({entity, "height must be positive, got " + std::to_string(obstacle.height_m) + " m"});
+  }
+  if (!(obstacle.reflectivity >= 0.0 && obstacle.reflectivity <= 1.0)) {
+    problems.push_back(
+        {entity, "reflectivity must be within 0..1, got " + std::to_string(obstacle.reflectivity)});
+  }
+  if (const auto problem = polygonProblem(obstacle.outline)) {
+    problems.push_back({entity, *problem});
+  }
+}
+
+}  // namespace
+
+std::optional<std::string> polygonProblem(const geometry::Polygon& polygon)
+{
+  for (const auto& vertex : polygon) {
+    if (!finite(vertex)) {
+      return std::string("polygon has a non-finite coordinate");
+    }
+  }
+  if (polygon.size() < 3) {
+    return "open or degenerate polygon: " + std::to_string(polygon.size()) + " vertices, at least 3 needed";
+  }
+  for (std::size_t index = 0; index < polygon.size(); ++index) {
+    const auto& next = polygon[(index + 1) % polygon.size()];
+    if ((polygon[index] - next).norm() <= geometry::kEpsilon) {
+      return "degenerate polygon: vertex " + std::to_string(index) + " repeats the next one";
+    }
+  }
+  if (geometry::area(polygon) <= geometry::kEpsilon) {
+    return std::string("degenerate polygon: zero area");
+  }
+  if (!geometry::isSimple(polygon)) {
+    return std::string("self-intersecting polygon");
+  }
+  return std::nullopt;
+}
+
+std::vector<WorldProblem> findWorldProblems(const World& world)
+{
+  std::vector<WorldProblem> problems;
+  for (const auto& obstacle : world.obstacles) {
+    checkObstacle(obstacle, problems);
+  }
+  std::map<std::int64_t, std::string> ids;
+  for (const auto& object : world.objects) {
+    checkObject(object, problems);
+    const auto [found, inserted] = ids.emplace(object.id, object.name);
+    if (!inserted) {
+      problems.push_back({objectEntity(object), "id is already used by object '" + found->second + "'"});
+    }
+  }
+  if (!problems.empty()) {
+    return problems;  // overlap tests need valid polygons
+  }
+
+  std::vector<geometry::Polygon> placed;
+  placed.reserve(world.objects.size());
+  for (const auto& object : world.objects) {
+    placed.push_back(placedOutline(object));
+  }
+  for (std::size_t i = 0; i < world.objects.size(); ++i) {
+    for (const auto& obstacle : world.obstacles) {
+      if (interiorsOverlap(placed[i], obstacle.outline)) {
+        problems.push_back({objectEntity(world.objects[i]), "overlaps " + obstacleEntity(obstacle)});
+      }
+    }
+    for (std::size_t j = i + 1; j < world.objects.size(); ++j) {
+      if (interiorsOverlap(placed[i], placed[j])) {
+        problems.push_back({objectEntity(world.objects[i]), "overlaps " + objectEntity(world.objects[j])});
+      }
+    }
+  }
+
+  const auto start = world.start.position();
+  if (!finite(start) || !std::isfinite(world.start.heading)) {
+    problems.push_back({"start", "pose is not finite"});
+  }
+  for (const auto& obstacle : world.obstacles) {
+    if (geometry::containsPoint(obstacle.outline, start)) {
+      problems.push_back({"start", "lies inside " + obstacleEntity(obstacle)});
+    }
+  }
+  for (std::size_t i = 0; i < world.objects.size(); ++i) {
+    if (geometry::containsPoint(placed[i], start)) {
+      problems.push_back({"start", "lies inside " + objectEntity(world.objects[i])});
+    }
+  }
+  for (const auto& goal : world.goals) {
+    const std::string entity = "goal '" + goal.name + "'";
+    if (!finite(goal.position)) {
+      problems.push_back({entity, "position is not finite"});
+      continue;
+    }
+    for (const auto& obstacle : world.obstacles) {
+      if (geometry::containsPoint(obstacle.outline, goal.position)) {
+        problems.push_back({entity, "lies inside " + obstacleEntity(obstacle)});
+      }
+    }
+  }
+  return problems;
+}
+
+std::string describeProblems(const std::string& source, const std::vector<WorldProblem>& problems)
+{
+  if (problems.empty()) {
+    return {};
+  }
+  std::string message = source + ": " + problems.front().entity + ": " + problems.front().problem;
+  if (problems.size() > 1) {
+    message += " (and " + std::to_string(problems.size() - 1) + " more problem" +
+               (problems.size() > 2 ? "s" : "") + ")";
+  }
+  return message;
+}
+
+}  // namespace ifar::sim

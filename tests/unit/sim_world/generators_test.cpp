@@ -1,0 +1,240 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <queue>
+
+#include "common/vehicle.hpp"
+#include "sim/generators/generators.hpp"
+#include "sim/world/world_file.hpp"
+#include "sim/world/world_geometry.hpp"
+
+namespace ifar::sim {
+namespace {
+
+const WorldKind kSeededKinds[] = {WorldKind::Room, WorldKind::RoomObjects, WorldKind::Office,
+                                  WorldKind::Tunnel};
+
+/// Length of the shortest 8-connected path between start and first goal over grid cells whose centres lie
+/// outside every static obstacle (movable objects ignored): the "short cut" length.
+double staticPathLength(const World& world, double cell)
+{
+  const int width = static_cast<int>(std::ceil((world.bounds_max.x() - world.bounds_min.x()) / cell));
+  const int height = static_cast<int>(std::ceil((world.bounds_max.y() - world.bounds_min.y()) / cell));
+  auto centre = [&](int x, int y) -> geometry::Point {
+    return world.bounds_min + geometry::Point((x + 0.5) * cell, (y + 0.5) * cell);
+  };
+  std::vector<char> free(static_cast<std::size_t>(width * height), 1);
+  for (const auto& obstacle : world.obstacles) {
+    geometry::Point low = obstacle.outline.front();
+    geometry::Point high = low;
+    for (const auto& vertex : obstacle.outline) {
+      low = low.cwiseMin(vertex);
+      high = high.cwiseMax(vertex);
+    }
+    const int x0 = std::max(0, static_cast<int>((low.x() - world.bounds_min.x()) / cell) - 1);
+    const int x1 = std::min(width - 1, static_cast<int>((high.x() - world.bounds_min.x()) / cell) + 1);
+    const int y0 = std::max(0, static_cast<int>((low.y() - world.bounds_min.y()) / cell) - 1);
+    const int y1 = std::min(height - 1, static_cast<int>((high.y() - world.bounds_min.y()) / cell) + 1);
+    for (int y = y0; y <= y1; ++y) {
+      for (int x = x0; x <= x1; ++x) {
+        if (geometry::containsPoint(obstacle.outline, centre(x, y))) {
+          free[static_cast<std::size_t>(y * width + x)] = 0;
+        }
+      }
+    }
+  }
+  auto cellOf = [&](const geometry::Point& point) {
+    const int x = static_cast<int>((point.x() - world.bounds_min.x()) / cell);
+    const int y = static_cast<int>((point.y() - world.bounds_min.y()) / cell);
+    return y * width + x;
+  };
+  std::vector<double> distance(free.size(), std::numeric_limits<double>::infinity());
+  using Entry = std::pair<double, int>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+  const int source = cellOf(world.start.position());
+  const int target = cellOf(world.goals.at(0).position);
+  distance[static_cast<std::size_t>(source)] = 0.0;
+  queue.push({0.0, source});
+  while (!queue.empty()) {
+    const auto [cost, node] = queue.top();
+    queue.pop();
+    if (node == target) {
+      return cost * cell;
+    }
+    if (cost > distance[static_cast<std::size_t>(node)]) {
+      continue;
+    }
+    const int x = node % width;
+    const int y = node / width;
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dx = -1; dx <= 1; ++dx) {
+        const int nx = x + dx;
+        const int ny = y + dy;
+        if ((dx == 0 && dy == 0) || nx < 0 || ny < 0 || nx >= width || ny >= height) {
+          continue;
+        }
+        const int next = ny * width + nx;
+        // Diagonal steps need both side cells free (no corner cutting).
+        if (!free[static_cast<std::size_t>(next)] || !free[static_cast<std::size_t>(y * width + nx)] ||
+            !free[static_cast<std::size_t>(ny * width + x)]) {
+          continue;
+        }
+        const double step = (dx != 0 && dy != 0) ? std::sqrt(2.0) : 1.0;
+        if (cost + step < distance[static_cast<std::size_t>(next)]) {
+          distance[static_cast<std::size_t>(next)] = cost + step;
+          queue.push({cost + step, next});
+        }
+      }
+    }
+  }
+  return std::numeric_limits<double>::infinity();
+}
+
+TEST(SimWorldGenerators, SameSeedGivesSameWorld)
+{
+  for (const auto kind : kSeededKinds) {
+    const auto first = generateWorld(kind, 42);
+    const auto second = generateWorld(kind, 42);
+    ASSERT_TRUE(first.ok()) << first.error();
+    ASSERT_TRUE(second.ok()) << second.error();
+    EXPECT_EQ(formatWorld(first.world()), formatWorld(second.world())) << worldKindName(kind);
+  }
+}
+
+TEST(SimWorldGenerators, DifferentSeedsGiveDifferentWorlds)
+{
+  for (const auto kind : kSeededKinds) {
+    EXPECT_NE(formatWorld(generateWorld(kind, 1).world()), formatWorld(generateWorld(kind, 2).world()))
+        << worldKindName(kind);
+  }
+}
+
+TEST(SimWorldGenerators, GeneratedWorldsPassValidationForManySeeds)
+{
+  for (const auto kind : kSeededKinds) {
+    for (std::uint64_t seed = 0; seed < 15; ++seed) {
+      const auto result = generateWorld(kind, seed);
+      EXPECT_TRUE(result.ok()) << worldKindName(kind) << " seed " << seed << ": " << result.error();
+    }
+  }
+}
+
+TEST(SimWorldGenerators, RoomWithObjectsSharesTheStaticLayout)
+{
+  const World plain = generateRoom(5, false);
+  const World with_objects = generateRoom(5, true);
+  EXPECT_TRUE(plain.objects.empty());
+  EXPECT_FALSE(with_objects.objects.empty());
+  ASSERT_EQ(plain.obstacles.size(), with_objects.obstacles.size());
+  for (std::size_t index = 0; index < plain.obstacles.size(); ++index) {
+    EXPECT_EQ(plain.obstacles[index].outline, with_objects.obstacles[index].outline);
+  }
+  EXPECT_DOUBLE_EQ(plain.bounds_max.x() - plain.bounds_min.x(), 32.0);
+  EXPECT_DOUBLE_EQ(plain.bounds_max.y() - plain.bounds_min.y(), 32.0);
+}
+
+TEST(SimWorldGenerators, LightAndHeavyObjectsStraddleThePushLimit)
+{
+  const common::VehicleSettings vehicle;
+  ASSERT_NEAR(vehicle.maxPushForce(), 549.36, 1e-9);
+  for (const auto kind :
+       {WorldKind::RoomObjects, WorldKind::Office, WorldKind::Tunnel, WorldKind::DemoRoom}) {
+    const auto result = generateWorld(kind, 3);
+    ASSERT_TRUE(result.ok()) << result.error();
+    int light = 0;
+    int heavy = 0;
+    for (const auto& object : result.world().objects) {
+      const double force = slidingForce(object);
+      if (force < 0.5 * vehicle.maxPushForce()) {
+        ++light;
+      } else if (force > 2.0 * vehicle.maxPushForce()) {
+        ++heavy;
+      } else {
+        ADD_FAILURE() << worldKindName(kind) << " object '" << object.name << "' needs " << force
+                      << " N: neither clearly light nor clearly heavy";
+      }
+    }
+    EXPECT_GT(light, 0) << worldKindName(kind);
+    EXPECT_GT(heavy, 0) << worldKindName(kind);
+  }
+}
+
+TEST(SimWorldGenerators, PathLengthsMatchThePapersPlaces)
+{
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    const double room = staticPathLength(generateRoom(seed, false), 0.25);
+    EXPECT_GT(room, 15.0) << "room seed " << seed;  // the paper's threshold for the 32 m room
+    EXPECT_LT(room, 45.0) << "room seed " << seed;
+    const double office = staticPathLength(generateOffice(seed), 0.25);
+    EXPECT_GT(office, 40.0) << "office seed " << seed;
+    EXPECT_LT(office, 65.0) << "office seed " << seed;
+    const World tunnel = generateTunnel(seed);
+    EXPECT_NEAR(tunnel.bounds_max.x() - tunnel.bounds_min.x(), 330.0, 1e-9);
+    EXPECT_NEAR(tunnel.bounds_max.y() - tunnel.bounds_min.y(), 270.0, 1e-9);
+    const double tunnel_path = staticPathLength(tunnel, 1.0);
+    EXPECT_GT(tunnel_path, 380.0) << "tunnel seed " << seed;
+    EXPECT_LT(tunnel_path, 520.0) << "tunnel seed " << seed;
+  }
+}
+
+TEST(SimWorldGenerators, DemoRoomHidesTheGoalBehindALightDoorwayBox)
+{
+  const World demo = generateDemoRoom();
+  const common::VehicleSettings vehicle;
+  // The doorway box is the first object; the straight line from start to goal passes through it.
+  const auto& doorway = demo.objects.at(0);
+  EXPECT_TRUE(isPushable(doorway, vehicle));
+  const auto outline = placedOutline(doorway);
+  const geometry::Point start = demo.start.position();
+  const geometry::Point goal = demo.goals.at(0).position;
+  const geometry::Segment sight{start, goal};
+  bool crosses = false;
+  for (std::size_t index = 0; index < outline.size(); ++index) {
+    crosses = crosses || geometry::segmentsIntersect(sight, geometry::polygonEdge(outline, index));
+  }
+  EXPECT_TRUE(crosses);
+  // Without pushing, the way round through the opening is much longer than the straight line.
+  const double straight = (goal - start).norm();
+  World blocked = demo;
+  StaticObstacle plug;
+  plug.name = "plug";
+  plug.outline = outline;
+  blocked.obstacles.push_back(plug);
+  EXPECT_GT(staticPathLength(blocked, 0.25), 1.6 * straight);  // about 40 m against 22 m
+}
+
+TEST(SimWorldGenerators, KindNamesRoundTrip)
+{
+  for (const auto kind :
+       {WorldKind::Room, WorldKind::RoomObjects, WorldKind::Office, WorldKind::Tunnel, WorldKind::DemoRoom}) {
+    EXPECT_EQ(parseWorldKind(worldKindName(kind)), kind);
+  }
+  EXPECT_FALSE(parseWorldKind("castle").has_value());
+}
+
+}  // namespace
+}  // namespace ifar::sim
+
+namespace ifar::sim {
+namespace {
+
+TEST(SimWorldCheckedIn, LoadAndMatchTheirGenerator)
+{
+  const std::pair<const char*, WorldKind> files[] = {{"room.yaml", WorldKind::Room},
+                                                     {"room_objects.yaml", WorldKind::RoomObjects},
+                                                     {"office.yaml", WorldKind::Office},
+                                                     {"tunnel.yaml", WorldKind::Tunnel},
+                                                     {"demo_room.yaml", WorldKind::DemoRoom}};
+  for (const auto& [file, kind] : files) {
+    const std::string path = std::string(IFAR_SOURCE_DIR) + "/config/worlds/" + file;
+    const auto loaded = loadWorldFile(path);
+    ASSERT_TRUE(loaded.ok()) << loaded.error();
+    EXPECT_EQ(formatWorld(loaded.world()), formatWorld(generateWorld(kind, 1).world()))
+        << path << " differs from its generator: regenerate with "
+        << "ifar-worldgen --kind " << worldKindName(kind) << " --seed 1 --out config/worlds/" << file;
+  }
+}
+
+}  // namespace
+}  // namespace ifar::sim
