@@ -16,14 +16,18 @@ namespace {
 
 constexpr std::int64_t kErrorLogIntervalUs = 1'000'000;
 
-// Adapts a std::function to LCM 1.3.1's member-function subscription (it has no lambda overload).
+// Carries a handler through LCM's C callback (the C++ member-function template trips UBSan's vptr check).
 class RawSubscriber {
  public:
   explicit RawSubscriber(std::function<void(const lcm::ReceiveBuffer*, const std::string&)> handler)
       : handler_(std::move(handler))
   {
   }
-  void onMessage(const lcm::ReceiveBuffer* buffer, const std::string& channel) { handler_(buffer, channel); }
+  static void dispatch(const lcm_recv_buf_t* buffer, const char* channel, void* user)
+  {
+    const lcm::ReceiveBuffer receive{buffer->data, buffer->data_size, buffer->recv_utime};
+    static_cast<RawSubscriber*>(user)->handler_(&receive, channel);
+  }
 
  private:
   std::function<void(const lcm::ReceiveBuffer*, const std::string&)> handler_;
@@ -81,7 +85,10 @@ void RunLoop::subscribeRaw(const std::string& channel,
                            std::function<void(const lcm::ReceiveBuffer*, const std::string&)> handler)
 {
   auto subscriber = std::make_unique<RawSubscriber>(std::move(handler));
-  lcm_.subscribe(channel, &RawSubscriber::onMessage, subscriber.get());
+  if (lcm_subscribe(lcm_.getUnderlyingLCM(), channel.c_str(), &RawSubscriber::dispatch, subscriber.get()) ==
+      nullptr) {
+    throw std::runtime_error("cannot subscribe to channel '" + channel + "'");
+  }
   subscribers_->list.push_back(std::move(subscriber));
 }
 

@@ -1,0 +1,91 @@
+// All n(n-1) push plans of one object (connectivity analysis included), per scene. Targets from
+// issue 6: median <= 20 ms, p99 <= 100 ms. Reports per-iteration median and p99 in milliseconds and
+// the mean number of search expansions per plan.
+
+#include <algorithm>
+#include <chrono>
+#include <vector>
+
+#include <benchmark/benchmark.h>
+
+#include "planner/interaction/interaction_planner.hpp"
+#include "tests/unit/interaction/scenes.hpp"
+
+namespace {
+
+using ifar::interaction::InteractionSettings;
+using ifar::interaction::LocalScene;
+using ifar::interaction::ObjectPhysics;
+using ifar::interaction::PlanStatus;
+
+double quantile(std::vector<double> samples, double fraction)
+{
+  std::sort(samples.begin(), samples.end());
+  const auto index = static_cast<std::size_t>(fraction * static_cast<double>(samples.size() - 1) + 0.5);
+  return samples[index];
+}
+
+void allPairPlans(benchmark::State& state, const LocalScene& scene, bool analytic)
+{
+  InteractionSettings settings;
+  settings.pusher = ifar::interaction::PusherSettings::fromVehicle(ifar::common::VehicleSettings{});
+  if (!analytic) {
+    settings.search.analytic_max_distance_m = 0.0;
+  }
+  std::vector<double> milliseconds;
+  double expansions = 0.0;
+  double plans = 0.0;
+  double found = 0.0;
+  for (auto _ : state) {
+    const auto start = std::chrono::steady_clock::now();
+    const auto result =
+        ifar::interaction::planObjectInteractions(scene, 0, ObjectPhysics{0.4, 20.0}, settings);
+    milliseconds.push_back(
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+    benchmark::DoNotOptimize(result);
+    for (const auto& pair : result.plans) {
+      expansions += static_cast<double>(pair.plan.expansions);
+      found += pair.plan.status == PlanStatus::Found ? 1.0 : 0.0;
+      plans += 1.0;
+    }
+  }
+  state.counters["median_ms"] = quantile(milliseconds, 0.5);
+  state.counters["p99_ms"] = quantile(milliseconds, 0.99);
+  state.counters["expansions_per_plan"] = plans > 0.0 ? expansions / plans : 0.0;
+  state.counters["found_fraction"] = plans > 0.0 ? found / plans : 0.0;
+  state.counters["plans"] = plans / static_cast<double>(std::max<std::size_t>(1, milliseconds.size()));
+}
+
+void BM_DoorwayAllPairs(benchmark::State& state)
+{
+  allPairPlans(state, ifar::interaction::test::doorwayScene(), true);
+}
+void BM_TJunctionAllPairs(benchmark::State& state)
+{
+  allPairPlans(state, ifar::interaction::test::tJunctionScene(), true);
+}
+void BM_WallBehindDoorAllPairs(benchmark::State& state)
+{
+  allPairPlans(state, ifar::interaction::test::doorwayWithWallBehindScene(), true);
+}
+void BM_NearWallContactSwitchAllPairs(benchmark::State& state)
+{
+  allPairPlans(state, ifar::interaction::test::doorwayWithNearWallScene(), true);
+}
+void BM_WallBehindDoorAllPairsNoAnalytic(benchmark::State& state)
+{
+  allPairPlans(state, ifar::interaction::test::doorwayWithWallBehindScene(), false);
+}
+void BM_TJunctionAllPairsNoAnalytic(benchmark::State& state)
+{
+  allPairPlans(state, ifar::interaction::test::tJunctionScene(), false);
+}
+
+BENCHMARK(BM_DoorwayAllPairs)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TJunctionAllPairs)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_WallBehindDoorAllPairs)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_NearWallContactSwitchAllPairs)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_WallBehindDoorAllPairsNoAnalytic)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TJunctionAllPairsNoAnalytic)->Unit(benchmark::kMillisecond);
+
+}  // namespace

@@ -1,0 +1,372 @@
+// ifar bench-search: runs grid A*, RRT*, BIT* and ours (the DV-graph search, FAR mode on a static map)
+// on the same queries of one map and prints per query and planner: success, length, exact optimum and
+// time; then median and p99 per planner. Issue 8, Table I.
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "bench/baselines/cpu_clock.hpp"
+#include "bench/baselines/grid_astar.hpp"
+#include "bench/baselines/sampling_planners.hpp"
+#include "bench/search_comparison/query_set.hpp"
+#include "bench/search_comparison/world_raster.hpp"
+#include "common/grid_map/readers.hpp"
+#include "planner/graph/prior_map.hpp"
+#include "planner/graph/search.hpp"
+#include "sim/generators/generators.hpp"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+namespace baselines = ifar::baselines;
+
+const std::vector<std::string> kPlanners{"grid_astar", "rrt_star", "bit_star", "ours"};
+
+struct Row {
+  std::string planner;
+  std::string task;
+  bool success = false;
+  double length = NAN;
+  double optimal = NAN;
+  double milliseconds = 0.0;  // planner-thread CPU time
+  double wall_milliseconds = 0.0;
+  std::string status;
+  std::string reason;
+};
+
+std::string number(double value)
+{
+  if (!std::isfinite(value)) {
+    return "null";
+  }
+  char text[64];
+  std::snprintf(text, sizeof(text), "%.6f", value);
+  return text;
+}
+
+std::string jsonString(const std::string& text)
+{
+  std::string quoted = "\"";
+  for (const char character : text) {
+    if (character == '"' || character == '\\') {
+      quoted += '\\';
+    }
+    quoted += character;
+  }
+  return quoted + "\"";
+}
+
+std::string baseName(const std::string& path)
+{
+  const auto slash = path.find_last_of('/');
+  std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
+  const auto dot = name.find_last_of('.');
+  return dot == std::string::npos ? name : name.substr(0, dot);
+}
+
+/// Nearest-rank percentile of an unsorted list (p in 0..100).
+double percentile(std::vector<double> values, double p)
+{
+  if (values.empty()) {
+    return NAN;
+  }
+  std::sort(values.begin(), values.end());
+  const double rank = std::ceil(p / 100.0 * static_cast<double>(values.size()));
+  const std::size_t index = static_cast<std::size_t>(std::max(1.0, rank)) - 1;
+  return values[std::min(index, values.size() - 1)];
+}
+
+std::vector<std::string> splitList(const std::string& text)
+{
+  std::vector<std::string> items;
+  std::stringstream stream(text);
+  std::string item;
+  while (std::getline(stream, item, ',')) {
+    if (!item.empty()) {
+      items.push_back(item);
+    }
+  }
+  return items;
+}
+
+Row fromBaseline(const std::string& planner, const std::string& task, double optimal,
+                 const baselines::BaselineResult& result)
+{
+  return Row{planner,
+             task,
+             result.solved(),
+             result.length,
+             optimal,
+             result.milliseconds,
+             result.wall_milliseconds,
+             baselines::toString(result.status),
+             result.reason};
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+  CLI::App app{
+      "Search-time comparison on one map: grid A* (8-connected, dense grid), OMPL RRT* and BIT*\n"
+      "(exact segment collision checks, run until within --factor of the optimum or --time-cap),\n"
+      "and ours (DV-graph A* on the prior map). The optimum is the exact zero-inflation length."};
+  std::string map_path;
+  std::string world_kind_text;
+  std::uint64_t world_seed = 1;
+  double resolution = 0.15;
+  std::string scen_path;
+  int query_count = 10;
+  std::uint64_t seed = 1;
+  std::string planner_list = "grid_astar,rrt_star,bit_star,ours";
+  bool json = false;
+  double inflate = 0.0;
+  double min_length = 0.0;
+  bool unknown_free = false;
+  baselines::SamplingSettings sampling;
+  auto* map_option =
+      app.add_option("--map", map_path, "MovingAI .map or map_server .yaml")->check(CLI::ExistingFile);
+  auto* world_option = app.add_option("--world", world_kind_text,
+                                      "generated world instead of a map: room | office | tunnel ...");
+  map_option->excludes(world_option);
+  app.add_option("--world-seed", world_seed, "generator seed for --world")->capture_default_str();
+  app.add_option("--resolution", resolution, "cell size (m) for rasterising --world")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app.add_option("--scen", scen_path, "MovingAI .scen queries (lattice points) instead of random ones")
+      ->check(CLI::ExistingFile);
+  app.add_option("--queries", query_count,
+                 "number of queries (first N of --scen, or random; a --world adds its own start->goal tasks)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  app.add_option("--seed", seed, "seed for random queries and OMPL")->capture_default_str();
+  app.add_option("--planners", planner_list, "comma-separated: grid_astar,rrt_star,bit_star,ours")
+      ->capture_default_str();
+  app.add_flag("--json", json, "one JSON object per row on stdout (summary table goes to stderr)");
+  app.add_option("--inflate", inflate, "inflate obstacles by this radius (m) for every planner")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  app.add_option("--min-length", min_length, "random queries: minimum optimal length (m)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  app.add_option("--time-cap", sampling.time_cap_s, "RRT*/BIT* time cap per query (s)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app.add_option("--factor", sampling.optimum_factor, "RRT*/BIT* stop within this factor of the optimum")
+      ->check(CLI::Range(1.0, 100.0))
+      ->capture_default_str();
+  app.add_flag("--unknown-free", unknown_free, "treat unknown map_server cells as free (default: blocked)");
+  CLI11_PARSE(app, argc, argv);
+
+  const std::vector<std::string> planners = splitList(planner_list);
+  for (const std::string& planner : planners) {
+    if (std::find(kPlanners.begin(), kPlanners.end(), planner) == kPlanners.end()) {
+      std::cerr << "ifar bench-search: --planners: unknown planner '" << planner
+                << "' (known: grid_astar, rrt_star, bit_star, ours)\n";
+      return 1;
+    }
+  }
+  const auto policy =
+      unknown_free ? ifar::grid_map::UnknownPolicy::AsFree : ifar::grid_map::UnknownPolicy::AsBlocked;
+
+  // The map every planner sees.
+  ifar::grid_map::GridMap map;
+  std::string world_name;
+  std::vector<ifar::bench::Query> world_tasks;  // a generated world's own start -> goal tasks
+  if (!map_path.empty()) {
+    auto read = ifar::grid_map::readGridMapFile(map_path);
+    if (!read.ok()) {
+      std::cerr << "ifar bench-search: " << read.error << "\n";
+      return 1;
+    }
+    map = std::move(read.map);
+    world_name = baseName(map_path);
+  } else if (!world_kind_text.empty()) {
+    const auto kind = ifar::sim::parseWorldKind(world_kind_text);
+    if (!kind) {
+      std::cerr << "ifar bench-search: --world: unknown kind '" << world_kind_text << "'\n";
+      return 1;
+    }
+    const ifar::sim::WorldResult world = ifar::sim::generateWorld(*kind, world_seed);
+    if (!world.ok()) {
+      std::cerr << "ifar bench-search: " << world.error() << "\n";
+      return 1;
+    }
+    map = ifar::bench::rasterizeStaticObstacles(world.world(), resolution);
+    world_name = world_kind_text + "-" + std::to_string(world_seed);
+    for (const ifar::sim::Goal& goal : world.world().goals) {
+      world_tasks.push_back(
+          ifar::bench::Query{"goal:" + goal.name, world.world().start.position(), goal.position, NAN});
+    }
+  } else {
+    std::cerr << "ifar bench-search: give --map FILE or --world KIND\n";
+    return 1;
+  }
+
+  const auto build_began = Clock::now();
+  const ifar::graph::PriorMap exact = ifar::graph::buildPriorMap(map, 0.0, policy);
+  std::optional<ifar::graph::PriorMap> inflated_prior;
+  if (inflate > 0.0) {
+    inflated_prior.emplace(ifar::graph::buildPriorMap(map, inflate, policy));
+  }
+  const ifar::graph::PriorMap& planning = inflated_prior ? *inflated_prior : exact;
+  const ifar::graph::SearchGraph planning_graph = ifar::graph::SearchGraph::fromDvGraph(planning.graph);
+  const double build_seconds = std::chrono::duration<double>(Clock::now() - build_began).count();
+  const ifar::grid_map::GridMap planning_grid = inflate > 0.0 ? map.inflated(inflate, policy) : map;
+  std::cerr << world_name << ": " << map.width() << " x " << map.height() << " cells of " << map.resolution()
+            << " m; DV-graph " << planning.graph.vertexCount() << " vertices, "
+            << planning.graph.visibilityEdgeCount() << " edges (built in " << build_seconds << " s)\n";
+
+  std::vector<ifar::bench::Query> queries;
+  bool queries_missing = false;
+  if (!scen_path.empty()) {
+    const auto scenarios = ifar::grid_map::readMovingAiScenarios(scen_path);
+    if (!scenarios.ok()) {
+      std::cerr << "ifar bench-search: " << scenarios.error << "\n";
+      return 1;
+    }
+    for (std::size_t index = 0; index < scenarios.scenarios.size() && static_cast<int>(index) < query_count;
+         ++index) {
+      const auto& scenario = scenarios.scenarios[index];
+      const ifar::geometry::Point start = map.cornerToWorld(scenario.start.x(), scenario.start.y());
+      const ifar::geometry::Point goal = map.cornerToWorld(scenario.goal.x(), scenario.goal.y());
+      queries.push_back(ifar::bench::Query{"scen" + std::to_string(index), start, goal,
+                                           ifar::bench::exactOptimum(exact, start, goal)});
+    }
+  } else {
+    // The world's own tasks first (their optimum on the rasterised static map), then random ones.
+    for (ifar::bench::Query& task : world_tasks) {
+      task.optimal = ifar::bench::exactOptimum(exact, task.start, task.goal);
+      queries.push_back(task);
+    }
+    ifar::bench::RandomQuerySettings settings;
+    settings.count = query_count;
+    settings.seed = seed;
+    settings.min_length = min_length;
+    const std::vector<ifar::bench::Query> random =
+        ifar::bench::randomQueries(planning_grid, policy, planning, exact, settings);
+    queries.insert(queries.end(), random.begin(), random.end());
+    if (static_cast<int>(random.size()) < query_count) {
+      queries_missing = true;
+      std::cerr << "ifar bench-search: only " << random.size() << " of " << query_count
+                << " random queries found (connected, optimum >= " << min_length << " m)\n";
+    }
+  }
+
+  baselines::seedSamplingPlanners(seed);
+  baselines::GridAStar grid_search(planning_grid, policy);
+  ifar::graph::SearchScratch scratch;
+  // One untimed run of the deterministic searches first, so the first timed query does not pay for
+  // cold caches and first-touch page faults of the search arrays.
+  if (!queries.empty()) {
+    grid_search.findPath(queries.front().start, queries.front().goal);
+    ifar::graph::findPath(planning_graph, planning.obstacles, queries.front().start, queries.front().goal,
+                          scratch);
+  }
+  std::vector<Row> rows;
+  bool planner_error = false;
+  for (const ifar::bench::Query& query : queries) {
+    // The sampling planners' target: the factor times the optimum on the map they plan in.
+    double planning_optimum = query.optimal;
+    if (inflate > 0.0) {
+      planning_optimum =
+          ifar::graph::findPath(planning_graph, planning.obstacles, query.start, query.goal, scratch).length;
+    }
+    for (const std::string& planner : planners) {
+      Row row;
+      if (planner == "ours") {
+        const auto began = Clock::now();
+        const double began_cpu = baselines::threadCpuMilliseconds();
+        const auto result =
+            ifar::graph::findPath(planning_graph, planning.obstacles, query.start, query.goal, scratch);
+        const double milliseconds = baselines::threadCpuMilliseconds() - began_cpu;
+        const double wall = std::chrono::duration<double, std::milli>(Clock::now() - began).count();
+        const bool found = result.status == ifar::graph::SearchStatus::Found;
+        row = Row{planner,
+                  query.task,
+                  found,
+                  found ? result.length : NAN,
+                  query.optimal,
+                  milliseconds,
+                  wall,
+                  found ? "solved" : ifar::graph::toString(result.status),
+                  ""};
+      } else if (planner == "grid_astar") {
+        const auto began = Clock::now();
+        const double began_cpu = baselines::threadCpuMilliseconds();
+        baselines::BaselineResult result = grid_search.findPath(query.start, query.goal);
+        result.milliseconds = baselines::threadCpuMilliseconds() - began_cpu;
+        result.wall_milliseconds = std::chrono::duration<double, std::milli>(Clock::now() - began).count();
+        row = fromBaseline(planner, query.task, query.optimal, result);
+      } else {
+        const auto algorithm = planner == "rrt_star" ? baselines::SamplingAlgorithm::RrtStar
+                                                     : baselines::SamplingAlgorithm::BitStar;
+        const auto result = baselines::planSampling(algorithm, planning.obstacles, query.start, query.goal,
+                                                    planning_optimum, sampling);
+        row = fromBaseline(planner, query.task, query.optimal, result);
+      }
+      planner_error = planner_error || row.status == "error";
+      if (json) {
+        std::cout << "{\"planner\": " << jsonString(row.planner) << ", \"world\": " << jsonString(world_name)
+                  << ", \"task\": " << jsonString(row.task)
+                  << ", \"success\": " << (row.success ? "true" : "false")
+                  << ", \"length\": " << number(row.length) << ", \"optimal\": " << number(row.optimal)
+                  << ", \"ms\": " << number(row.milliseconds)
+                  << ", \"wall_ms\": " << number(row.wall_milliseconds)
+                  << ", \"status\": " << jsonString(row.status) << ", \"reason\": " << jsonString(row.reason)
+                  << "}\n";
+      } else {
+        std::printf("%-6s %-10s %-7s length %10s optimal %10s %10.3f ms %s\n", row.task.c_str(),
+                    row.planner.c_str(), row.success ? "ok" : row.status.c_str(), number(row.length).c_str(),
+                    number(row.optimal).c_str(), row.milliseconds, row.reason.c_str());
+      }
+      std::cout.flush();
+      rows.push_back(row);
+    }
+  }
+
+  // Summary (CPU ms of the planner thread): times over every query (a failure counts with the time it used,
+  // e.g. the cap), and the mean length over the optimum on the solved ones.
+  std::ostream& summary = json ? std::cerr : std::cout;
+  char line[256];
+  std::snprintf(line, sizeof(line), "\n%-10s %8s %12s %12s %12s %10s\n", "planner", "success", "median ms",
+                "p99 ms", "max ms", "len/opt");
+  summary << world_name << ", " << queries.size() << " queries, planner-thread CPU time" << line;
+  for (const std::string& planner : planners) {
+    std::vector<double> times;
+    int successes = 0;
+    double ratio_sum = 0.0;
+    int ratio_count = 0;
+    for (const Row& row : rows) {
+      if (row.planner != planner) {
+        continue;
+      }
+      times.push_back(row.milliseconds);
+      if (row.success) {
+        ++successes;
+        if (std::isfinite(row.optimal) && row.optimal > 0.0) {
+          ratio_sum += row.length / row.optimal;
+          ++ratio_count;
+        }
+      }
+    }
+    const std::string success_text = std::to_string(successes) + "/" + std::to_string(times.size());
+    std::snprintf(line, sizeof(line), "%-10s %8s %12.3f %12.3f %12.3f %10.3f\n", planner.c_str(),
+                  success_text.c_str(), percentile(times, 50.0), percentile(times, 99.0),
+                  percentile(times, 100.0), ratio_count > 0 ? ratio_sum / ratio_count : NAN);
+    summary << line;
+  }
+  if (planner_error) {
+    return 2;
+  }
+  return queries_missing ? 3 : 0;
+}

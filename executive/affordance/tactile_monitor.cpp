@@ -1,0 +1,132 @@
+#include "executive/affordance/tactile_monitor.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace ifar::executive {
+
+const char* affordanceReasonName(AffordanceReason reason)
+{
+  switch (reason) {
+    case AffordanceReason::NoMotion:
+      return "no motion under maximum push";
+    case AffordanceReason::CostHigher:
+      return "cost higher than planned";
+    case AffordanceReason::CostLower:
+      return "cost lower than planned";
+  }
+  return "unknown";
+}
+
+void TactileMonitor::begin(const PushPlan& plan, double max_push_force_n)
+{
+  *this = TactileMonitor();
+  plan_ = plan;
+  max_push_force_ = max_push_force_n;
+}
+
+double TactileMonitor::extrapolatedCost() const
+{
+  const double planned_push_cost = plan_.expected_cost - plan_.travel_m;
+  if (plan_.expected_force_n > 0.0 && planned_push_cost > 0.0) {
+    return plan_.travel_m + planned_push_cost * meanForce() / plan_.expected_force_n;
+  }
+  // A plan without a usable force model: price the push at the vehicle's maximum force per metre.
+  return plan_.travel_m + plan_.push_distance_m * meanForce() / std::max(max_push_force_, 1.0);
+}
+
+AffordanceEvent TactileMonitor::makeEvent(AffordanceReason reason, double force_n, double measured_cost) const
+{
+  AffordanceEvent event;
+  event.object_id = plan_.object_id;
+  event.reason = reason;
+  event.pushable = reason != AffordanceReason::NoMotion;
+  event.push_force_n = force_n;
+  // mu scales with the force it takes: mu_new = mu_planned * F_measured / F_planned.
+  event.affordance =
+      plan_.expected_force_n > 0.0 ? plan_.affordance * force_n / plan_.expected_force_n : plan_.affordance;
+  event.planned_cost = plan_.expected_cost;
+  event.measured_cost = measured_cost;
+  return event;
+}
+
+std::optional<AffordanceEvent> TactileMonitor::update(std::int64_t now_us, double force_n,
+                                                      const geometry::Pose2& vehicle,
+                                                      const std::optional<geometry::Point>& object_position,
+                                                      bool in_contact_expected,
+                                                      const TactileSettings& settings)
+{
+  if (!std::isfinite(force_n) || !std::isfinite(vehicle.x) || !std::isfinite(vehicle.y)) {
+    return std::nullopt;
+  }
+  // Forward travel since the last cycle (backing off does not count as pushing).
+  double forward_step = 0.0;
+  if (has_last_pose_) {
+    const double heading = last_pose_.heading;
+    forward_step = std::max(
+        0.0, std::cos(heading) * (vehicle.x - last_pose_.x) + std::sin(heading) * (vehicle.y - last_pose_.y));
+  }
+  last_pose_ = vehicle;
+  has_last_pose_ = true;
+
+  const bool loaded = in_contact_expected && force_n >= settings.contact_force_n;
+  if (loaded) {
+    work_ += force_n * forward_step;
+    pushed_distance_ += forward_step;
+  }
+
+  // Principle 1: no object motion after maximum push effort for the configured time.
+  const bool at_maximum = in_contact_expected && force_n >= settings.max_force_fraction * max_push_force_;
+  if (!at_maximum) {
+    saturated_ = false;
+  } else {
+    if (!saturated_) {
+      saturated_ = true;
+      saturated_since_us_ = now_us;
+      saturated_vehicle_travel_ = 0.0;
+      saturated_object_start_ = object_position.value_or(geometry::Point::Zero());
+    } else {
+      saturated_vehicle_travel_ += forward_step;
+    }
+    const double moved =
+        object_position ? (*object_position - saturated_object_start_).norm() : saturated_vehicle_travel_;
+    if (moved > settings.motion_threshold_m) {
+      // It moves: start a new window here.
+      saturated_since_us_ = now_us;
+      saturated_vehicle_travel_ = 0.0;
+      saturated_object_start_ = object_position.value_or(geometry::Point::Zero());
+    } else if (!reported_no_motion_ &&
+               static_cast<double>(now_us - saturated_since_us_) >= settings.no_motion_time_s * 1e6) {
+      reported_no_motion_ = true;
+      AffordanceEvent event = makeEvent(AffordanceReason::NoMotion, force_n, extrapolatedCost());
+      event.text = fmt::format(
+          "object {} did not move ({:.3f} m) for {:.1f} s at {:.0f} N (maximum {:.0f} N): "
+          "unpushable",
+          plan_.object_id, moved, settings.no_motion_time_s, force_n, max_push_force_);
+      return event;
+    }
+  }
+
+  // Principle 2: the measured cost differs from the planned J by more than the threshold.
+  if (!reported_cost_ && pushed_distance_ >= settings.min_measured_distance_m) {
+    const double measured = extrapolatedCost();
+    const double difference = measured - plan_.expected_cost;
+    if (std::abs(difference) > settings.cost_threshold) {
+      reported_cost_ = true;
+      const AffordanceReason reason =
+          difference > 0.0 ? AffordanceReason::CostHigher : AffordanceReason::CostLower;
+      AffordanceEvent event = makeEvent(reason, meanForce(), measured);
+      event.text = fmt::format(
+          "object {}: measured cost {:.2f} vs planned {:.2f} after {:.2f} m at mean {:.0f} N "
+          "(planned {:.0f} N)",
+          plan_.object_id, measured, plan_.expected_cost, pushed_distance_, meanForce(),
+          plan_.expected_force_n);
+      return event;
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace ifar::executive

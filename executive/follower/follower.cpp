@@ -1,0 +1,169 @@
+#include "executive/follower/follower.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+#include "executive/follower/arc.hpp"
+#include "executive/follower/navigation_field.hpp"
+#include "executive/follower/obstacle_grid.hpp"
+#include "executive/kinematics/angle.hpp"
+
+namespace ifar::executive {
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+/// Smallest distance from the footprint at `pose` to a point near it (capped at `search_radius`).
+double clearanceAt(const geometry::Pose2& pose, const ObstacleGrid& grid, const Footprint& footprint,
+                   double search_radius)
+{
+  const double cosine = std::cos(pose.heading);
+  const double sine = std::sin(pose.heading);
+  const geometry::Point body_centre = footprint.bodyCentre();
+  const geometry::Point centre(pose.x + cosine * body_centre.x() - sine * body_centre.y(),
+                               pose.y + sine * body_centre.x() + cosine * body_centre.y());
+  double nearest = search_radius;
+  grid.forEachNear(centre, footprint.circumradius() + search_radius, [&](const geometry::Point& point) {
+    const double dx = point.x() - pose.x;
+    const double dy = point.y() - pose.y;
+    nearest =
+        std::min(nearest, footprint.distanceFromBody({cosine * dx + sine * dy, -sine * dx + cosine * dy}));
+  });
+  return nearest;
+}
+
+double headingError(const geometry::Pose2& pose, const geometry::Point& target)
+{
+  const double bearing = std::atan2(target.y() - pose.y, target.x() - pose.x);
+  return std::abs(wrapToPi(bearing - pose.heading));
+}
+
+}  // namespace
+
+const char* followerStatusName(FollowerStatus status)
+{
+  switch (status) {
+    case FollowerStatus::Moving:
+      return "moving";
+    case FollowerStatus::Arrived:
+      return "arrived";
+    case FollowerStatus::Blocked:
+      return "blocked";
+    case FollowerStatus::InvalidInput:
+      return "invalid input";
+  }
+  return "unknown";
+}
+
+FollowerResult follow(const geometry::Pose2& pose, const geometry::Point& target, bool stop_at_target,
+                      common::Span<const geometry::Point> obstacles, const FollowerSettings& settings,
+                      const DifferentialDrive& drive)
+{
+  FollowerResult result;
+  if (!std::isfinite(pose.x) || !std::isfinite(pose.y) || !std::isfinite(pose.heading) ||
+      !target.allFinite()) {
+    result.status = FollowerStatus::InvalidInput;
+    result.reason = "follower: pose or target is not finite";
+    return result;
+  }
+  const double start_distance = (target - pose.position()).norm();
+  if (start_distance <= settings.goal_tolerance_m) {
+    result.status = FollowerStatus::Arrived;
+    result.reason = fmt::format("target reached ({:.2f} m away)", start_distance);
+    return result;
+  }
+
+  double top_speed = std::min(settings.max_linear_velocity, drive.maxLinearVelocity());
+  if (stop_at_target && settings.slow_down_distance_m > 0.0) {
+    top_speed *= std::clamp(start_distance / settings.slow_down_distance_m, 0.25, 1.0);
+  }
+  const double reach = top_speed * settings.horizon_s;
+  const double search_radius = std::max(settings.clearance_cap_m, settings.clearance_m);
+  const ObstacleGrid grid(
+      obstacles, pose.position(),
+      reach + settings.footprint.circumradius() * 2.0 + search_radius + settings.cell_size_m,
+      settings.cell_size_m);
+
+  const double window =
+      std::clamp(start_distance + 1.0, reach + 2.0 * settings.footprint.circumradius(),
+                 std::max(settings.navigation_range_m, reach + 2.0 * settings.footprint.circumradius()));
+  const NavigationField field(obstacles, pose.position(), window, settings.navigation_cell_m,
+                              settings.footprint.half_width_m + settings.clearance_m, target);
+  const double start_cost = field.value(pose.position());
+
+  // Already closer than the clearance (after a push, or a point that appeared close): accept arcs that do
+  // not come closer than now, so the vehicle can still leave.
+  const double start_clearance = clearanceAt(pose, grid, settings.footprint, search_radius);
+  const double margin = std::min(settings.clearance_m, start_clearance);
+  const int steps = std::max(1, static_cast<int>(std::ceil(settings.horizon_s / settings.time_step_s)));
+  const int linear_samples = std::max(1, settings.linear_samples);
+  const int angular_samples = std::max(2, settings.angular_samples);
+
+  double best_score = -kInfinity;
+  for (int linear_index = 0; linear_index <= linear_samples; ++linear_index) {
+    for (int angular_index = 0; angular_index < angular_samples; ++angular_index) {
+      const double fraction = -1.0 + 2.0 * angular_index / (angular_samples - 1);
+      VelocityCommand arc{top_speed * linear_index / linear_samples, drive.maxAngularVelocity() * fraction};
+      if (arc.linear == 0.0 && std::abs(arc.angular) < 1e-9) {
+        continue;
+      }
+      arc = drive.limitSpeed(arc);
+      ++result.arcs;
+
+      bool free = true;
+      double arc_clearance = search_radius;
+      geometry::Pose2 end = pose;
+      bool reached = false;
+      for (int step = 1; step <= steps && !reached; ++step) {
+        const geometry::Pose2 sample =
+            integrateArc(pose, arc.linear, arc.angular, step * settings.time_step_s);
+        const double clearance = clearanceAt(sample, grid, settings.footprint, search_radius);
+        if (clearance < margin || clearance <= 0.0) {
+          free = false;
+          break;
+        }
+        arc_clearance = std::min(arc_clearance, clearance);
+        end = sample;
+        reached = (target - sample.position()).norm() <= settings.goal_tolerance_m;
+      }
+      if (!free) {
+        continue;
+      }
+      ++result.free_arcs;
+      // Progress: how much the arc lowers the cost-to-go (straight-line distance where the field has none).
+      const double end_cost = field.value(end.position());
+      double gain = start_distance - (target - end.position()).norm();
+      if (std::isfinite(start_cost)) {
+        gain = std::isfinite(end_cost) ? start_cost - end_cost : gain - 1.0;
+      }
+      const double progress = gain / std::max(reach, 1e-3);
+      const double facing = reached ? 1.0 : 1.0 - headingError(end, target) / kPi;
+      const double score = settings.progress_weight * progress + settings.heading_weight * facing +
+                           settings.clearance_weight * std::min(arc_clearance, settings.clearance_cap_m) /
+                               std::max(settings.clearance_cap_m, 1e-3);
+      if (score > best_score) {
+        best_score = score;
+        result.command = arc;
+        result.clearance_m = arc_clearance;
+      }
+    }
+  }
+
+  if (result.free_arcs == 0) {
+    result.status = FollowerStatus::Blocked;
+    result.command = {};
+    result.clearance_m = start_clearance;
+    result.reason = fmt::format("blocked: none of {} arcs is collision-free (clearance {:.2f} m)",
+                                result.arcs, start_clearance);
+    return result;
+  }
+  result.status = FollowerStatus::Moving;
+  result.reason = fmt::format("following: {:.2f} m to target, {} of {} arcs free", start_distance,
+                              result.free_arcs, result.arcs);
+  return result;
+}
+
+}  // namespace ifar::executive

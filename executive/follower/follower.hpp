@@ -1,0 +1,57 @@
+#pragma once
+// The collision-free local planner used between waypoints (paper section VII.B, "CollisionFreePlanner"):
+// samples a fan of constant (v, omega) arcs over a short horizon, drops every arc whose footprint comes
+// closer than the clearance to an obstacle point, and picks the free arc that best lowers the cost-to-go
+// to the target (a navigation function over a local grid, so obstacles are driven around), faces the
+// target and keeps clear. A pure function: same inputs, same command.
+
+#include <string>
+
+#include "common/geometry/point.hpp"
+#include "common/geometry/pose2.hpp"
+#include "common/span.hpp"
+#include "executive/follower/footprint.hpp"
+#include "executive/kinematics/differential_drive.hpp"
+#include "executive/kinematics/velocity_command.hpp"
+
+namespace ifar::executive {
+
+struct FollowerSettings {
+  double horizon_s = 2.0;        ///< how far ahead each arc is checked, seconds
+  double time_step_s = 0.1;      ///< spacing of the footprint checks along an arc, seconds
+  int linear_samples = 5;        ///< forward speeds max/n .. max, plus turning on the spot
+  int angular_samples = 15;      ///< angular speeds spread evenly over [-max, max]
+  double clearance_m = 0.15;     ///< margin kept between the footprint and obstacle points
+  double clearance_cap_m = 0.5;  ///< clearance beyond this earns no more score
+  double progress_weight = 1.0;
+  double heading_weight = 0.1;
+  double clearance_weight = 0.3;
+  double goal_tolerance_m = 0.3;      ///< the target counts as reached within this distance
+  double slow_down_distance_m = 1.5;  ///< approaching a target to stop at, top speed shrinks within this
+  double max_linear_velocity = 0.8;   ///< m/s; the vehicle's own limit applies too
+  double cell_size_m = 0.25;          ///< obstacle bucket size
+  double navigation_range_m = 6.0;    ///< half-size limit of the cost-to-go window around the vehicle
+  double navigation_cell_m = 0.2;     ///< cost-to-go cell size
+  Footprint footprint;
+};
+
+enum class FollowerStatus { Moving, Arrived, Blocked, InvalidInput };
+
+const char* followerStatusName(FollowerStatus status);
+
+struct FollowerResult {
+  VelocityCommand command;
+  FollowerStatus status = FollowerStatus::Blocked;
+  std::string reason;
+  double clearance_m = 0.0;  ///< of the chosen arc (or of the current pose when not moving)
+  int free_arcs = 0;
+  int arcs = 0;
+};
+
+/// One planning cycle. `obstacles` are world-frame points (the latest local obstacle set);
+/// `stop_at_target` slows down near the target (the goal), otherwise the vehicle passes through it.
+FollowerResult follow(const geometry::Pose2& pose, const geometry::Point& target, bool stop_at_target,
+                      common::Span<const geometry::Point> obstacles, const FollowerSettings& settings,
+                      const DifferentialDrive& drive);
+
+}  // namespace ifar::executive

@@ -1,0 +1,24 @@
+#pragma once
+// The vehicle's outline in its body frame: a rectangle from the rear to the bumper face.
+
+#include "common/geometry/point.hpp"
+#include "common/geometry/pose2.hpp"
+
+namespace ifar::executive {
+
+struct Footprint {
+  double front_m = 0.45;  ///< reference point to the bumper face, metres (forward)
+  double rear_m = 0.45;   ///< reference point to the rear, metres (backward)
+  double half_width_m = 0.35;
+
+  /// Centre of the rectangle in the body frame.
+  geometry::Point bodyCentre() const { return {(front_m - rear_m) / 2.0, 0.0}; }
+  /// Radius of the circle around bodyCentre() that holds the rectangle.
+  double circumradius() const;
+  /// Distance from a body-frame point to the rectangle; 0 inside or on it.
+  double distanceFromBody(const geometry::Point& body_point) const;
+  /// Distance from a world point to the rectangle placed at `pose`.
+  double distance(const geometry::Pose2& pose, const geometry::Point& world_point) const;
+};
+
+}  // namespace ifar::executive

@@ -1,0 +1,145 @@
+#include "executive/follower/navigation_field.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <queue>
+#include <utility>
+
+namespace ifar::executive {
+
+NavigationField::NavigationField(common::Span<const geometry::Point> obstacles, const geometry::Point& centre,
+                                 double half_size_m, double cell_size_m, double inflation_m,
+                                 const geometry::Point& target)
+    : origin_(centre - geometry::Point(half_size_m, half_size_m)),
+      cell_size_(cell_size_m),
+      cells_per_side_(std::max(2, static_cast<int>(std::ceil(2.0 * half_size_m / cell_size_m))))
+{
+  const int side = cells_per_side_;
+  const auto index = [side](int column, int row) { return static_cast<std::size_t>(row * side + column); };
+  // Plain doubles here: GCC 12 warns about Eigen temporaries in these loops (false positives).
+  const double origin_x = origin_.x();
+  const double origin_y = origin_.y();
+  const double cell = cell_size_;
+  const auto distanceFromCentre = [origin_x, origin_y, cell](int column, int row, double x, double y) {
+    return std::hypot(origin_x + (column + 0.5) * cell - x, origin_y + (row + 0.5) * cell - y);
+  };
+  std::vector<char> blocked(static_cast<std::size_t>(side) * static_cast<std::size_t>(side), 0);
+  const int reach = static_cast<int>(std::ceil(inflation_m / cell_size_));
+  for (const geometry::Point& point : obstacles) {
+    if (!point.allFinite()) {
+      continue;
+    }
+    const double offset_x = (point.x() - origin_x) / cell;
+    const double offset_y = (point.y() - origin_y) / cell;
+    if (offset_x < -reach || offset_y < -reach || offset_x > side + reach || offset_y > side + reach) {
+      continue;
+    }
+    const int column = static_cast<int>(std::floor(offset_x));
+    const int row = static_cast<int>(std::floor(offset_y));
+    for (int r = std::max(0, row - reach); r <= std::min(side - 1, row + reach); ++r) {
+      for (int c = std::max(0, column - reach); c <= std::min(side - 1, column + reach); ++c) {
+        if (distanceFromCentre(c, r, point.x(), point.y()) <= inflation_m) {
+          blocked[index(c, r)] = 1;
+        }
+      }
+    }
+  }
+
+  using Entry = std::pair<double, std::size_t>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
+  cost_.assign(blocked.size(), kUnreachable);
+  const auto seed = [&](int column, int row, double cost) {
+    const std::size_t seeded = index(column, row);
+    if (!blocked[seeded] && cost < cost_[seeded]) {
+      cost_[seeded] = cost;
+      open.emplace(cost, seeded);
+    }
+  };
+  const double target_x = target.x();
+  const double target_y = target.y();
+  const double target_column = (target_x - origin_x) / cell;
+  const double target_row = (target_y - origin_y) / cell;
+  const bool target_inside =
+      target_column >= 0.0 && target_row >= 0.0 && target_column < side && target_row < side;
+  if (target_inside) {
+    const int column = static_cast<int>(target_column);
+    const int row = static_cast<int>(target_row);
+    for (int r = std::max(0, row - reach); r <= std::min(side - 1, row + reach); ++r) {
+      for (int c = std::max(0, column - reach); c <= std::min(side - 1, column + reach); ++c) {
+        const double distance = distanceFromCentre(c, r, target_x, target_y);
+        if (distance <= inflation_m + cell) {
+          blocked[index(c, r)] = 0;
+          seed(c, r, distance);
+        }
+      }
+    }
+  } else {
+    for (int i = 0; i < side; ++i) {
+      seed(i, 0, distanceFromCentre(i, 0, target_x, target_y));
+      seed(i, side - 1, distanceFromCentre(i, side - 1, target_x, target_y));
+      seed(0, i, distanceFromCentre(0, i, target_x, target_y));
+      seed(side - 1, i, distanceFromCentre(side - 1, i, target_x, target_y));
+    }
+  }
+
+  // Dijkstra over 8-connected cells.
+  const double diagonal = cell * std::sqrt(2.0);
+  while (!open.empty()) {
+    const auto [cost, current] = open.top();
+    open.pop();
+    if (cost > cost_[current]) {
+      continue;
+    }
+    const int column = static_cast<int>(current % static_cast<std::size_t>(side));
+    const int row = static_cast<int>(current / static_cast<std::size_t>(side));
+    for (int dr = -1; dr <= 1; ++dr) {
+      for (int dc = -1; dc <= 1; ++dc) {
+        const int c = column + dc;
+        const int r = row + dr;
+        if ((dc == 0 && dr == 0) || c < 0 || r < 0 || c >= side || r >= side) {
+          continue;
+        }
+        const std::size_t next = index(c, r);
+        const double step = (dc != 0 && dr != 0) ? diagonal : cell;
+        if (!blocked[next] && cost + step < cost_[next]) {
+          cost_[next] = cost + step;
+          open.emplace(cost_[next], next);
+        }
+      }
+    }
+  }
+}
+
+double NavigationField::cellValue(int column, int row) const
+{
+  if (column < 0 || row < 0 || column >= cells_per_side_ || row >= cells_per_side_) {
+    return kUnreachable;
+  }
+  return cost_[static_cast<std::size_t>(row * cells_per_side_ + column)];
+}
+
+double NavigationField::value(const geometry::Point& point) const
+{
+  const double offset_x = (point.x() - origin_.x()) / cell_size_ - 0.5;
+  const double offset_y = (point.y() - origin_.y()) / cell_size_ - 0.5;
+  if (!std::isfinite(offset_x) || !std::isfinite(offset_y) || std::abs(offset_x) > 1e6 ||
+      std::abs(offset_y) > 1e6) {
+    return kUnreachable;
+  }
+  const int column = static_cast<int>(std::floor(offset_x));
+  const int row = static_cast<int>(std::floor(offset_y));
+  const double fx = offset_x - column;
+  const double fy = offset_y - row;
+  const double corners[4] = {cellValue(column, row), cellValue(column + 1, row), cellValue(column, row + 1),
+                             cellValue(column + 1, row + 1)};
+  if (std::all_of(std::begin(corners), std::end(corners),
+                  [](double value) { return std::isfinite(value); })) {
+    return (1 - fy) * ((1 - fx) * corners[0] + fx * corners[1]) +
+           fy * ((1 - fx) * corners[2] + fx * corners[3]);
+  }
+  // Next to a blocked cell: the nearest cell's value.
+  return cellValue(static_cast<int>(std::lround(offset_x)), static_cast<int>(std::lround(offset_y)));
+}
+
+}  // namespace ifar::executive

@@ -1,0 +1,409 @@
+#include "executive/modes/executive.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace ifar::executive {
+
+/// What one step() works with; the sub-steps fill in the command and the report.
+struct Executive::Cycle {
+  std::int64_t now_us = 0;
+  const Inputs& inputs;
+  geometry::Pose2 pose;
+  double force_n = 0.0;
+  common::Span<const geometry::Point> obstacles;
+  bool obstacles_fresh = false;
+  VelocityCommand desired;
+  std::string reason;
+  geometry::Point target = geometry::Point::Zero();
+  std::int64_t target_object_id = -1;
+  std::optional<AffordanceEvent> affordance;
+};
+
+namespace {
+
+bool fresh(std::int64_t now_us, std::int64_t stamp_us, double threshold_s)
+{
+  return static_cast<double>(now_us - stamp_us) <= threshold_s * 1e6;
+}
+
+}  // namespace
+
+Executive::Executive(const ExecutiveSettings& settings, const common::VehicleSettings& vehicle)
+    : settings_(settings),
+      vehicle_(vehicle),
+      drive_(vehicle),
+      max_push_force_n_(std::min(vehicle.maxPushForce(), vehicle.force_sensor_range_n))
+{
+  settings_.follower.footprint = vehicleFootprint(vehicle, settings.reference_to_bumper_m);
+}
+
+Mode Executive::modeOf(Task task)
+{
+  switch (task) {
+    case Task::Idle:
+      return Mode::Idle;
+    case Task::Follow:
+      return Mode::Follow;
+    case Task::Approach:
+      return Mode::Approach;
+    case Task::Push:
+      return Mode::Push;
+    case Task::ReplanWait:
+      return Mode::ReplanWait;
+    case Task::Halted:
+      return Mode::Stop;
+    case Task::Arrived:
+      return Mode::Arrived;
+  }
+  return Mode::Stop;
+}
+
+std::int32_t Executive::staleBits(std::int64_t now_us, const Inputs& inputs) const
+{
+  std::int32_t bits = 0;
+  if (!inputs.pose || !fresh(now_us, inputs.pose->utime, settings_.stale.pose_s)) {
+    bits |= kStalePose;
+  }
+  if (!inputs.path || !fresh(now_us, inputs.path->utime, settings_.stale.path_s)) {
+    bits |= kStalePath;
+  }
+  if (!inputs.force || inputs.force->value.faulty || !std::isfinite(inputs.force->value.force_n) ||
+      !fresh(now_us, inputs.force->utime, settings_.stale.force_s)) {
+    bits |= kStaleForce;
+  }
+  if (!inputs.motor || !inputs.motor->value.heartbeat_ok || inputs.motor->value.fault ||
+      !fresh(now_us, inputs.motor->utime, settings_.stale.motor_s)) {
+    bits |= kStaleMotor;
+  }
+  return bits;
+}
+
+void Executive::startGoal(std::int64_t goal_id)
+{
+  if (goal_id != goal_id_) {
+    goal_id_ = goal_id;
+    pushes_ = 0;
+    replans_ = 0;
+  }
+}
+
+void Executive::adoptPath(const Path& path)
+{
+  path_ = path;
+  has_path_ = true;
+  startGoal(path.goal_id);
+  waypoint_index_ = std::min<std::size_t>(1, path_.waypoints.empty() ? 0 : path_.waypoints.size() - 1);
+  if (!path_.valid) {
+    task_ = Task::Halted;
+    task_reason_ = fmt::format("planner reports no path to goal {}", path_.goal_id);
+  } else if (path_.waypoints.empty()) {
+    task_ = Task::Halted;
+    task_reason_ = fmt::format("path to goal {} has no waypoints", path_.goal_id);
+  } else {
+    task_ = Task::Follow;
+    task_reason_.clear();
+  }
+}
+
+void Executive::absorbPath(const Inputs& inputs)
+{
+  if (!inputs.path) {
+    return;
+  }
+  const Path& incoming = inputs.path->value;
+  // A resend of the path in hand only keeps it fresh; a new plan (sequence, time or goal) is absorbed.
+  if (has_path_ && incoming.sequence == path_.sequence && incoming.utime == path_.utime &&
+      incoming.goal_id == path_.goal_id && incoming.valid == path_.valid) {
+    return;
+  }
+  switch (task_) {
+    case Task::ReplanWait:
+      // Only a path planned after the affordance update counts as the replan.
+      if (incoming.utime > replan_requested_us_ || incoming.goal_id != goal_id_) {
+        adoptPath(incoming);
+      }
+      return;
+    case Task::Approach:
+    case Task::Push: {
+      const bool still_pushed =
+          incoming.valid && incoming.goal_id == goal_id_ &&
+          std::any_of(incoming.push_plans.begin(), incoming.push_plans.end(),
+                      [this](const PushPlan& plan) { return plan.object_id == active_plan_.object_id; });
+      if (still_pushed) {
+        // Keep executing the plan in hand; the new path is used once the push is over.
+        path_ = incoming;
+        return;
+      }
+      adoptPath(incoming);
+      return;
+    }
+    case Task::Arrived:
+      if (incoming.valid && incoming.goal_id == goal_id_ && !incoming.waypoints.empty() && inputs.pose &&
+          (incoming.waypoints.back().position - inputs.pose->value.position()).norm() <=
+              settings_.goal_tolerance_m) {
+        path_ = incoming;
+        return;
+      }
+      adoptPath(incoming);
+      return;
+    case Task::Idle:
+    case Task::Follow:
+    case Task::Halted:
+      adoptPath(incoming);
+      return;
+  }
+}
+
+const PushPlan* Executive::planForWaypoint(std::size_t index) const
+{
+  const auto plan_at = [this](int plan_index) -> const PushPlan* {
+    if (plan_index < 0 || static_cast<std::size_t>(plan_index) >= path_.push_plans.size()) {
+      return nullptr;
+    }
+    return &path_.push_plans[static_cast<std::size_t>(plan_index)];
+  };
+  if (const PushPlan* plan = plan_at(path_.waypoints[index].push_plan_index)) {
+    return plan;
+  }
+  if (index + 1 < path_.waypoints.size() && path_.waypoints[index + 1].kind == WaypointKind::Push) {
+    return plan_at(path_.waypoints[index + 1].push_plan_index);
+  }
+  return nullptr;
+}
+
+int Executive::pushWaypointIndex(std::int64_t object_id) const
+{
+  for (std::size_t index = 0; index < path_.waypoints.size(); ++index) {
+    const Waypoint& waypoint = path_.waypoints[index];
+    if (waypoint.kind == WaypointKind::Push && waypoint.object_id == object_id) {
+      return static_cast<int>(index);
+    }
+  }
+  return -1;
+}
+
+void Executive::stepFollow(Cycle& cycle)
+{
+  const std::vector<Waypoint>& waypoints = path_.waypoints;
+  if (waypoints.empty()) {
+    task_ = Task::Halted;
+    task_reason_ = fmt::format("path to goal {} has no waypoints", goal_id_);
+    cycle.reason = task_reason_;
+    return;
+  }
+  const std::size_t last = waypoints.size() - 1;
+  waypoint_index_ = std::min(waypoint_index_, last);
+  const auto distance_to = [&cycle, &waypoints](std::size_t index) {
+    return (waypoints[index].position - cycle.pose.position()).norm();
+  };
+  while (
+      waypoint_index_ < last && distance_to(waypoint_index_) <= settings_.waypoint_tolerance_m &&
+      !(waypoints[waypoint_index_].kind == WaypointKind::Topological && planForWaypoint(waypoint_index_))) {
+    ++waypoint_index_;
+  }
+  cycle.target = waypoints[waypoint_index_].position;
+  if (waypoint_index_ == last && distance_to(last) <= settings_.goal_tolerance_m) {
+    task_ = Task::Arrived;
+    task_reason_ = fmt::format("arrived at goal {} ({:.2f} m away)", goal_id_, distance_to(last));
+    cycle.reason = task_reason_;
+    return;
+  }
+
+  const Waypoint& waypoint = waypoints[waypoint_index_];
+  if (waypoint.kind == WaypointKind::Topological &&
+      distance_to(waypoint_index_) <= settings_.push_switch_radius_m) {
+    if (const PushPlan* plan = planForWaypoint(waypoint_index_)) {
+      active_plan_ = *plan;
+      approach_.begin(active_plan_.contact_pose, cycle.pose, settings_.approach);
+      task_ = Task::Approach;
+      stepApproach(cycle);
+      return;
+    }
+  }
+
+  const FollowerResult result = follow(cycle.pose, waypoint.position, waypoint_index_ == last,
+                                       cycle.obstacles, settings_.follower, drive_);
+  cycle.desired = result.command;
+  cycle.reason = fmt::format("waypoint {} of {}: {}", waypoint_index_, last, result.reason);
+  if (result.status == FollowerStatus::Arrived && waypoint_index_ < last) {
+    ++waypoint_index_;
+  }
+}
+
+void Executive::stepApproach(Cycle& cycle)
+{
+  cycle.target = active_plan_.contact_pose.position();
+  cycle.target_object_id = active_plan_.object_id;
+  const ApproachStep result = approach_.step(cycle.pose, cycle.force_n, cycle.obstacles, settings_.approach,
+                                             settings_.follower, drive_);
+  if (result.phase != ApproachPhase::Done) {
+    cycle.desired = result.command;
+    cycle.reason = fmt::format("object {}: {}", active_plan_.object_id, result.reason);
+    return;
+  }
+  tracker_.begin(active_plan_);
+  tactile_.begin(active_plan_, max_push_force_n_);
+  task_ = Task::Push;
+  stepPush(cycle);
+}
+
+void Executive::stepPush(Cycle& cycle)
+{
+  cycle.target_object_id = active_plan_.object_id;
+  const PushStep result = tracker_.step(cycle.pose, cycle.force_n, cycle.obstacles, settings_.pusher,
+                                        settings_.approach, settings_.follower, drive_);
+  cycle.target = result.control_index < active_plan_.controls.size()
+                     ? active_plan_.controls[result.control_index].expected_vehicle_pose.position()
+                     : cycle.pose.position();
+
+  std::optional<geometry::Point> object_position;
+  if (cycle.inputs.pushed_object && cycle.inputs.pushed_object->value.object_id == active_plan_.object_id &&
+      fresh(cycle.now_us, cycle.inputs.pushed_object->utime, settings_.stale.obstacles_s)) {
+    object_position = cycle.inputs.pushed_object->value.position;
+  }
+  std::optional<AffordanceEvent> event = tactile_.update(
+      cycle.now_us, cycle.force_n, cycle.pose, object_position, result.expects_contact, settings_.tactile);
+  if (event) {
+    cycle.affordance = event;
+    if (!event->pushable || event->reason == AffordanceReason::CostHigher) {
+      // Algorithm 2: the plan no longer holds; stop and wait for the planner to use the new estimate.
+      task_ = Task::ReplanWait;
+      replan_requested_us_ = cycle.now_us;
+      ++replans_;
+      task_reason_ = fmt::format("waiting for replan: {}", event->text);
+      cycle.reason = task_reason_;
+      cycle.desired = {};
+      return;
+    }
+    // Cheaper than planned: the push still opens the passage, so it goes on; the planner learns the
+    // lower cost from the event.
+  }
+
+  if (result.phase == PushPhase::Finished) {
+    ++pushes_;
+    const int push_waypoint = pushWaypointIndex(active_plan_.object_id);
+    waypoint_index_ = push_waypoint >= 0 ? static_cast<std::size_t>(push_waypoint)
+                                         : std::min<std::size_t>(1, path_.waypoints.size() - 1);
+    task_ = Task::Follow;
+    cycle.reason = fmt::format("push of object {} finished", active_plan_.object_id);
+    cycle.desired = {};
+    return;
+  }
+  cycle.desired = result.command;
+  cycle.reason = fmt::format("object {}: {}", active_plan_.object_id, result.reason);
+}
+
+void Executive::stepReplanWait(Cycle& cycle)
+{
+  cycle.target_object_id = active_plan_.object_id;
+  const double waited_s = static_cast<double>(cycle.now_us - replan_requested_us_) * 1e-6;
+  if (waited_s > settings_.replan_timeout_s) {
+    task_ = Task::Halted;
+    task_reason_ = fmt::format("no replanned path within {:.1f} s after the affordance update of object {}",
+                               settings_.replan_timeout_s, active_plan_.object_id);
+  }
+  cycle.reason = task_reason_;
+}
+
+Output Executive::step(std::int64_t now_us, const Inputs& inputs)
+{
+  Cycle cycle{now_us, inputs, {}, 0.0, {}, false, {}, {}, geometry::Point::Zero(), -1, std::nullopt};
+  if (inputs.pose) {
+    cycle.pose = inputs.pose->value;
+  }
+  if (inputs.force && !inputs.force->value.faulty) {
+    cycle.force_n = inputs.force->value.force_n;
+  }
+  if (inputs.obstacles && fresh(now_us, inputs.obstacles->utime, settings_.stale.obstacles_s)) {
+    cycle.obstacles =
+        common::Span<const geometry::Point>(inputs.obstacles->value.data(), inputs.obstacles->value.size());
+    cycle.obstacles_fresh = true;
+  }
+
+  const std::int32_t stale = staleBits(now_us, inputs);
+  absorbPath(inputs);
+
+  const bool active =
+      task_ == Task::Follow || task_ == Task::Approach || task_ == Task::Push || task_ == Task::ReplanWait;
+  const bool e_stopped = inputs.e_stop && inputs.e_stop->value.engaged;
+  const bool pose_finite =
+      std::isfinite(cycle.pose.x) && std::isfinite(cycle.pose.y) && std::isfinite(cycle.pose.heading);
+  Mode mode = modeOf(task_);
+  bool moving = false;
+  if (e_stopped || (active && (stale != 0 || !pose_finite))) {
+    mode = e_stopped ? Mode::EStop : Mode::Stop;
+    if (e_stopped) {
+      cycle.reason =
+          fmt::format("e-stop engaged by {}: {}", inputs.e_stop->value.source, inputs.e_stop->value.reason);
+    } else if (stale != 0) {
+      cycle.reason = fmt::format("stale input: {}", describeStale(stale));
+      if ((stale & kStaleMotor) != 0 && inputs.motor && !inputs.motor->value.reason.empty()) {
+        cycle.reason += fmt::format(" (motor: {})", inputs.motor->value.reason);
+      }
+    } else {
+      cycle.reason = "pose is not finite";
+    }
+    if (task_ == Task::Approach || task_ == Task::Push) {
+      // The vehicle may have drifted off the plan while stopped: resume by following the (newest) path,
+      // which brings it back to the push through the topological waypoint.
+      task_ = Task::Follow;
+      waypoint_index_ = std::min<std::size_t>(1, path_.waypoints.size() - 1);
+    }
+  } else {
+    switch (task_) {
+      case Task::Follow:
+        stepFollow(cycle);
+        break;
+      case Task::Approach:
+        stepApproach(cycle);
+        break;
+      case Task::Push:
+        stepPush(cycle);
+        break;
+      case Task::ReplanWait:
+        stepReplanWait(cycle);
+        break;
+      case Task::Idle:
+      case Task::Halted:
+      case Task::Arrived:
+        cycle.reason = task_reason_;
+        break;
+    }
+    mode = modeOf(task_);
+    moving = task_ == Task::Follow || task_ == Task::Approach || task_ == Task::Push;
+    if (!cycle.obstacles_fresh && (task_ == Task::Follow || task_ == Task::Approach)) {
+      cycle.reason += " (no fresh obstacle points)";
+    }
+  }
+
+  Output output;
+  if (moving) {
+    const double elapsed_s =
+        has_stepped_ ? std::clamp(static_cast<double>(now_us - last_step_us_) * 1e-6, 0.0, 0.2) : 0.0;
+    output.command = drive_.limit(cycle.desired, last_command_, elapsed_s);
+  }
+  output.wheels = drive_.toWheelSpeeds(output.command);
+  last_command_ = output.command;
+  last_step_us_ = now_us;
+  has_stepped_ = true;
+
+  Status& status = output.status;
+  status.mode = mode;
+  status.goal_id = goal_id_;
+  status.waypoint_index = has_path_ ? static_cast<int>(waypoint_index_) : -1;
+  status.target = cycle.target;
+  status.target_object_id = cycle.target_object_id;
+  status.stale = stale;
+  status.pushes = pushes_;
+  status.replans = replans_;
+  status.reason = cycle.reason;
+  output.affordance = std::move(cycle.affordance);
+  output.mode_changed = mode != last_mode_;
+  last_mode_ = mode;
+  return output;
+}
+
+}  // namespace ifar::executive

@@ -1,0 +1,102 @@
+#pragma once
+// The executive's mode machine (paper section VII.B, Algorithm 2): follows the global path with the
+// collision-free local planner, switches to the push plan near a topological waypoint, adapts from
+// touch, and stops whenever an input it depends on goes stale or an e-stop is engaged.
+//
+// One call per control cycle, step(now, inputs) -> Output: the daemon and the headless runner drive the
+// same code. No LCM, no clocks: time comes in as `now`.
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "common/vehicle.hpp"
+#include "executive/affordance/affordance_event.hpp"
+#include "executive/affordance/tactile_monitor.hpp"
+#include "executive/kinematics/differential_drive.hpp"
+#include "executive/modes/executive_settings.hpp"
+#include "executive/modes/inputs.hpp"
+#include "executive/modes/mode.hpp"
+#include "executive/pusher/approach.hpp"
+#include "executive/pusher/push_tracker.hpp"
+
+namespace ifar::executive {
+
+/// What EXEC_STATUS reports.
+struct Status {
+  Mode mode = Mode::Idle;
+  std::int64_t goal_id = -1;
+  int waypoint_index = -1;
+  geometry::Point target = geometry::Point::Zero();
+  std::int64_t target_object_id = -1;
+  std::int32_t stale = 0;  ///< StaleInput bits
+  int pushes = 0;          ///< push plans completed for this goal
+  int replans = 0;         ///< replans requested for this goal
+  std::string reason;
+};
+
+struct Output {
+  VelocityCommand command;  ///< after the vehicle's speed and acceleration limits; exactly zero when stopped
+  WheelSpeeds wheels;       ///< the same command as wheel speeds
+  Status status;
+  bool mode_changed = false;
+  std::optional<AffordanceEvent> affordance;  ///< set on the cycle the tactile monitor found something
+};
+
+class Executive {
+ public:
+  /// Fits the follower's footprint to `vehicle` (see vehicleFootprint; throws std::invalid_argument).
+  Executive(const ExecutiveSettings& settings, const common::VehicleSettings& vehicle);
+
+  /// One control cycle at `now_us` (microseconds, the clock of the inputs' stamps).
+  Output step(std::int64_t now_us, const Inputs& inputs);
+
+  Mode mode() const { return last_mode_; }
+  const ExecutiveSettings& settings() const { return settings_; }
+
+ private:
+  /// The task the executive pursues; Stop and EStop are overrides on top of it.
+  enum class Task { Idle, Follow, Approach, Push, ReplanWait, Halted, Arrived };
+
+  struct Cycle;  // per-step context
+
+  std::int32_t staleBits(std::int64_t now_us, const Inputs& inputs) const;
+  /// Takes in a new plan from the inputs (a resend of the same plan only keeps it fresh).
+  void absorbPath(const Inputs& inputs);
+  void adoptPath(const Path& path);
+  void stepFollow(Cycle& cycle);
+  void stepApproach(Cycle& cycle);
+  void stepPush(Cycle& cycle);
+  void stepReplanWait(Cycle& cycle);
+  void startGoal(std::int64_t goal_id);
+  const PushPlan* planForWaypoint(std::size_t index) const;
+  int pushWaypointIndex(std::int64_t object_id) const;
+  static Mode modeOf(Task task);
+
+  ExecutiveSettings settings_;
+  common::VehicleSettings vehicle_;
+  DifferentialDrive drive_;
+  double max_push_force_n_;
+
+  Task task_ = Task::Idle;
+  std::string task_reason_ = "no path yet";
+  bool has_path_ = false;
+  Path path_;
+  std::size_t waypoint_index_ = 0;
+  std::int64_t goal_id_ = -1;
+  int pushes_ = 0;
+  int replans_ = 0;
+
+  PushPlan active_plan_;
+  Approach approach_;
+  PushTracker tracker_;
+  TactileMonitor tactile_;
+  std::int64_t replan_requested_us_ = 0;
+
+  VelocityCommand last_command_;
+  std::int64_t last_step_us_ = 0;
+  bool has_stepped_ = false;
+  Mode last_mode_ = Mode::Idle;
+};
+
+}  // namespace ifar::executive

@@ -1,0 +1,131 @@
+#include "executive/modes/executive_settings.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace ifar::executive {
+namespace {
+
+double positive(const common::ConfigNode& node, const std::string& key)
+{
+  const double value = node.required<double>(key);
+  if (!(value > 0.0)) {
+    node.fail(key, "must be a positive number");
+  }
+  return value;
+}
+
+double nonNegative(const common::ConfigNode& node, const std::string& key)
+{
+  const double value = node.required<double>(key);
+  if (!(value >= 0.0)) {
+    node.fail(key, "must be zero or positive");
+  }
+  return value;
+}
+
+int positiveCount(const common::ConfigNode& node, const std::string& key, int minimum)
+{
+  const int value = node.required<int>(key);
+  if (value < minimum) {
+    node.fail(key, "must be at least " + std::to_string(minimum));
+  }
+  return value;
+}
+
+PoseControllerSettings loadControl(const common::ConfigNode& node)
+{
+  PoseControllerSettings control;
+  control.linear_gain = positive(node, "linear_gain");
+  control.angular_gain = positive(node, "angular_gain");
+  control.turn_in_place_error = positive(node, "turn_in_place_error_rad");
+  control.max_linear_velocity = positive(node, "max_linear_velocity");
+  control.max_angular_velocity = positive(node, "max_angular_velocity");
+  control.track_along_gain = nonNegative(node, "track_along_gain");
+  control.track_cross_gain = nonNegative(node, "track_cross_gain");
+  control.track_heading_gain = nonNegative(node, "track_heading_gain");
+  return control;
+}
+
+}  // namespace
+
+Footprint vehicleFootprint(const common::VehicleSettings& vehicle, double reference_to_bumper_m)
+{
+  if (!(reference_to_bumper_m > 0.0) || reference_to_bumper_m > vehicle.length_m) {
+    throw std::invalid_argument(
+        "executive: footprint.reference_to_bumper_m (" + std::to_string(reference_to_bumper_m) +
+        ") must be positive and at most the vehicle length (" + std::to_string(vehicle.length_m) + ")");
+  }
+  Footprint footprint;
+  footprint.front_m = reference_to_bumper_m;
+  footprint.rear_m = vehicle.length_m - reference_to_bumper_m;
+  footprint.half_width_m = vehicle.width_m / 2.0;
+  return footprint;
+}
+
+ExecutiveSettings loadExecutiveSettings(const common::ConfigNode& node)
+{
+  ExecutiveSettings settings;
+  settings.stale.pose_s = positive(node, "stale_after_s.pose");
+  settings.stale.path_s = positive(node, "stale_after_s.path");
+  settings.stale.force_s = positive(node, "stale_after_s.force");
+  settings.stale.motor_s = positive(node, "stale_after_s.motor");
+  settings.stale.obstacles_s = positive(node, "stale_after_s.obstacles");
+  settings.waypoint_tolerance_m = positive(node, "waypoint_tolerance_m");
+  settings.goal_tolerance_m = positive(node, "goal_tolerance_m");
+  settings.push_switch_radius_m = positive(node, "push_switch_radius_m");
+  settings.replan_timeout_s = positive(node, "replan_timeout_s");
+
+  settings.reference_to_bumper_m = positive(node, "footprint.reference_to_bumper_m");
+
+  FollowerSettings& follower = settings.follower;
+  follower.horizon_s = positive(node, "follower.horizon_s");
+  follower.time_step_s = positive(node, "follower.time_step_s");
+  follower.linear_samples = positiveCount(node, "follower.linear_samples", 1);
+  follower.angular_samples = positiveCount(node, "follower.angular_samples", 3);
+  follower.clearance_m = nonNegative(node, "follower.clearance_m");
+  follower.clearance_cap_m = positive(node, "follower.clearance_cap_m");
+  follower.progress_weight = nonNegative(node, "follower.progress_weight");
+  follower.heading_weight = nonNegative(node, "follower.heading_weight");
+  follower.clearance_weight = nonNegative(node, "follower.clearance_weight");
+  follower.slow_down_distance_m = nonNegative(node, "follower.slow_down_distance_m");
+  follower.max_linear_velocity = positive(node, "follower.max_linear_velocity");
+  follower.cell_size_m = positive(node, "follower.cell_size_m");
+  follower.navigation_range_m = positive(node, "follower.navigation_range_m");
+  follower.navigation_cell_m = positive(node, "follower.navigation_cell_m");
+  follower.goal_tolerance_m = settings.waypoint_tolerance_m;
+
+  const common::ConfigNode control = node.child("control");
+  ApproachSettings& approach = settings.approach;
+  approach.standoff_m = positive(node, "approach.standoff_m");
+  approach.standoff_tolerance_m = positive(node, "approach.standoff_tolerance_m");
+  approach.heading_tolerance_rad = positive(node, "approach.heading_tolerance_rad");
+  approach.creep_speed = positive(node, "approach.creep_speed");
+  approach.contact_tolerance_m = positive(node, "approach.contact_tolerance_m");
+  approach.contact_force_n = positive(node, "approach.contact_force_n");
+  approach.control = loadControl(control);
+
+  PushTrackerSettings& pusher = settings.pusher;
+  pusher.end_tolerance_s = nonNegative(node, "pusher.end_tolerance_s");
+  pusher.backoff_m = nonNegative(node, "pusher.backoff_m");
+  pusher.release_m = nonNegative(node, "pusher.release_m");
+  pusher.reverse_speed = positive(node, "pusher.reverse_speed");
+  pusher.control = approach.control;
+
+  TactileSettings& tactile = settings.tactile;
+  tactile.contact_force_n = approach.contact_force_n;
+  tactile.max_force_fraction = positive(node, "tactile.max_force_fraction");
+  if (tactile.max_force_fraction > 1.0) {
+    node.fail("tactile.max_force_fraction",
+              "must be at most 1 (a fraction of the vehicle's maximum push force)");
+  }
+  tactile.no_motion_time_s = positive(node, "tactile.no_motion_time_s");
+  tactile.motion_threshold_m = positive(node, "tactile.motion_threshold_m");
+  tactile.min_measured_distance_m = positive(node, "tactile.min_measured_distance_m");
+  tactile.cost_threshold = positive(node, "tactile.cost_threshold");
+
+  node.rejectUnknownKeys();
+  return settings;
+}
+
+}  // namespace ifar::executive

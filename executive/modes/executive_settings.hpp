@@ -1,0 +1,48 @@
+#pragma once
+// Everything the executive is tuned by, from config/executive.yaml, plus the vehicle's outline.
+
+#include "common/config.hpp"
+#include "common/vehicle.hpp"
+#include "executive/affordance/tactile_monitor.hpp"
+#include "executive/follower/follower.hpp"
+#include "executive/follower/footprint.hpp"
+#include "executive/pusher/approach.hpp"
+#include "executive/pusher/push_tracker.hpp"
+
+namespace ifar::executive {
+
+/// An input older than its threshold is stale: the vehicle stops within one cycle.
+struct StaleThresholds {
+  double pose_s = 0.1;
+  double path_s = 1.0;
+  double force_s = 0.1;
+  double motor_s = 0.3;
+  double obstacles_s = 0.5;  ///< older obstacle points are not used (the status says so)
+};
+
+struct ExecutiveSettings {
+  StaleThresholds stale;
+  double waypoint_tolerance_m = 0.4;  ///< an intermediate waypoint counts as passed within this
+  double goal_tolerance_m = 0.3;      ///< the goal counts as reached within this
+  double push_switch_radius_m =
+      1.5;  ///< r of Algorithm 2: switch to pushing this close to a topological waypoint
+  double replan_timeout_s = 10.0;  ///< waiting longer for a replanned path stops the vehicle
+  /// Vehicle reference point (the pose) to the bumper face; the rest of the vehicle length is behind.
+  /// The Executive builds the follower's footprint from this and the vehicle's length and width.
+  double reference_to_bumper_m = 0.45;
+  FollowerSettings follower;
+  ApproachSettings approach;
+  PushTrackerSettings pusher;
+  TactileSettings tactile;
+};
+
+/// Reads every key of executive.yaml (all required; numbers must be positive unless noted) and rejects
+/// unknown ones. Throws common::ConfigError naming the key.
+ExecutiveSettings loadExecutiveSettings(const common::ConfigNode& node);
+
+/// The vehicle's outline for the follower: `reference_to_bumper_m` ahead of the pose, the rest of
+/// `length_m` behind, `width_m` wide. Throws std::invalid_argument when the bumper distance is not within
+/// (0, length_m].
+Footprint vehicleFootprint(const common::VehicleSettings& vehicle, double reference_to_bumper_m);
+
+}  // namespace ifar::executive

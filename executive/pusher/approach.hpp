@@ -1,0 +1,59 @@
+#pragma once
+// Drives the vehicle to the contact pose of a push: collision-free to a stand-off point behind the
+// contact, turn to the push heading, then creep straight forward until the bumper touches (the contact
+// pose is reached or the force sensor feels the object).
+
+#include <string>
+
+#include "common/geometry/pose2.hpp"
+#include "common/span.hpp"
+#include "executive/follower/follower.hpp"
+#include "executive/kinematics/differential_drive.hpp"
+#include "executive/pusher/pose_controller.hpp"
+
+namespace ifar::executive {
+
+struct ApproachSettings {
+  double standoff_m = 0.6;            ///< stand-off point this far behind the contact pose
+  double standoff_tolerance_m = 0.1;  ///< the stand-off point counts as reached within this
+  double heading_tolerance_rad = 0.05;
+  double creep_speed = 0.15;          ///< m/s over the last stand-off distance
+  double contact_tolerance_m = 0.03;  ///< the contact pose counts as reached within this (along the heading)
+  double contact_force_n = 20.0;      ///< a bumper force above this means contact
+  PoseControllerSettings control;
+};
+
+enum class ApproachPhase { ToStandoff, Align, Creep, Done };
+
+const char* approachPhaseName(ApproachPhase phase);
+
+struct ApproachStep {
+  VelocityCommand command;
+  ApproachPhase phase = ApproachPhase::ToStandoff;
+  std::string reason;
+};
+
+class Approach {
+ public:
+  Approach() = default;
+  /// Starts a new approach to `contact`. When the vehicle already stands in the lane behind the contact
+  /// (within the stand-off distance and tolerance, facing it), it skips the collision-free leg.
+  void begin(const geometry::Pose2& contact, const geometry::Pose2& pose, const ApproachSettings& settings);
+
+  /// One control cycle. `obstacles` are used for the collision-free leg only: near the object the
+  /// vehicle must come closer than any clearance.
+  ApproachStep step(const geometry::Pose2& pose, double force_n,
+                    common::Span<const geometry::Point> obstacles, const ApproachSettings& settings,
+                    const FollowerSettings& follower, const DifferentialDrive& drive);
+
+  ApproachPhase phase() const { return phase_; }
+  const geometry::Pose2& contact() const { return contact_; }
+
+ private:
+  geometry::Point standoffPoint(const ApproachSettings& settings) const;
+
+  geometry::Pose2 contact_;
+  ApproachPhase phase_ = ApproachPhase::Done;
+};
+
+}  // namespace ifar::executive

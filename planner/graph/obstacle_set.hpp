@@ -1,0 +1,145 @@
+#pragma once
+// The obstacles a visibility graph is built against: closed loops with the blocked side on the LEFT
+// (counter-clockwise around a blocked region, clockwise around a free pocket inside one), and a uniform
+// grid over their edges so a visibility test only looks at edges near the segment.
+//
+// Visibility rule (exact for integer coordinates, e.g. GPPC maps): the open segment may touch and run
+// along loop edges but may not enter a blocked side. At a loop vertex the blocked side is the wedge swept
+// counter-clockwise from the next edge to the previous one; a segment through the vertex is blocked when
+// either of its directions lies strictly inside the wedge. Where two blocked cells touch diagonally the
+// loop visits the corner twice with reflex wedges, so squeezing through is refused.
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "common/geometry/point.hpp"
+#include "common/geometry/polygon.hpp"
+
+namespace ifar::graph {
+
+struct ObstacleLoop {
+  geometry::Polygon vertices;  // blocked side on the left, at least 3 vertices
+  std::int64_t object_id = 0;  // 0 for background, > 0 for a movable object (interaction planning)
+};
+
+struct Bounds {
+  geometry::Point min = geometry::Point::Zero();
+  geometry::Point max = geometry::Point::Zero();
+  bool contains(const geometry::Point& point) const
+  {
+    return point.x() >= min.x() && point.y() >= min.y() && point.x() <= max.x() && point.y() <= max.y();
+  }
+};
+
+/// An obstacle loop from a simple polygon whose inside is blocked (a perception outline), in either
+/// orientation: made counter-clockwise so the blocked side is on the left.
+ObstacleLoop loopFromPolygon(const geometry::Polygon& polygon, std::int64_t object_id = 0);
+
+/// One loop vertex with its two loop neighbours: what tangency and wedge tests need.
+struct LoopCorner {
+  geometry::Point position;
+  geometry::Point previous;  // loop vertex before
+  geometry::Point next;      // loop vertex after
+  std::uint32_t loop = 0;
+};
+
+/// True when direction `direction` from `corner.position` lies strictly inside the blocked wedge.
+bool pointsIntoWedge(const LoopCorner& corner, const geometry::Vector& direction);
+/// True when the blocked wedge is narrower than a half-plane: a corner shortest paths may bend around.
+bool isConvexCorner(const LoopCorner& corner);
+/// True when the line through the corner along `direction` keeps both loop neighbours on one side
+/// (touching counts): the reduced visibility graph only keeps edges tangent at both ends. Inline: it
+/// runs for every vertex pair of a build and every vertex of an attachment.
+inline bool isTangent(const LoopCorner& corner, const geometry::Vector& direction)
+{
+  const geometry::Vector to_previous = corner.previous - corner.position;
+  const geometry::Vector to_next = corner.next - corner.position;
+  const double previous_cross = direction.x() * to_previous.y() - direction.y() * to_previous.x();
+  const double next_cross = direction.x() * to_next.y() - direction.y() * to_next.x();
+  // Same relative tolerance as the other orientation tests (1e-9 of the operands' sizes).
+  const double scale = 1e-9 * (std::abs(direction.x()) + std::abs(direction.y()));
+  const double previous_tolerance = scale * (std::abs(to_previous.x()) + std::abs(to_previous.y()));
+  const double next_tolerance = scale * (std::abs(to_next.x()) + std::abs(to_next.y()));
+  const int previous_side =
+      previous_cross > previous_tolerance ? 1 : (previous_cross < -previous_tolerance ? -1 : 0);
+  const int next_side = next_cross > next_tolerance ? 1 : (next_cross < -next_tolerance ? -1 : 0);
+  return previous_side * next_side >= 0;
+}
+
+struct SnapResult {
+  geometry::Point point;
+  bool snapped = false;   // the input was inside an obstacle and was moved to its boundary
+  double distance = 0.0;  // how far it moved
+};
+
+/// Caller-owned memory of edges that recently blocked a visibility test. Consecutive tests from one
+/// point in similar directions tend to be blocked by the same edges, so checking those first skips most
+/// grid traversals. Purely an accelerator: results are identical with or without it.
+struct BlockerCache {
+  static constexpr std::size_t kSize = 16;
+  std::array<std::uint32_t, kSize> edges{};
+  std::size_t count = 0;
+  std::size_t next_slot = 0;
+};
+
+class ObstacleSet {
+ public:
+  /// `bounds`, when given, is the extent of a prior map: everything outside counts as blocked (the
+  /// loops must then include the map's rim). `bucket_size` <= 0 picks one from the edge lengths.
+  /// Loops with fewer than 3 vertices or non-finite coordinates are skipped and counted.
+  explicit ObstacleSet(std::vector<ObstacleLoop> loops, std::optional<Bounds> bounds = std::nullopt,
+                       double bucket_size = 0.0);
+
+  const std::vector<ObstacleLoop>& loops() const { return loops_; }
+  const std::optional<Bounds>& bounds() const { return bounds_; }
+  std::size_t edgeCount() const { return edges_.size(); }
+  std::size_t skippedLoops() const { return skipped_loops_; }
+  double bucketSize() const { return bucket_size_; }
+
+  /// Every loop vertex with its neighbours, in loop order.
+  std::vector<LoopCorner> corners() const;
+
+  /// True when the segment from `from` to `to` enters no blocked side (see the rule above); false for
+  /// non-finite points. Thread safe.
+  bool visible(const geometry::Point& from, const geometry::Point& to) const;
+  /// The same test, first trying the edges in `cache` and remembering a new blocker in it.
+  bool visible(const geometry::Point& from, const geometry::Point& to, BlockerCache& cache) const;
+
+  /// True for points strictly inside a blocked region or outside the bounds; boundary points are free.
+  bool isBlocked(const geometry::Point& point) const;
+  /// Distance from `point` to the nearest loop edge (infinity when there are none).
+  double distanceToBoundary(const geometry::Point& point) const;
+  /// The point itself when free, else the nearest boundary point.
+  SnapResult snapToFree(const geometry::Point& point) const;
+
+ private:
+  struct Edge {
+    geometry::Point start;
+    geometry::Point end;
+    geometry::Point previous;  // loop vertex before `start`: the edge owns the wedge test at `start`
+  };
+  bool edgeBlocks(const Edge& edge, const geometry::Point& from, const geometry::Point& to) const;
+  /// Index of an edge that blocks the segment, or kNoEdge.
+  std::uint32_t findBlocker(const geometry::Point& from, const geometry::Point& to) const;
+  static constexpr std::uint32_t kNoEdge = 0xFFFFFFFFu;
+  void buildIndex(double bucket_size);
+
+  std::vector<ObstacleLoop> loops_;
+  std::optional<Bounds> bounds_;
+  std::vector<Edge> edges_;
+  std::size_t skipped_loops_ = 0;
+  // Uniform grid over the edges' extent; bucket b holds edges bucket_edges_[bucket_offsets_[b] ..
+  // bucket_offsets_[b + 1]).
+  geometry::Point grid_min_ = geometry::Point::Zero();
+  double bucket_size_ = 1.0;
+  int columns_ = 0;
+  int rows_ = 0;
+  std::vector<std::uint32_t> bucket_offsets_;
+  std::vector<std::uint32_t> bucket_edges_;
+};
+
+}  // namespace ifar::graph

@@ -1,0 +1,113 @@
+#pragma once
+// Global search (paper VII.A): attach the robot and the goal to the graph through visibility, then A*
+// with the Euclidean heuristic. The search reads an immutable SearchGraph snapshot and keeps its state
+// in a SearchScratch the caller owns, so graph updates and searches can run concurrently and repeated
+// searches allocate nothing once the scratch has grown.
+//
+// Unknown space is attemptable: the obstacle set holds only observed obstacles, so attachments and
+// edges that cross unobserved space count as free until perception adds a polygon that blocks them.
+
+#include <cstdint>
+#include <limits>
+#include <utility>
+#include <vector>
+
+#include "common/geometry/point.hpp"
+#include "planner/graph/dv_graph.hpp"
+#include "planner/graph/obstacle_set.hpp"
+
+namespace ifar::graph {
+
+constexpr std::uint32_t kNoInteraction = std::numeric_limits<std::uint32_t>::max();
+
+/// Compressed, read-only copy of a DvGraph's live part: dense indices, arcs in flat arrays.
+class SearchGraph {
+ public:
+  SearchGraph() = default;
+  static SearchGraph fromDvGraph(const DvGraph& graph);
+
+  std::size_t size() const { return positions_.size(); }
+  std::size_t arcCount() const { return targets_.size(); }
+
+ private:
+  friend class AStarSearch;
+  std::vector<VertexId> ids_;
+  std::vector<geometry::Point> positions_;
+  std::vector<geometry::Point> previous_;
+  std::vector<geometry::Point> next_;
+  std::vector<VertexKind> kinds_;
+  std::vector<std::uint32_t> offsets_;  // arcs of vertex v: [offsets_[v], offsets_[v + 1])
+  std::vector<std::uint32_t> targets_;
+  std::vector<double> costs_;
+  std::vector<std::uint32_t> interaction_;  // interaction edge index or kNoInteraction
+  std::vector<std::int64_t> interaction_objects_;
+  std::vector<std::uint32_t> interaction_plans_;
+};
+
+enum class SearchStatus {
+  Found,
+  NoPath,        // start and goal valid but not connected
+  InvalidStart,  // NaN or infinite coordinates
+  InvalidGoal,
+  StartOffMap,  // outside the prior map's bounds
+  GoalOffMap,
+};
+
+const char* toString(SearchStatus status);
+
+struct PathPoint {
+  geometry::Point position = geometry::Point::Zero();
+  VertexId vertex = kNoVertex;                 // kNoVertex for the robot and the goal
+  std::uint32_t interaction = kNoInteraction;  // set when the step INTO this point pushes an object
+  std::int64_t object_id = 0;
+  std::uint32_t push_plan = 0;
+};
+
+struct SearchResult {
+  SearchStatus status = SearchStatus::NoPath;
+  std::vector<PathPoint> path;                      // robot first, goal last (when Found)
+  double cost = 0.0;                                // sum of edge costs (length, plus J on interaction edges)
+  double length = 0.0;                              // geometric length
+  geometry::Point start = geometry::Point::Zero();  // after snapping
+  geometry::Point goal = geometry::Point::Zero();
+  bool start_snapped = false;  // was inside an obstacle, moved to the nearest free point
+  bool goal_snapped = false;
+  std::size_t expansions = 0;
+  std::size_t start_links = 0;
+  std::size_t goal_links = 0;  // expanded vertices found to see the goal (tested lazily)
+};
+
+/// Search state, reusable across searches of any graph; not shared between threads.
+class SearchScratch {
+ private:
+  friend class AStarSearch;
+  struct QueueEntry {
+    double priority;
+    std::uint32_t vertex;
+  };
+  std::vector<double> cost_so_far_;
+  std::vector<std::uint32_t> parent_;
+  std::vector<std::uint32_t> seen_stamp_;
+  std::vector<std::uint32_t> closed_stamp_;
+  std::vector<std::pair<std::uint32_t, double>> start_links_;
+  std::vector<QueueEntry> queue_;
+  std::uint32_t generation_ = 0;
+};
+
+class AStarSearch {
+ public:
+  /// Plans from `start` to `goal`. A start or goal inside an obstacle is snapped to the nearest
+  /// boundary point and flagged; one off a bounded map or not finite is refused with a status.
+  static SearchResult run(const SearchGraph& graph, const ObstacleSet& obstacles,
+                          const geometry::Point& start, const geometry::Point& goal, SearchScratch& scratch);
+};
+
+/// Convenience wrapper around AStarSearch::run.
+inline SearchResult findPath(const SearchGraph& graph, const ObstacleSet& obstacles,
+                             const geometry::Point& start, const geometry::Point& goal,
+                             SearchScratch& scratch)
+{
+  return AStarSearch::run(graph, obstacles, start, goal, scratch);
+}
+
+}  // namespace ifar::graph

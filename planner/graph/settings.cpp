@@ -1,0 +1,31 @@
+#include "planner/graph/settings.hpp"
+
+#include <cmath>
+
+namespace ifar::graph {
+
+GraphSettings loadGraphSettings(const common::ConfigNode& node)
+{
+  GraphSettings settings;
+  settings.association_distance_m =
+      node.optional<double>("association_distance_m", settings.association_distance_m);
+  settings.votes = node.optional<int>("votes", settings.votes);
+  settings.view_radius_m = node.optional<double>("view_radius_m", settings.view_radius_m);
+  settings.bucket_size_m = node.optional<double>("bucket_size_m", settings.bucket_size_m);
+  if (!(std::isfinite(settings.association_distance_m) && settings.association_distance_m > 0.0)) {
+    node.fail("association_distance_m", "must be a positive number of metres");
+  }
+  if (settings.votes < 1) {
+    node.fail("votes", "must be at least 1");
+  }
+  if (!(std::isfinite(settings.view_radius_m) && settings.view_radius_m > 0.0)) {
+    node.fail("view_radius_m", "must be a positive number of metres");
+  }
+  if (!(std::isfinite(settings.bucket_size_m) && settings.bucket_size_m >= 0.0)) {
+    node.fail("bucket_size_m", "must be 0 (automatic) or a positive number of metres");
+  }
+  node.rejectUnknownKeys();
+  return settings;
+}
+
+}  // namespace ifar::graph

@@ -1,0 +1,24 @@
+#pragma once
+// Settings of the DV-graph: the `graph:` section of config/planner.yaml.
+
+#include "common/config.hpp"
+
+namespace ifar::graph {
+
+struct GraphSettings {
+  /// A local vertex within this distance of a global one of the same kind is the same vertex (metres).
+  double association_distance_m = 0.5;
+  /// A global vertex inside the sensor's view that goes unobserved this many consecutive frames is removed.
+  int votes = 10;
+  /// Radius around the robot inside which vertices count as "in view" for voting (metres); vertices
+  /// farther away are kept as they are.
+  double view_radius_m = 25.0;
+  /// Side of the visibility index's buckets (metres); 0 picks one from the obstacle edges.
+  double bucket_size_m = 0.0;
+};
+
+/// Reads the `graph` section (`node` is that section). Every key is optional with the defaults above;
+/// unknown keys and out-of-range values throw common::ConfigError naming the key.
+GraphSettings loadGraphSettings(const common::ConfigNode& node);
+
+}  // namespace ifar::graph

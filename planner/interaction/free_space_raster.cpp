@@ -1,0 +1,133 @@
+#include "planner/interaction/free_space_raster.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace ifar::interaction {
+
+using geometry::Point;
+using geometry::Polygon;
+
+FreeSpaceRaster::FreeSpaceRaster(const Bounds& window, double resolution_m)
+    : window_(window),
+      resolution_(resolution_m),
+      columns_(
+          std::max(1, static_cast<int>(std::ceil((window.maximum.x() - window.minimum.x()) / resolution_m)))),
+      rows_(
+          std::max(1, static_cast<int>(std::ceil((window.maximum.y() - window.minimum.y()) / resolution_m)))),
+      cells_(static_cast<std::size_t>(columns_) * static_cast<std::size_t>(rows_), 0)
+{
+}
+
+void FreeSpaceRaster::fill(const Polygon& polygon, std::uint8_t layer)
+{
+  const std::size_t count = polygon.size();
+  if (count < 3) {
+    return;
+  }
+  const Bounds bounds = boundsOf(polygon);
+  const int first_row =
+      std::max(0, static_cast<int>(std::floor((bounds.minimum.y() - window_.minimum.y()) / resolution_)));
+  const int last_row = std::min(
+      rows_ - 1, static_cast<int>(std::ceil((bounds.maximum.y() - window_.minimum.y()) / resolution_)));
+  std::vector<double> crossings;
+  for (int row = first_row; row <= last_row; ++row) {
+    const double y = window_.minimum.y() + (row + 0.5) * resolution_;
+    crossings.clear();
+    for (std::size_t index = 0; index < count; ++index) {
+      const Point& a = polygon[index];
+      const Point& b = polygon[(index + 1) % count];
+      if ((a.y() <= y) != (b.y() <= y)) {
+        crossings.push_back(a.x() + (y - a.y()) * (b.x() - a.x()) / (b.y() - a.y()));
+      }
+    }
+    std::sort(crossings.begin(), crossings.end());
+    for (std::size_t pair = 0; pair + 1 < crossings.size(); pair += 2) {
+      const int first_column = std::max(
+          0, static_cast<int>(std::ceil((crossings[pair] - window_.minimum.x()) / resolution_ - 0.5)));
+      const int last_column = std::min(
+          columns_ - 1,
+          static_cast<int>(std::floor((crossings[pair + 1] - window_.minimum.x()) / resolution_ - 0.5)));
+      for (int column = first_column; column <= last_column; ++column) {
+        cells_[static_cast<std::size_t>(row) * static_cast<std::size_t>(columns_) +
+               static_cast<std::size_t>(column)] |= layer;
+      }
+    }
+  }
+}
+
+std::vector<int> FreeSpaceRaster::labelComponents(std::uint8_t blocked_layers, int& component_count) const
+{
+  std::vector<int> labels(cells_.size(), -1);
+  component_count = 0;
+  std::vector<std::size_t> stack;
+  for (std::size_t seed = 0; seed < cells_.size(); ++seed) {
+    if ((cells_[seed] & blocked_layers) != 0 || labels[seed] >= 0) {
+      continue;
+    }
+    labels[seed] = component_count;
+    stack.push_back(seed);
+    while (!stack.empty()) {
+      const std::size_t cell = stack.back();
+      stack.pop_back();
+      const int row = static_cast<int>(cell / static_cast<std::size_t>(columns_));
+      const int column = static_cast<int>(cell % static_cast<std::size_t>(columns_));
+      const int neighbours[4][2] = {
+          {row - 1, column}, {row + 1, column}, {row, column - 1}, {row, column + 1}};
+      for (const auto& neighbour : neighbours) {
+        if (neighbour[0] < 0 || neighbour[0] >= rows_ || neighbour[1] < 0 || neighbour[1] >= columns_) {
+          continue;
+        }
+        const std::size_t next = static_cast<std::size_t>(neighbour[0]) * static_cast<std::size_t>(columns_) +
+                                 static_cast<std::size_t>(neighbour[1]);
+        if ((cells_[next] & blocked_layers) == 0 && labels[next] < 0) {
+          labels[next] = component_count;
+          stack.push_back(next);
+        }
+      }
+    }
+    ++component_count;
+  }
+  return labels;
+}
+
+std::optional<std::size_t> FreeSpaceRaster::cellOf(const Point& point) const
+{
+  const int column = static_cast<int>(std::floor((point.x() - window_.minimum.x()) / resolution_));
+  const int row = static_cast<int>(std::floor((point.y() - window_.minimum.y()) / resolution_));
+  if (column < 0 || column >= columns_ || row < 0 || row >= rows_) {
+    return std::nullopt;
+  }
+  return static_cast<std::size_t>(row) * static_cast<std::size_t>(columns_) +
+         static_cast<std::size_t>(column);
+}
+
+std::optional<std::size_t> FreeSpaceRaster::nearestLabelled(const Point& point,
+                                                            const std::vector<int>& labels,
+                                                            int radius_cells) const
+{
+  const int column = static_cast<int>(std::floor((point.x() - window_.minimum.x()) / resolution_));
+  const int row = static_cast<int>(std::floor((point.y() - window_.minimum.y()) / resolution_));
+  for (int ring = 0; ring <= radius_cells; ++ring) {
+    for (int dr = -ring; dr <= ring; ++dr) {
+      for (int dc = -ring; dc <= ring; ++dc) {
+        if (std::max(std::abs(dr), std::abs(dc)) != ring) {
+          continue;
+        }
+        const int r = row + dr;
+        const int c = column + dc;
+        if (r < 0 || r >= rows_ || c < 0 || c >= columns_) {
+          continue;
+        }
+        const std::size_t cell =
+            static_cast<std::size_t>(r) * static_cast<std::size_t>(columns_) + static_cast<std::size_t>(c);
+        if (labels[cell] >= 0) {
+          return cell;
+        }
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace ifar::interaction

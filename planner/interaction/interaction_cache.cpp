@@ -1,0 +1,97 @@
+#include "planner/interaction/interaction_cache.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "planner/interaction/convex_polygon.hpp"
+
+namespace ifar::interaction {
+
+using geometry::Point;
+using geometry::Polygon;
+
+InteractionCache::InteractionCache(const InteractionSettings& settings, double tolerance_m)
+    : settings_(settings), tolerance_m_(tolerance_m)
+{
+}
+
+InteractionCache::Signature InteractionCache::signatureOf(const LocalScene& scene, std::size_t movable_index,
+                                                          const ObjectPhysics& physics) const
+{
+  Signature signature;
+  signature.physics = physics;
+  if (movable_index >= scene.movable.size() || scene.movable[movable_index].size() < 3) {
+    return signature;
+  }
+  const Polygon& object = scene.movable[movable_index];
+  signature.object_centroid = geometry::centroid(object);
+  signature.object_area = geometry::area(object);
+  Bounds window = boundsOf(object);
+  window.minimum -= Point::Constant(settings_.connectivity.window_margin_m);
+  window.maximum += Point::Constant(settings_.connectivity.window_margin_m);
+  const auto add = [&](const Polygon& polygon) {
+    if (polygon.size() >= 3 && boundsOf(polygon).overlaps(window)) {
+      ++signature.neighbour_count;
+      signature.neighbour_centroid_sum += geometry::centroid(polygon);
+    }
+  };
+  for (const Polygon& polygon : scene.background) {
+    add(polygon);
+  }
+  for (std::size_t index = 0; index < scene.movable.size(); ++index) {
+    if (index != movable_index) {
+      add(scene.movable[index]);
+    }
+  }
+  return signature;
+}
+
+bool InteractionCache::same(const Signature& first, const Signature& second) const
+{
+  const auto close = [](double a, double b, double tolerance) { return std::abs(a - b) <= tolerance; };
+  return (first.object_centroid - second.object_centroid).norm() <= tolerance_m_ &&
+         close(first.object_area, second.object_area,
+               0.1 * std::max(first.object_area, second.object_area)) &&
+         first.neighbour_count == second.neighbour_count &&
+         (first.neighbour_centroid_sum - second.neighbour_centroid_sum).norm() <=
+             tolerance_m_ * static_cast<double>(std::max<std::size_t>(1, first.neighbour_count)) &&
+         first.physics.ground_friction == second.physics.ground_friction &&
+         first.physics.mass_kg == second.physics.mass_kg;
+}
+
+bool InteractionCache::stale(std::int64_t object_id, const LocalScene& scene, std::size_t movable_index,
+                             const ObjectPhysics& physics) const
+{
+  const auto found = entries_.find(object_id);
+  return found == entries_.end() || !found->second.valid ||
+         !same(found->second.signature, signatureOf(scene, movable_index, physics));
+}
+
+const ObjectInteractions& InteractionCache::interactionsFor(std::int64_t object_id, const LocalScene& scene,
+                                                            std::size_t movable_index,
+                                                            const ObjectPhysics& physics, bool& replanned)
+{
+  replanned = stale(object_id, scene, movable_index, physics);
+  Entry& entry = entries_[object_id];
+  if (replanned) {
+    entry.signature = signatureOf(scene, movable_index, physics);
+    entry.interactions = planObjectInteractions(scene, movable_index, physics, settings_);
+    entry.valid = true;
+  }
+  return entry.interactions;
+}
+
+void InteractionCache::invalidate(std::int64_t object_id)
+{
+  const auto found = entries_.find(object_id);
+  if (found != entries_.end()) {
+    found->second.valid = false;
+  }
+}
+
+void InteractionCache::forget(std::int64_t object_id)
+{
+  entries_.erase(object_id);
+}
+
+}  // namespace ifar::interaction

@@ -1,0 +1,58 @@
+#pragma once
+// Push plans per object, redone only when the object moved, its surroundings changed or its affordance
+// (physics estimate) changed. The planner daemon keeps one cache and asks it every frame, within its
+// per-frame budget; a cached answer costs a signature comparison.
+
+#include <cstddef>
+#include <cstdint>
+#include <map>
+
+#include "planner/interaction/interaction_planner.hpp"
+
+namespace ifar::interaction {
+
+class InteractionCache {
+ public:
+  /// Changes smaller than `tolerance_m` (object centroid shift, neighbour centroids) reuse the plans.
+  explicit InteractionCache(const InteractionSettings& settings, double tolerance_m = 0.1);
+
+  /// True when interactionsFor() would have to plan (unknown object, moved, new surroundings or physics).
+  bool stale(std::int64_t object_id, const LocalScene& scene, std::size_t movable_index,
+             const ObjectPhysics& physics) const;
+
+  /// The object's interactions, planned now when stale(); `replanned` tells which. The reference stays
+  /// valid until the next call for the same object or invalidate()/forget().
+  const ObjectInteractions& interactionsFor(std::int64_t object_id, const LocalScene& scene,
+                                            std::size_t movable_index, const ObjectPhysics& physics,
+                                            bool& replanned);
+
+  /// Forces a replan next time (e.g. AFFORDANCE said the estimate was wrong in a way physics misses).
+  void invalidate(std::int64_t object_id);
+  /// Drops the object (it left the map).
+  void forget(std::int64_t object_id);
+  std::size_t size() const { return entries_.size(); }
+
+ private:
+  struct Signature {
+    geometry::Point object_centroid = geometry::Point::Zero();
+    double object_area = 0.0;
+    std::size_t neighbour_count = 0;
+    geometry::Point neighbour_centroid_sum = geometry::Point::Zero();
+    ObjectPhysics physics;
+  };
+  struct Entry {
+    Signature signature;
+    ObjectInteractions interactions;
+    bool valid = false;
+  };
+
+  Signature signatureOf(const LocalScene& scene, std::size_t movable_index,
+                        const ObjectPhysics& physics) const;
+  bool same(const Signature& first, const Signature& second) const;
+
+  InteractionSettings settings_;
+  double tolerance_m_;
+  std::map<std::int64_t, Entry> entries_;
+};
+
+}  // namespace ifar::interaction

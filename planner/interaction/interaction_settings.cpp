@@ -1,0 +1,16 @@
+#include "planner/interaction/interaction_settings.hpp"
+
+namespace ifar::interaction {
+
+PusherSettings PusherSettings::fromVehicle(const common::VehicleSettings& vehicle)
+{
+  PusherSettings pusher;
+  pusher.bumper_width_m = vehicle.bumper_width_m;
+  pusher.bumper_friction = vehicle.bumper_friction;
+  pusher.bumper_to_axle_m = vehicle.length_m / 2.0;  // vehicle.yaml does not state the axle position
+  pusher.inflation_m = vehicle.width_m / 2.0;
+  pusher.max_push_force_n = vehicle.maxPushForce();
+  return pusher;
+}
+
+}  // namespace ifar::interaction

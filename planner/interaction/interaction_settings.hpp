@@ -1,0 +1,75 @@
+#pragma once
+// Plain settings structs for interaction planning. Units are SI; distances are metres in the world
+// frame of the local layer. Defaults match config/vehicle.yaml and the paper.
+
+#include <cstddef>
+
+#include "common/vehicle.hpp"
+
+namespace ifar::interaction {
+
+/// Connectivity analysis around one movable polygon (paper V.B).
+struct ConnectivitySettings {
+  /// d_thres of Eq. 1: the farthest a topological waypoint sits from the movable polygon.
+  double waypoint_offset_m = 0.5;
+  /// Free space is analysed in the movable polygon's bounding box grown by this margin.
+  double window_margin_m = 3.0;
+  /// Cell size of the free-space raster used to tell components apart.
+  double raster_resolution_m = 0.05;
+  /// Free boundary stretches shorter than this do not get a waypoint.
+  double minimum_stretch_m = 0.05;
+  /// Side of the square local layer; larger objects are rejected.
+  double local_layer_size_m = 60.0;
+  /// Polygons thinner than this (rotating-calipers width) or smaller in area count as degenerate.
+  double minimum_width_m = 0.02;
+  double minimum_area_m2 = 1e-3;
+};
+
+/// What the planner believes about one object (its push affordance), from perception and pushes.
+struct ObjectPhysics {
+  double ground_friction = 0.4;  ///< object-ground Coulomb coefficient
+  double mass_kg = 20.0;
+};
+
+/// The pusher: a flat bumper on a differential-drive vehicle.
+struct PusherSettings {
+  double bumper_width_m = 0.7;
+  double bumper_friction = 0.5;
+  /// Distance from the bumper face back to the rear axle centre (the vehicle's reference point, where
+  /// its instantaneous centre of rotation lies on the axle line).
+  double bumper_to_axle_m = 0.45;
+  /// Obstacles in the local layer are inflated by this (the vehicle's half width).
+  double inflation_m = 0.35;
+  /// Largest push force the wheels deliver before slipping.
+  double max_push_force_n = 549.0;
+
+  static PusherSettings fromVehicle(const common::VehicleSettings& vehicle);
+};
+
+/// Hybrid A* push search (paper VI.C, Problem 3).
+struct SearchSettings {
+  double primitive_length_m = 0.4;        ///< arc length of the vehicle reference point per push
+  double position_resolution_m = 0.1;     ///< object position cell for duplicate detection
+  std::size_t heading_bins = 72;          ///< object heading cells over a full turn
+  double push_speed_mps = 0.3;            ///< v of the push controls
+  double travel_speed_mps = 0.5;          ///< speed assumed for contact switches (duration only)
+  double reference_force_n = 100.0;       ///< J = force x distance / reference force + travel, in metres
+  double search_radius_m = 4.0;           ///< object centroid never leaves this disc around its start
+  double analytic_max_distance_m = 4.0;   ///< longest straight push tried by the analytic expansion
+  std::size_t analytic_interval = 4;      ///< analytic expansion every this many expansions
+  double collision_step_m = 0.2;          ///< object motion between collision checks along a primitive
+  double boundary_sample_m = 0.1;         ///< spacing of footprint boundary points checked for contact
+  double contact_clearance_m = 0.05;      ///< vehicle keeps this from the inflated object when driving round
+  double penetration_tolerance_m = 0.03;  ///< rasterisation slack when deciding the object hits a wall
+  std::size_t max_expansions = 4000;
+  double time_budget_s = 0.05;
+};
+
+/// Everything one object's interaction planning needs.
+struct InteractionSettings {
+  ConnectivitySettings connectivity;
+  PusherSettings pusher;
+  SearchSettings search;
+};
+
+}  // namespace ifar::interaction

@@ -1,0 +1,521 @@
+#include "planner/interaction/push_search.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <queue>
+#include <unordered_map>
+
+namespace ifar::interaction {
+
+using geometry::Point;
+using geometry::Polygon;
+using geometry::Pose2;
+using geometry::Segment;
+using geometry::Vector;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+Pose2 rotateAbout(const Pose2& pose, const Point& centre, double angle)
+{
+  const double cosine = std::cos(angle);
+  const double sine = std::sin(angle);
+  const Vector offset = pose.position() - centre;
+  return Pose2{centre.x() + cosine * offset.x() - sine * offset.y(),
+               centre.y() + sine * offset.x() + cosine * offset.y(),
+               geometry::wrapAngle(pose.heading + angle)};
+}
+
+Vector rotate(const Vector& vector, double angle)
+{
+  return Vector(std::cos(angle) * vector.x() - std::sin(angle) * vector.y(),
+                std::sin(angle) * vector.x() + std::cos(angle) * vector.y());
+}
+
+Polygon transformed(const Polygon& body, const Pose2& pose)
+{
+  Polygon world;
+  world.reserve(body.size());
+  for (const Point& vertex : body) {
+    world.push_back(pose.transform(vertex));
+  }
+  return world;
+}
+
+/// Points every `spacing` along a polyline (end points included).
+void samplePolyline(const std::vector<Point>& polyline, double spacing, std::vector<Point>& samples,
+                    double& length)
+{
+  length = 0.0;
+  if (polyline.empty()) {
+    return;
+  }
+  samples.push_back(polyline.front());
+  for (std::size_t index = 1; index < polyline.size(); ++index) {
+    const Vector step = polyline[index] - polyline[index - 1];
+    const double segment_length = step.norm();
+    const int pieces = std::max(1, static_cast<int>(std::ceil(segment_length / spacing)));
+    for (int piece = 1; piece <= pieces; ++piece) {
+      samples.push_back(polyline[index - 1] + step * (static_cast<double>(piece) / pieces));
+    }
+    length += segment_length;
+  }
+}
+
+struct Node {
+  Pose2 pose;
+  std::size_t edge = 0;
+  double cost = 0.0;
+  int parent = -1;
+  PushControl control;  ///< how this node was reached from its parent (unused for roots)
+  bool root = false;
+  double approach_m = 0.0;  ///< roots: travel from the start waypoint to the contact
+};
+
+struct QueueEntry {
+  double priority;
+  int node;
+  bool operator>(const QueueEntry& other) const { return priority > other.priority; }
+};
+
+}  // namespace
+
+struct PushPlanner::Passage {
+  Segment segment;
+  Polygon window;  ///< the passage rectangle widened by the inflation, counter-clockwise
+};
+
+PushPlanner::PushPlanner(const PushProblemObject& problem, const PusherSettings& pusher,
+                         const SearchSettings& search, const ConnectivitySettings& limits)
+    : pusher_(pusher), search_(search), obstacles_(problem.obstacles)
+{
+  status_ = checkPhysics(problem.physics, pusher);
+  if (status_ != PlanStatus::Found) {
+    return;
+  }
+  const ObjectModelResult built =
+      buildObjectModel(problem.object, pusher, limits, search.contact_clearance_m);
+  status_ = built.status;
+  if (status_ != PlanStatus::Found) {
+    return;
+  }
+  model_ = built.model;
+  limit_surface_ = ellipsoidalLimitSurface(model_.footprint, problem.physics);
+  if (limit_surface_.max_force_n > pusher.max_push_force_n) {
+    status_ = PlanStatus::TooHeavy;
+    return;
+  }
+  options_ = edgePushOptions(model_.footprint, pusher, limit_surface_);
+  double smallest_force = std::numeric_limits<double>::infinity();
+  for (const EdgePushOptions& option : options_) {
+    if (option.straight) {
+      smallest_force = std::min(smallest_force, option.straight_force_n);
+    }
+    if (std::isfinite(option.left_radius_m)) {
+      smallest_force = std::min(smallest_force, option.left_force_n);
+    }
+    if (std::isfinite(option.right_radius_m)) {
+      smallest_force = std::min(smallest_force, option.right_force_n);
+    }
+  }
+  if (!std::isfinite(smallest_force)) {
+    status_ = PlanStatus::NoStableContact;
+    return;
+  }
+  heuristic_per_metre_ = smallest_force / search.reference_force_n;
+
+  for (const Polygon& obstacle : obstacles_) {
+    obstacle_bounds_.push_back(boundsOf(obstacle));
+  }
+  std::vector<Point> outline = model_.footprint;
+  outline.push_back(model_.footprint.front());
+  double perimeter = 0.0;
+  samplePolyline(outline, search.boundary_sample_m, boundary_samples_, perimeter);
+
+  // A footprint recovered from a rasterised polygon may already sit a little inside a wall: allow what
+  // the start pose has, so "never hit an obstacle" means "never pushed deeper".
+  allowed_depth_m_ = pusher.inflation_m + search.penetration_tolerance_m;
+  for (const Point& sample : boundary_samples_) {
+    const Point world = model_.pose.transform(sample);
+    for (const Polygon& obstacle : obstacles_) {
+      if (geometry::locatePoint(obstacle, world) == geometry::Containment::Inside) {
+        allowed_depth_m_ = std::max(
+            allowed_depth_m_, geometry::distanceToBoundary(obstacle, world) + search.penetration_tolerance_m);
+      }
+    }
+  }
+
+  const std::size_t count = model_.footprint.size();
+  switch_paths_.assign(count, std::vector<std::array<SwitchPath, 2>>(count));
+  for (std::size_t from = 0; from < count; ++from) {
+    for (std::size_t to = 0; to < count; ++to) {
+      if (from == to) {
+        continue;
+      }
+      std::vector<Point> counter_clockwise{standingPoint(from)};
+      for (std::size_t vertex = (from + 1) % count;; vertex = (vertex + 1) % count) {
+        counter_clockwise.push_back(model_.travel_outline[vertex]);
+        if (vertex == to) {
+          break;
+        }
+      }
+      counter_clockwise.push_back(standingPoint(to));
+      std::vector<Point> clockwise{standingPoint(from)};
+      for (std::size_t vertex = from;; vertex = (vertex + count - 1) % count) {
+        clockwise.push_back(model_.travel_outline[vertex]);
+        if (vertex == (to + 1) % count) {
+          break;
+        }
+      }
+      clockwise.push_back(standingPoint(to));
+      samplePolyline(counter_clockwise, search.boundary_sample_m, switch_paths_[from][to][0].samples,
+                     switch_paths_[from][to][0].length);
+      samplePolyline(clockwise, search.boundary_sample_m, switch_paths_[from][to][1].samples,
+                     switch_paths_[from][to][1].length);
+    }
+  }
+}
+
+Point PushPlanner::standingPoint(std::size_t edge) const
+{
+  const ContactPatch& patch = options_[edge].patch;
+  return patch.middle - patch.push_direction * (pusher_.inflation_m + search_.contact_clearance_m);
+}
+
+Pose2 PushPlanner::vehiclePose(const Pose2& object_pose, std::size_t edge) const
+{
+  const ContactPatch& patch = options_[edge].patch;
+  const Point axle = object_pose.transform(patch.middle - patch.push_direction * pusher_.bumper_to_axle_m);
+  const Vector heading = rotate(patch.push_direction, object_pose.heading);
+  return Pose2{axle.x(), axle.y(), std::atan2(heading.y(), heading.x())};
+}
+
+bool PushPlanner::objectCollides(const Pose2& pose) const
+{
+  const Bounds bounds = boundsOf(transformed(model_.footprint, pose));
+  for (std::size_t index = 0; index < obstacles_.size(); ++index) {
+    if (!obstacle_bounds_[index].overlaps(bounds)) {
+      continue;
+    }
+    for (const Point& sample : boundary_samples_) {
+      const Point world = pose.transform(sample);
+      if (obstacle_bounds_[index].contains(world) &&
+          geometry::locatePoint(obstacles_[index], world) == geometry::Containment::Inside &&
+          geometry::distanceToBoundary(obstacles_[index], world) > allowed_depth_m_) {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+bool PushPlanner::pointBlocked(const Point& world) const
+{
+  for (std::size_t index = 0; index < obstacles_.size(); ++index) {
+    if (obstacle_bounds_[index].contains(world) &&
+        geometry::locatePoint(obstacles_[index], world) == geometry::Containment::Inside) {
+      return true;
+    }
+  }
+  return false;
+}
+
+bool PushPlanner::switchFree(const Pose2& pose, const SwitchPath& path) const
+{
+  return std::none_of(path.samples.begin(), path.samples.end(),
+                      [&](const Point& sample) { return pointBlocked(pose.transform(sample)); });
+}
+
+double PushPlanner::heuristic(const Pose2& pose, const Passage& passage) const
+{
+  const Polygon inside = clipConvex(transformed(model_.footprint, pose), passage.window);
+  if (inside.size() < 3) {
+    return 0.0;
+  }
+  return geometry::width(inside) * heuristic_per_metre_;
+}
+
+bool PushPlanner::passageClear(const Pose2& pose, const Passage& passage) const
+{
+  return segmentPolygonDistance(passage.segment, transformed(model_.footprint, pose)) >=
+         pusher_.inflation_m - search_.penetration_tolerance_m;
+}
+
+PushPlan PushPlanner::plan(const Point& start, const Point& goal) const
+{
+  const auto started = std::chrono::steady_clock::now();
+  const auto elapsed = [&] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  };
+  PushPlan plan;
+  plan.status = status_;
+  plan.footprint = model_.footprint;
+  plan.start_object_pose = model_.pose;
+  if (status_ != PlanStatus::Found) {
+    return plan;
+  }
+  if (!start.allFinite() || !goal.allFinite() || (goal - start).norm() < 1e-6 || pointBlocked(start) ||
+      pointBlocked(goal)) {
+    plan.status = PlanStatus::InvalidWaypoints;
+    return plan;
+  }
+
+  Passage passage;
+  passage.segment = Segment{start, goal};
+  const Vector along = (goal - start).normalized();
+  const Vector across(-along.y(), along.x());
+  const double half = pusher_.inflation_m;
+  passage.window = {start - along * half - across * half, goal + along * half - across * half,
+                    goal + along * half + across * half, start - along * half + across * half};
+
+  const std::size_t bins = std::max<std::size_t>(1, search_.heading_bins);
+  const auto key = [&](const Pose2& pose, std::size_t edge) {
+    const auto cell = [&](double value) {
+      return static_cast<std::uint64_t>(
+          static_cast<std::int64_t>(std::floor(value / search_.position_resolution_m)) & 0xFFFFF);
+    };
+    const double turn = (geometry::wrapAngle(pose.heading) + kPi) / (2.0 * kPi);
+    const auto heading_cell = static_cast<std::uint64_t>(
+        std::min(bins - 1, static_cast<std::size_t>(turn * static_cast<double>(bins))));
+    return (cell(pose.x) << 44) | (cell(pose.y) << 24) | (heading_cell << 8) |
+           static_cast<std::uint64_t>(edge & 0xFF);
+  };
+
+  std::vector<Node> nodes;
+  std::priority_queue<QueueEntry, std::vector<QueueEntry>, std::greater<QueueEntry>> open;
+  std::unordered_map<std::uint64_t, double> best_cost;
+
+  // Roots: contact edges the vehicle reaches from the start waypoint in a straight line.
+  const Polygon outline_world = transformed(model_.travel_outline, model_.pose);
+  for (std::size_t edge = 0; edge < options_.size(); ++edge) {
+    if (!options_[edge].pushable()) {
+      continue;
+    }
+    const Point standing = model_.pose.transform(standingPoint(edge));
+    if (pointBlocked(standing)) {
+      continue;
+    }
+    const Segment approach{start, standing};
+    bool visible = true;
+    for (std::size_t index = 0; index < outline_world.size() && visible; ++index) {
+      visible = !geometry::segmentsCrossProperly(approach, geometry::polygonEdge(outline_world, index));
+    }
+    for (std::size_t index = 0; index < obstacles_.size() && visible; ++index) {
+      for (std::size_t side = 0; side < obstacles_[index].size() && visible; ++side) {
+        visible = !geometry::segmentsCrossProperly(approach, geometry::polygonEdge(obstacles_[index], side));
+      }
+    }
+    if (!visible) {
+      continue;
+    }
+    Node root;
+    root.pose = model_.pose;
+    root.edge = edge;
+    root.approach_m = approach.length();
+    root.cost = root.approach_m;
+    root.root = true;
+    nodes.push_back(root);
+    open.push(QueueEntry{root.cost + heuristic(root.pose, passage), static_cast<int>(nodes.size() - 1)});
+  }
+  if (nodes.empty()) {
+    plan.status = PlanStatus::UnreachableContact;
+    return plan;
+  }
+
+  int goal_node = -1;
+  const auto straightPose = [&](const Pose2& pose, std::size_t edge, double distance) {
+    const Vector direction = rotate(options_[edge].patch.push_direction, pose.heading);
+    return Pose2{pose.x + direction.x() * distance, pose.y + direction.y() * distance, pose.heading};
+  };
+  const auto arcPose = [&](const Pose2& pose, std::size_t edge, double radius, double distance) {
+    // radius > 0 turns left; the rotation centre is on the vehicle's axle line.
+    const Pose2 vehicle = vehiclePose(pose, edge);
+    const Vector left(-std::sin(vehicle.heading), std::cos(vehicle.heading));
+    const Point centre = vehicle.position() + left * radius;
+    return rotateAbout(pose, centre, distance / radius);
+  };
+  const auto makeControl = [&](ControlKind kind, std::size_t edge, double distance, double radius,
+                               double force, const Pose2& end_pose) {
+    PushControl control;
+    control.kind = kind;
+    control.contact_edge = edge;
+    control.distance_m = distance;
+    control.force_n = force;
+    control.object_pose = end_pose;
+    control.vehicle_pose = vehiclePose(end_pose, edge);
+    if (kind == ControlKind::ContactSwitch) {
+      control.duration_s = distance / search_.travel_speed_mps;
+    } else {
+      control.linear_mps = search_.push_speed_mps;
+      control.angular_radps = std::isfinite(radius) ? search_.push_speed_mps / radius : 0.0;
+      control.duration_s = distance / search_.push_speed_mps;
+    }
+    return control;
+  };
+  const auto pushAllowed = [&](const std::function<Pose2(double)>& along_motion, double distance) {
+    const int steps = std::max(1, static_cast<int>(std::ceil(distance / search_.collision_step_m)));
+    for (int step = 1; step <= steps; ++step) {
+      const Pose2 pose = along_motion(distance * step / steps);
+      if ((pose.position() - model_.pose.position()).norm() > search_.search_radius_m ||
+          objectCollides(pose)) {
+        return false;
+      }
+    }
+    return true;
+  };
+  const auto addNode = [&](int parent_index, const Pose2& pose, std::size_t edge, double cost,
+                           const PushControl& control) {
+    const std::uint64_t state = key(pose, edge);
+    const auto found = best_cost.find(state);
+    if (found != best_cost.end() && found->second <= cost + 1e-9) {
+      return;
+    }
+    best_cost[state] = cost;
+    Node node;
+    node.pose = pose;
+    node.edge = edge;
+    node.cost = cost;
+    node.parent = parent_index;
+    node.control = control;
+    nodes.push_back(node);
+    open.push(QueueEntry{cost + heuristic(pose, passage), static_cast<int>(nodes.size() - 1)});
+  };
+
+  std::size_t expansions = 0;
+  PlanStatus outcome = PlanStatus::Exhausted;
+  while (!open.empty()) {
+    if (expansions >= search_.max_expansions) {
+      outcome = PlanStatus::ExpansionLimit;
+      break;
+    }
+    if ((expansions & 15U) == 0 && elapsed() > search_.time_budget_s) {
+      outcome = PlanStatus::TimeBudget;
+      break;
+    }
+    const int current_index = open.top().node;
+    open.pop();
+    const Node current = nodes[static_cast<std::size_t>(current_index)];
+    const auto settled = best_cost.find(key(current.pose, current.edge));
+    if (!current.root && settled != best_cost.end() && settled->second < current.cost - 1e-9) {
+      continue;  // a cheaper copy of this state was queued later
+    }
+    if (passageClear(current.pose, passage)) {
+      goal_node = current_index;
+      break;
+    }
+    ++expansions;
+    const EdgePushOptions& option = options_[current.edge];
+
+    // Analytic expansion: one straight push to the goal when nothing is in the way.
+    if (option.straight &&
+        (current.root || expansions % std::max<std::size_t>(1, search_.analytic_interval) == 0)) {
+      const int steps =
+          static_cast<int>(std::ceil(search_.analytic_max_distance_m / search_.collision_step_m));
+      for (int step = 1; step <= steps; ++step) {
+        const double distance = step * search_.collision_step_m;
+        const Pose2 pose = straightPose(current.pose, current.edge, distance);
+        if (objectCollides(pose)) {
+          break;
+        }
+        if (passageClear(pose, passage)) {
+          Node node;
+          node.pose = pose;
+          node.edge = current.edge;
+          node.cost = current.cost + option.straight_force_n * distance / search_.reference_force_n;
+          node.parent = current_index;
+          node.control = makeControl(ControlKind::Straight, current.edge, distance,
+                                     std::numeric_limits<double>::infinity(), option.straight_force_n, pose);
+          nodes.push_back(node);
+          goal_node = static_cast<int>(nodes.size() - 1);
+          break;
+        }
+      }
+      if (goal_node >= 0) {
+        break;
+      }
+    }
+
+    const double length = search_.primitive_length_m;
+    if (option.straight) {
+      const auto motion = [&](double distance) { return straightPose(current.pose, current.edge, distance); };
+      if (pushAllowed(motion, length)) {
+        const Pose2 pose = motion(length);
+        addNode(current_index, pose, current.edge,
+                current.cost + option.straight_force_n * length / search_.reference_force_n,
+                makeControl(ControlKind::Straight, current.edge, length,
+                            std::numeric_limits<double>::infinity(), option.straight_force_n, pose));
+      }
+    }
+    const std::array<std::pair<double, double>, 2> arcs{
+        std::make_pair(option.left_radius_m, option.left_force_n),
+        std::make_pair(-option.right_radius_m, option.right_force_n)};
+    for (const auto& [radius, force] : arcs) {
+      if (!std::isfinite(radius)) {
+        continue;
+      }
+      const auto motion = [&, radius = radius](double distance) {
+        return arcPose(current.pose, current.edge, radius, distance);
+      };
+      if (pushAllowed(motion, length)) {
+        const Pose2 pose = motion(length);
+        addNode(current_index, pose, current.edge, current.cost + force * length / search_.reference_force_n,
+                makeControl(radius > 0.0 ? ControlKind::ArcLeft : ControlKind::ArcRight, current.edge, length,
+                            radius, force, pose));
+      }
+    }
+    if (current.control.kind != ControlKind::ContactSwitch || current.root) {
+      for (std::size_t edge = 0; edge < options_.size(); ++edge) {
+        if (edge == current.edge || !options_[edge].pushable()) {
+          continue;
+        }
+        const auto& paths = switch_paths_[current.edge][edge];
+        const std::size_t shorter = paths[0].length <= paths[1].length ? 0 : 1;
+        for (const std::size_t direction : {shorter, 1 - shorter}) {
+          if (switchFree(current.pose, paths[direction])) {
+            addNode(current_index, current.pose, edge, current.cost + paths[direction].length,
+                    makeControl(ControlKind::ContactSwitch, edge, paths[direction].length, 0.0, 0.0,
+                                current.pose));
+            break;
+          }
+        }
+      }
+    }
+  }
+
+  plan.expansions = expansions;
+  plan.planning_time_s = elapsed();
+  if (goal_node < 0) {
+    plan.status = outcome;
+    return plan;
+  }
+  std::vector<int> chain;
+  for (int index = goal_node; index >= 0; index = nodes[static_cast<std::size_t>(index)].parent) {
+    chain.push_back(index);
+  }
+  std::reverse(chain.begin(), chain.end());
+  const Node& root = nodes[static_cast<std::size_t>(chain.front())];
+  plan.status = PlanStatus::Found;
+  plan.contact_edge = root.edge;
+  plan.contact_pose = vehiclePose(root.pose, root.edge);
+  plan.travel_distance_m = root.approach_m;
+  for (std::size_t link = 1; link < chain.size(); ++link) {
+    const PushControl& control = nodes[static_cast<std::size_t>(chain[link])].control;
+    plan.controls.push_back(control);
+    if (control.kind == ControlKind::ContactSwitch) {
+      plan.travel_distance_m += control.distance_m;
+    } else {
+      plan.push_distance_m += control.distance_m;
+      plan.push_work_nm += control.force_n * control.distance_m;
+      plan.expected_force_n = std::max(plan.expected_force_n, control.force_n);
+    }
+  }
+  plan.cost = plan.push_work_nm / search_.reference_force_n + plan.travel_distance_m;
+  return plan;
+}
+
+}  // namespace ifar::interaction

@@ -1,0 +1,74 @@
+#pragma once
+// Hybrid A* push search for one object (paper VI.C, Problem 3). State: object pose (x, y, heading,
+// discretised for duplicate detection) x contact edge. Actions: stable push primitives of fixed length
+// (straight, arcs at the edge's smallest stable radius) and contact switches (drive round the object,
+// collision-checked against the obstacles). Goal: the passage between the two waypoints, widened by the
+// vehicle's half width, is clear of the object, and the object never ran into an obstacle on the way.
+// Heuristic: width of the heuristic polygon (object inside the passage) by rotating calipers, plus an
+// analytic straight push to the goal tried at regular intervals.
+//
+// A PushPlanner is built once per object and answers the n(n-1) waypoint pairs; plan() is const.
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include "common/geometry/polygon.hpp"
+#include "planner/interaction/convex_polygon.hpp"
+#include "planner/interaction/interaction_settings.hpp"
+#include "planner/interaction/object_model.hpp"
+#include "planner/interaction/push_plan.hpp"
+#include "planner/interaction/stable_push.hpp"
+
+namespace ifar::interaction {
+
+struct PushProblemObject {
+  geometry::Polygon object;                  ///< inflated world polygon of the pushed object
+  std::vector<geometry::Polygon> obstacles;  ///< inflated world polygons it must not run into
+  ObjectPhysics physics;
+};
+
+class PushPlanner {
+ public:
+  PushPlanner(const PushProblemObject& problem, const PusherSettings& pusher, const SearchSettings& search,
+              const ConnectivitySettings& limits);
+
+  /// Found when the object can be planned for; otherwise every plan() returns this status.
+  PlanStatus status() const { return status_; }
+  const ObjectModel& model() const { return model_; }
+  const std::vector<EdgePushOptions>& edgeOptions() const { return options_; }
+
+  /// Searches a push plan that opens the passage from `start` to `goal` (topological waypoints).
+  PushPlan plan(const geometry::Point& start, const geometry::Point& goal) const;
+
+ private:
+  struct SwitchPath {
+    std::vector<geometry::Point> samples;  ///< body frame, vehicle reference point positions
+    double length = 0.0;
+  };
+  struct Passage;
+
+  bool objectCollides(const geometry::Pose2& pose) const;
+  bool pointBlocked(const geometry::Point& world) const;
+  bool switchFree(const geometry::Pose2& pose, const SwitchPath& path) const;
+  geometry::Point standingPoint(std::size_t edge) const;
+  geometry::Pose2 vehiclePose(const geometry::Pose2& object_pose, std::size_t edge) const;
+  double heuristic(const geometry::Pose2& pose, const Passage& passage) const;
+  bool passageClear(const geometry::Pose2& pose, const Passage& passage) const;
+
+  PlanStatus status_ = PlanStatus::Found;
+  PusherSettings pusher_;
+  SearchSettings search_;
+  ObjectModel model_;
+  LimitSurface limit_surface_;
+  std::vector<EdgePushOptions> options_;
+  std::vector<geometry::Polygon> obstacles_;
+  std::vector<Bounds> obstacle_bounds_;
+  std::vector<geometry::Point> boundary_samples_;  ///< body frame
+  double allowed_depth_m_ = 0.0;  ///< how deep a footprint point may sit inside an inflated obstacle
+  double heuristic_per_metre_ = 0.0;
+  /// switch_paths_[from][to][direction]: driving counter-clockwise (0) or clockwise (1).
+  std::vector<std::vector<std::array<SwitchPath, 2>>> switch_paths_;
+};
+
+}  // namespace ifar::interaction

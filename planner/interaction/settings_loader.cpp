@@ -1,0 +1,56 @@
+#include "planner/interaction/settings_loader.hpp"
+
+#include <cmath>
+#include <string>
+
+namespace ifar::interaction {
+
+namespace {
+
+void readPositive(const common::ConfigNode& node, const std::string& key, double& value)
+{
+  value = node.optional<double>(key, value);
+  if (!(std::isfinite(value) && value > 0.0)) {
+    node.fail(key, "must be a positive number");
+  }
+}
+
+void readCount(const common::ConfigNode& node, const std::string& key, std::size_t& value)
+{
+  const int read = node.optional<int>(key, static_cast<int>(value));
+  if (read < 1) {
+    node.fail(key, "must be at least 1");
+  }
+  value = static_cast<std::size_t>(read);
+}
+
+}  // namespace
+
+InteractionSettings loadInteractionSettings(const common::ConfigNode& node,
+                                            const common::VehicleSettings& vehicle)
+{
+  InteractionSettings settings;
+  settings.pusher = PusherSettings::fromVehicle(vehicle);
+  ConnectivitySettings& connectivity = settings.connectivity;
+  readPositive(node, "waypoint_offset_m", connectivity.waypoint_offset_m);
+  readPositive(node, "window_margin_m", connectivity.window_margin_m);
+  readPositive(node, "raster_resolution_m", connectivity.raster_resolution_m);
+  readPositive(node, "minimum_stretch_m", connectivity.minimum_stretch_m);
+  readPositive(node, "local_layer_size_m", connectivity.local_layer_size_m);
+  SearchSettings& search = settings.search;
+  readPositive(node, "primitive_length_m", search.primitive_length_m);
+  readPositive(node, "position_resolution_m", search.position_resolution_m);
+  readCount(node, "heading_bins", search.heading_bins);
+  readPositive(node, "push_speed_mps", search.push_speed_mps);
+  readPositive(node, "travel_speed_mps", search.travel_speed_mps);
+  readPositive(node, "reference_force_n", search.reference_force_n);
+  readPositive(node, "search_radius_m", search.search_radius_m);
+  readPositive(node, "analytic_max_distance_m", search.analytic_max_distance_m);
+  readCount(node, "analytic_interval", search.analytic_interval);
+  readCount(node, "max_expansions", search.max_expansions);
+  readPositive(node, "time_budget_s", search.time_budget_s);
+  node.rejectUnknownKeys();
+  return settings;
+}
+
+}  // namespace ifar::interaction

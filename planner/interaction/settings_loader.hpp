@@ -1,0 +1,27 @@
+#pragma once
+// Reads the `interaction:` section of config/planner.yaml into InteractionSettings. The pusher part comes
+// from vehicle.yaml (bumper width and friction, half width, traction limit); the section can only tune
+// connectivity and search. Every key is optional with the defaults in interaction_settings.hpp.
+//
+//   interaction:
+//     waypoint_offset_m: 0.5       # d_thres of Eq. 1
+//     window_margin_m: 3.0
+//     raster_resolution_m: 0.05
+//     primitive_length_m: 0.4
+//     heading_bins: 72
+//     reference_force_n: 100.0     # J = force x distance / this + travel
+//     max_expansions: 4000
+//     time_budget_s: 0.05
+
+#include "common/config.hpp"
+#include "common/vehicle.hpp"
+#include "planner/interaction/interaction_settings.hpp"
+
+namespace ifar::interaction {
+
+/// `node` is the `interaction` section. Unknown keys and out-of-range values throw common::ConfigError
+/// naming the key.
+InteractionSettings loadInteractionSettings(const common::ConfigNode& node,
+                                            const common::VehicleSettings& vehicle);
+
+}  // namespace ifar::interaction

@@ -1,0 +1,54 @@
+#pragma once
+// The vehicle's CAN nodes as the simulator plays them: the bumper force sensor (a frame every 10 ms) and
+// the two CiA 402 wheel drives (left and right node), built on the drivers' own emulators so the frames
+// are exactly what docs/can_frames.md specifies. Pure: frames and time in, frames out; no bus, no LCM.
+
+#include <cstdint>
+#include <vector>
+
+#include "drivers/can/frame.hpp"
+#include "drivers/force_sensor/force_frame.hpp"
+#include "drivers/motor/drive_emulator.hpp"
+#include "sim/physics/physics_world.hpp"
+
+namespace ifar::sim {
+
+struct CanNodeSettings {
+  std::uint8_t left_node_id = 1;
+  std::uint8_t right_node_id = 2;
+  std::uint32_t force_frame_id = force_sensor::kDefaultFrameId;
+  std::int64_t force_period_us = 10'000;  // 100 Hz
+  double force_range_n = 800.0;           // vehicle.yaml force_sensor_range_n
+  double wheel_radius_m = 0.15;           // vehicle.yaml wheel_radius_m
+};
+
+class VehicleCanNodes {
+ public:
+  explicit VehicleCanNodes(const CanNodeSettings& settings);
+
+  /// A frame received from the bus (NMT, RPDO1 for either drive; others are ignored).
+  void onFrame(const can::Frame& frame, std::int64_t now_us);
+
+  /// Advances to `now_us` with the current bumper force and wheel speeds; returns the frames to send
+  /// (force frames, heartbeats, TPDO1, EMCY) in order.
+  std::vector<can::Frame> update(std::int64_t now_us, double bumper_force_n,
+                                 const physics::WheelSpeeds& actual_wheels);
+
+  /// What the drives are asked for (zero unless operation is enabled), as wheel rim speeds in m/s.
+  physics::WheelSpeeds commandedWheelSpeeds() const;
+  /// True when both drives are operation enabled.
+  bool drivesEnabled() const;
+
+  motor::DriveEmulator& leftDrive() { return left_; }
+  motor::DriveEmulator& rightDrive() { return right_; }
+  force_sensor::ForceSensorEmulator& forceSensor() { return force_sensor_; }
+
+ private:
+  CanNodeSettings settings_;
+  force_sensor::ForceSensorEmulator force_sensor_;
+  motor::DriveEmulator left_;
+  motor::DriveEmulator right_;
+  std::int64_t next_force_us_ = -1;
+};
+
+}  // namespace ifar::sim

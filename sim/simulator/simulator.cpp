@@ -1,0 +1,107 @@
+#include "sim/simulator/simulator.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace ifar::sim {
+namespace {
+
+lidar::Vlp16Settings scannerSettings(const common::VehicleSettings& vehicle,
+                                     const SimulatorSettings& settings)
+{
+  lidar::Vlp16Settings scanner;
+  scanner.rotation_hz = settings.lidar_rotation_hz;
+  scanner.max_range_m = settings.lidar_max_range_m;
+  scanner.mount_x_m = vehicle.lidar_x_m;
+  scanner.mount_height_m = vehicle.lidar_height_m;
+  return scanner;
+}
+
+}  // namespace
+
+Simulator::Simulator(World world, const common::VehicleSettings& vehicle, const SimulatorSettings& settings)
+    : world_(std::move(world)),
+      settings_(settings),
+      physics_(world_, vehicle, settings.physics),
+      scene_(lidar::LidarScene::fromWorld(world_, settings.lidar_scene)),
+      scanner_(scannerSettings(vehicle, settings)),
+      step_ns_(std::llround(settings.physics.step_seconds * 1e9)),
+      random_(settings.seed)
+{
+  if (step_ns_ <= 0) {
+    throw std::invalid_argument("simulator settings: physics step must be at least 1 ns");
+  }
+  scene_.setMovables(movablePrisms());
+}
+
+std::vector<lidar::Prism> Simulator::movablePrisms() const
+{
+  std::vector<lidar::Prism> prisms;
+  const auto states = physics_.objectStates();
+  prisms.reserve(states.size());
+  for (std::size_t index = 0; index < states.size() && index < world_.objects.size(); ++index) {
+    const auto& object = world_.objects[index];
+    lidar::Prism prism;
+    prism.height_m = object.height_m;
+    prism.reflectivity = object.reflectivity;
+    prism.outline.reserve(object.outline.size());
+    for (const auto& point : object.outline) {
+      prism.outline.push_back(states[index].pose.transform(point));
+    }
+    prisms.push_back(std::move(prism));
+  }
+  return prisms;
+}
+
+StepOutput Simulator::step(double dt_seconds)
+{
+  StepOutput output;
+  if (std::isfinite(dt_seconds) && dt_seconds > 0.0) {
+    carried_ns_ += std::llround(dt_seconds * 1e9);
+  }
+  double force_sum = 0.0;
+  int steps = 0;
+  while (carried_ns_ >= step_ns_) {
+    carried_ns_ -= step_ns_;
+    const geometry::Pose2 before = physics_.vehicleState().pose;
+    physics_.step();
+    time_ns_ += step_ns_;
+    force_sum += physics_.bumperForce();
+    ++steps;
+    if (settings_.lidar_enabled) {
+      if (!world_.objects.empty()) {
+        scene_.setMovables(movablePrisms());
+      }
+      auto packets = scanner_.advance(time_ns_, before, physics_.vehicleState().pose, scene_,
+                                      settings_.epoch_utime, record_returns_ ? &returns_ : nullptr);
+      output.packets.insert(output.packets.end(), packets.begin(), packets.end());
+    }
+  }
+  output.time_ns = time_ns_;
+  output.utime = settings_.epoch_utime + time_ns_ / 1000;
+  output.bumper_force_n = steps > 0 ? force_sum / steps : physics_.bumperForce();
+  output.vehicle = physics_.vehicleState();
+  output.objects = physics_.objectStates();
+  output.wheel_speeds = physics_.wheelSpeeds();
+  output.pose_estimate = output.vehicle;
+  if (settings_.pose_noise_position_m > 0.0) {
+    std::normal_distribution<double> position_noise(0.0, settings_.pose_noise_position_m);
+    output.pose_estimate.pose.x += position_noise(random_);
+    output.pose_estimate.pose.y += position_noise(random_);
+  }
+  if (settings_.pose_noise_heading_rad > 0.0) {
+    std::normal_distribution<double> heading_noise(0.0, settings_.pose_noise_heading_rad);
+    output.pose_estimate.pose.heading =
+        geometry::wrapAngle(output.pose_estimate.pose.heading + heading_noise(random_));
+  }
+  return output;
+}
+
+std::vector<lidar::Vlp16Return> Simulator::takeReturns()
+{
+  std::vector<lidar::Vlp16Return> taken;
+  taken.swap(returns_);
+  return taken;
+}
+
+}  // namespace ifar::sim

@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# ifar launch as a real process: prefixed output, respawn with back-off, SIGINT then SIGKILL on stop,
+# a required process that fails ends the launch with exit code 1, a bad launch file exits 2.
+set -euo pipefail
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail() { echo "FAIL: $*"; cat "$work/out" 2>/dev/null || true; exit 1; }
+
+cat > "$work/respawn.yaml" <<'YAML'
+stop_timeout_s: 1
+processes:
+  - name: ticker
+    command: [bash, -c, 'for i in 1 2 3 4 5 6 7 8 9 10; do echo tick $i; sleep 0.2; done']
+  - name: crasher
+    command: [bash, -c, 'echo crashing; exit 3']
+    respawn: true
+    respawn_delay_s: 0.2
+  - name: stubborn
+    command: [bash, -c, 'trap "" INT; echo ignoring INT; while true; do sleep 0.1; done']
+YAML
+status=0
+ifar launch "$work/respawn.yaml" --duration 1.5 --no-colour > "$work/out" 2>&1 || status=$?
+[ $status = 0 ] || fail "respawn launch exited $status"
+grep -q '^ticker   | tick 1$' "$work/out" || fail "ticker output is not prefixed"
+grep -q '^crasher  | crashing$' "$work/out" || fail "crasher output is not prefixed"
+[ "$(grep -c 'crasher exited with code 3' "$work/out")" -ge 3 ] || fail "crasher was not restarted"
+grep -q 'restarting crasher in 0.40 s' "$work/out" || fail "no back-off on repeated crashes"
+grep -q 'ticker killed by signal 2' "$work/out" || fail "ticker did not get SIGINT on stop"
+grep -q 'stubborn did not stop within 1.00 s: killing it' "$work/out" || fail "stubborn process not killed"
+pgrep -f 'trap "" INT; echo ignoring INT' > /dev/null && fail "stubborn process survived"
+
+cat > "$work/required.yaml" <<'YAML'
+processes:
+  - name: long
+    command: [sleep, '30']
+  - name: mission
+    command: [bash, -c, 'echo failing; exit 4']
+    required: true
+YAML
+status=0
+ifar launch "$work/required.yaml" --no-colour > "$work/out" 2>&1 || status=$?
+[ $status = 1 ] || fail "a failed required process gave exit code $status, expected 1"
+grep -q 'stopping: required process mission exited with code 4' "$work/out" || fail "no reason given"
+
+printf 'processes:\n  - name: x\n    comand: [true]\n' > "$work/bad.yaml"
+status=0
+ifar launch "$work/bad.yaml" > "$work/out" 2>&1 || status=$?
+[ $status = 2 ] || fail "bad launch file gave exit code $status, expected 2"
+grep -qF "key 'processes[0].command': missing required key" "$work/out" || fail "bad launch file message"
+echo "PASS: ifar launch supervises, respawns, stops and rejects bad files"

@@ -1,0 +1,65 @@
+#include "executive/modes/executive_settings.hpp"
+
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "executive/modes/executive.hpp"
+
+namespace ifar::executive {
+namespace {
+
+const std::string kConfigPath = std::string(IFAR_SOURCE_DIR) + "/config/executive.yaml";
+const std::string kVehiclePath = std::string(IFAR_SOURCE_DIR) + "/config/vehicle.yaml";
+
+TEST(ExecutiveSettings, LoadsShippedConfig)
+{
+  const common::VehicleSettings vehicle =
+      common::loadVehicleSettings(common::ConfigNode::loadFile(kVehiclePath));
+  const ExecutiveSettings settings = loadExecutiveSettings(common::ConfigNode::loadFile(kConfigPath));
+  EXPECT_DOUBLE_EQ(settings.stale.pose_s, 0.1);
+  EXPECT_DOUBLE_EQ(settings.stale.motor_s, 0.3);
+  EXPECT_DOUBLE_EQ(settings.reference_to_bumper_m, 0.45);
+  const Executive executive(settings, vehicle);
+  const Footprint& footprint = executive.settings().follower.footprint;
+  EXPECT_DOUBLE_EQ(footprint.front_m, 0.45);
+  EXPECT_DOUBLE_EQ(footprint.rear_m, vehicle.length_m - 0.45);
+  EXPECT_DOUBLE_EQ(footprint.half_width_m, vehicle.width_m / 2.0);
+  EXPECT_EQ(settings.follower.angular_samples, 15);
+  EXPECT_DOUBLE_EQ(settings.tactile.no_motion_time_s, 2.0);
+  EXPECT_DOUBLE_EQ(settings.tactile.contact_force_n, settings.approach.contact_force_n);
+}
+
+TEST(ExecutiveSettings, NegativeThresholdNamesTheKey)
+{
+  std::string text = "stale_after_s: {pose: -0.1, path: 1, force: 0.1, motor: 0.3, obstacles: 0.5}\n";
+  try {
+    loadExecutiveSettings(common::ConfigNode::loadString(text, "bad.yaml"));
+    FAIL() << "accepted a negative threshold";
+  } catch (const common::ConfigError& error) {
+    EXPECT_NE(std::string(error.what()).find("stale_after_s.pose"), std::string::npos) << error.what();
+  }
+}
+
+TEST(ExecutiveSettings, UnknownKeyIsRejected)
+{
+  std::ifstream file(kConfigPath);
+  ASSERT_TRUE(file.good()) << kConfigPath;
+  std::stringstream text;
+  text << file.rdbuf() << "surprise_key: 1\n";
+  EXPECT_THROW(loadExecutiveSettings(common::ConfigNode::loadString(text.str(), "extra.yaml")),
+               common::ConfigError);
+}
+
+TEST(ExecutiveSettings, BumperBeyondVehicleLengthIsRejected)
+{
+  ExecutiveSettings settings;
+  settings.reference_to_bumper_m = 1.5;  // the vehicle is 0.9 m long
+  EXPECT_THROW(Executive(settings, common::VehicleSettings{}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace ifar::executive

@@ -1,0 +1,372 @@
+#include "executive/modes/executive.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "executive/follower/arc.hpp"
+#include "tests/unit/executive/simulation.hpp"
+
+namespace ifar::executive {
+namespace {
+
+using geometry::Point;
+using geometry::Pose2;
+
+constexpr std::int64_t kCycleUs = 20'000;  // 50 Hz
+
+Waypoint waypoint(double x, double y, WaypointKind kind = WaypointKind::Free, std::int64_t object_id = -1,
+                  int plan_index = -1)
+{
+  Waypoint result;
+  result.position = Point(x, y);
+  result.kind = kind;
+  result.object_id = object_id;
+  result.push_plan_index = plan_index;
+  return result;
+}
+
+Path straightPath(std::int64_t sequence = 1, std::int64_t planned_us = 0)
+{
+  Path path;
+  path.utime = planned_us;
+  path.goal_id = 5;
+  path.sequence = sequence;
+  path.valid = true;
+  path.waypoints = {waypoint(0.0, 0.0), waypoint(3.0, 0.0)};
+  return path;
+}
+
+/// start -> topological waypoint (1, 0) -> push waypoint (3, 0) -> goal (5, 0); object 9 is pushed along
+/// +x from the contact pose (1.5, 0) for 3 s at 0.3 m/s.
+Path pushPath(std::int64_t sequence = 1, std::int64_t planned_us = 0)
+{
+  Path path = straightPath(sequence, planned_us);
+  PushPlan plan;
+  plan.object_id = 9;
+  plan.contact_pose = {1.5, 0.0, 0.0};
+  PushControl control;
+  control.linear_velocity = 0.3;
+  control.duration_s = 3.0;
+  control.expected_vehicle_pose = {2.4, 0.0, 0.0};
+  plan.controls.push_back(control);
+  plan.expected_force_n = 100.0;
+  plan.push_distance_m = 0.9;
+  plan.travel_m = 1.5;
+  plan.expected_cost = 2.4;
+  plan.affordance = 0.3;
+  path.push_plans.push_back(plan);
+  path.waypoints = {waypoint(0.0, 0.0), waypoint(1.0, 0.0, WaypointKind::Topological, 9, 0),
+                    waypoint(3.0, 0.0, WaypointKind::Push, 9, 0), waypoint(5.0, 0.0)};
+  return path;
+}
+
+class ExecutiveTest : public ::testing::Test {
+ protected:
+  ExecutiveTest() : executive_(settings_, vehicle_) {}
+
+  /// Every input fresh at `now_us`, the vehicle at `pose_`, no obstacles.
+  Inputs freshInputs(std::int64_t now_us, const Path& path, double force_n = 0.0) const
+  {
+    Inputs inputs;
+    inputs.pose = Stamped<Pose2>{pose_, now_us};
+    inputs.path = Stamped<Path>{path, now_us};
+    inputs.force = Stamped<ForceReading>{ForceReading{force_n, false}, now_us};
+    inputs.motor = Stamped<MotorReading>{MotorReading{true, false, ""}, now_us};
+    inputs.obstacles = Stamped<std::vector<Point>>{{}, now_us};
+    return inputs;
+  }
+
+  /// Runs `cycles` control cycles with fresh inputs, moving the vehicle by the command (unless stalled).
+  Output run(int cycles, const Path& path, double force_n = 0.0, bool stalled = false)
+  {
+    Output output;
+    for (int cycle = 0; cycle < cycles; ++cycle) {
+      now_us_ += kCycleUs;
+      output = executive_.step(now_us_, freshInputs(now_us_, path, force_n));
+      modes_.push_back(output.status.mode);
+      if (output.affordance) {
+        events_.push_back(*output.affordance);
+      }
+      if (!stalled) {
+        pose_ = testing::drive(pose_, output.command, kCycleUs * 1e-6);
+      }
+    }
+    return output;
+  }
+
+  bool visited(Mode mode) const { return std::find(modes_.begin(), modes_.end(), mode) != modes_.end(); }
+
+  ExecutiveSettings settings_;
+  common::VehicleSettings vehicle_;
+  Executive executive_;
+  Pose2 pose_{0.0, 0.0, 0.0};
+  std::int64_t now_us_ = 1'000'000'000;
+  std::vector<Mode> modes_;
+  std::vector<AffordanceEvent> events_;
+};
+
+TEST_F(ExecutiveTest, IdleWithoutPath)
+{
+  Inputs inputs = freshInputs(now_us_, straightPath());
+  inputs.path.reset();
+  const Output output = executive_.step(now_us_, inputs);
+  EXPECT_EQ(output.status.mode, Mode::Idle);
+  EXPECT_TRUE(output.command.isZero());
+  EXPECT_EQ(output.status.stale, kStalePath);
+  EXPECT_EQ(output.status.waypoint_index, -1);
+}
+
+TEST_F(ExecutiveTest, FollowsPathThenArrives)
+{
+  const Output first = run(1, straightPath());
+  EXPECT_EQ(first.status.mode, Mode::Follow);
+  EXPECT_TRUE(first.mode_changed);
+  EXPECT_EQ(first.status.goal_id, 5);
+  const Output moving = run(25, straightPath());
+  EXPECT_GT(moving.command.linear, 0.3);
+  EXPECT_LE(moving.command.linear, vehicle_.max_linear_velocity);
+  const Output last = run(500, straightPath());
+  EXPECT_EQ(last.status.mode, Mode::Arrived);
+  EXPECT_TRUE(last.command.isZero());
+  EXPECT_NEAR(pose_.x, 3.0, settings_.goal_tolerance_m);
+}
+
+TEST_F(ExecutiveTest, AccelerationIsLimited)
+{
+  run(1, straightPath());
+  const Output second = run(1, straightPath());
+  EXPECT_LE(second.command.linear, vehicle_.max_linear_acceleration * kCycleUs * 1e-6 + 1e-12);
+}
+
+TEST_F(ExecutiveTest, InvalidPathStopsWithReason)
+{
+  Path path = straightPath();
+  path.valid = false;
+  path.waypoints.clear();
+  const Output output = run(1, path);
+  EXPECT_EQ(output.status.mode, Mode::Stop);
+  EXPECT_TRUE(output.command.isZero());
+  EXPECT_NE(output.status.reason.find("no path to goal 5"), std::string::npos) << output.status.reason;
+  const Output recovered = run(1, straightPath(2));
+  EXPECT_EQ(recovered.status.mode, Mode::Follow);
+}
+
+TEST_F(ExecutiveTest, EStopStopsAtOnceAndReleases)
+{
+  const Output moving = run(30, straightPath());
+  ASSERT_GT(moving.command.linear, 0.0);
+  now_us_ += kCycleUs;
+  Inputs inputs = freshInputs(now_us_, straightPath());
+  inputs.e_stop = Stamped<EStopSignal>{EStopSignal{true, "operator", "test"}, now_us_};
+  const Output stopped = executive_.step(now_us_, inputs);
+  EXPECT_EQ(stopped.status.mode, Mode::EStop);
+  EXPECT_TRUE(stopped.command.isZero());
+  EXPECT_DOUBLE_EQ(stopped.wheels.left, 0.0);
+  EXPECT_NE(stopped.status.reason.find("operator"), std::string::npos);
+
+  now_us_ += kCycleUs;
+  inputs = freshInputs(now_us_, straightPath());
+  inputs.e_stop = Stamped<EStopSignal>{EStopSignal{false, "operator", "released"}, now_us_};
+  const Output released = executive_.step(now_us_, inputs);
+  EXPECT_EQ(released.status.mode, Mode::Follow);
+}
+
+/// Which input to let go stale; its threshold; its bit.
+struct StaleCase {
+  const char* name;
+  double threshold_s;
+  std::int32_t bit;
+};
+
+class StaleInputTest : public ExecutiveTest, public ::testing::WithParamInterface<StaleCase> {};
+
+TEST_P(StaleInputTest, ZeroCommandWithinOneCycleAfterThreshold)
+{
+  const StaleCase stale = GetParam();
+  const Output moving = run(30, straightPath());
+  ASSERT_GT(moving.command.linear, 0.0);
+  const std::int64_t last_fresh_us = now_us_;
+
+  // Keep everything else fresh; hold the chosen input's stamp.
+  const auto inputs_at = [&](std::int64_t now_us) {
+    Inputs inputs = freshInputs(now_us, straightPath());
+    const std::string name = stale.name;
+    if (name == "pose") {
+      inputs.pose->utime = last_fresh_us;
+    } else if (name == "path") {
+      inputs.path->utime = last_fresh_us;
+    } else if (name == "force") {
+      inputs.force->utime = last_fresh_us;
+    } else {
+      inputs.motor->utime = last_fresh_us;
+    }
+    return inputs;
+  };
+  const std::int64_t threshold_us = static_cast<std::int64_t>(std::llround(stale.threshold_s * 1e6));
+  const Output before =
+      executive_.step(last_fresh_us + threshold_us, inputs_at(last_fresh_us + threshold_us));
+  EXPECT_EQ(before.status.mode, Mode::Follow);
+  EXPECT_FALSE(before.command.isZero());
+  const std::int64_t after_us = last_fresh_us + threshold_us + kCycleUs;
+  const Output after = executive_.step(after_us, inputs_at(after_us));
+  EXPECT_EQ(after.status.mode, Mode::Stop);
+  EXPECT_TRUE(after.command.isZero());
+  EXPECT_EQ(after.status.stale, stale.bit);
+  EXPECT_NE(after.status.reason.find(stale.name), std::string::npos) << after.status.reason;
+
+  // Fresh again: the vehicle goes on.
+  const Output resumed = run(1, straightPath());
+  EXPECT_EQ(resumed.status.mode, Mode::Follow);
+  EXPECT_EQ(resumed.status.stale, 0);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    EachInput, StaleInputTest,
+    ::testing::Values(StaleCase{"pose", 0.1, kStalePose}, StaleCase{"path", 1.0, kStalePath},
+                      StaleCase{"force", 0.1, kStaleForce}, StaleCase{"motor", 0.3, kStaleMotor}),
+    [](const ::testing::TestParamInfo<StaleCase>& param_info) { return std::string(param_info.param.name); });
+
+TEST_F(ExecutiveTest, MotorFaultStopsWithMotorReason)
+{
+  run(10, straightPath());
+  now_us_ += kCycleUs;
+  Inputs inputs = freshInputs(now_us_, straightPath());
+  inputs.motor->value = MotorReading{true, true, "EMCY 0x2310 over-current"};
+  const Output output = executive_.step(now_us_, inputs);
+  EXPECT_EQ(output.status.mode, Mode::Stop);
+  EXPECT_TRUE(output.command.isZero());
+  EXPECT_NE(output.status.reason.find("over-current"), std::string::npos) << output.status.reason;
+}
+
+TEST_F(ExecutiveTest, FaultyForceSensorStops)
+{
+  run(10, straightPath());
+  now_us_ += kCycleUs;
+  Inputs inputs = freshInputs(now_us_, straightPath());
+  inputs.force->value.faulty = true;
+  const Output output = executive_.step(now_us_, inputs);
+  EXPECT_EQ(output.status.mode, Mode::Stop);
+  EXPECT_EQ(output.status.stale, kStaleForce);
+}
+
+TEST_F(ExecutiveTest, FollowApproachPushFollowArrive)
+{
+  // The bumper feels 100 N while pushing (the object slides as planned), nothing otherwise. The vehicle
+  // starts 3 m before the topological waypoint, beyond the switch radius.
+  pose_ = {-2.0, 0.0, 0.0};
+  const Path path = pushPath();
+  Output output;
+  int pushes_seen = 0;
+  for (int cycle = 0; cycle < 3000 && output.status.mode != Mode::Arrived; ++cycle) {
+    const double force = executive_.mode() == Mode::Push ? 100.0 : 0.0;
+    output = run(1, path, force);
+    if (output.status.mode == Mode::Push) {
+      EXPECT_EQ(output.status.target_object_id, 9);
+    }
+    pushes_seen = output.status.pushes;
+  }
+  EXPECT_EQ(output.status.mode, Mode::Arrived);
+  EXPECT_TRUE(visited(Mode::Follow));
+  EXPECT_TRUE(visited(Mode::Approach));
+  EXPECT_TRUE(visited(Mode::Push));
+  EXPECT_EQ(pushes_seen, 1);
+  EXPECT_TRUE(events_.empty());  // cost as planned: nothing to report
+  // In order: follow, approach, push, follow again, arrived.
+  const auto first = [this](Mode mode) {
+    return std::find(modes_.begin(), modes_.end(), mode) - modes_.begin();
+  };
+  EXPECT_LT(first(Mode::Follow), first(Mode::Approach));
+  EXPECT_LT(first(Mode::Approach), first(Mode::Push));
+  EXPECT_LT(first(Mode::Push), first(Mode::Arrived));
+}
+
+TEST_F(ExecutiveTest, UnpushableObjectWaitsForReplan)
+{
+  const Path path = pushPath(1, now_us_);
+  // Drive to the contact first.
+  for (int cycle = 0; cycle < 3000 && executive_.mode() != Mode::Push; ++cycle) {
+    run(1, path);
+  }
+  ASSERT_EQ(executive_.mode(), Mode::Push);
+  // The object does not move: the vehicle stalls at the maximum force.
+  const double stall_force = 0.95 * vehicle_.maxPushForce();
+  Output output;
+  int cycles_to_event = 0;
+  while (events_.empty() && cycles_to_event < 500) {
+    output = run(1, path, stall_force, true);
+    ++cycles_to_event;
+  }
+  ASSERT_EQ(events_.size(), 1u);
+  EXPECT_FALSE(events_[0].pushable);
+  EXPECT_EQ(events_[0].object_id, 9);
+  EXPECT_EQ(events_[0].reason, AffordanceReason::NoMotion);
+  EXPECT_NEAR(cycles_to_event * kCycleUs * 1e-6, settings_.tactile.no_motion_time_s, 0.05);
+  EXPECT_EQ(output.status.mode, Mode::ReplanWait);
+  EXPECT_TRUE(output.command.isZero());
+  EXPECT_EQ(output.status.replans, 1);
+
+  // A resend of the old plan does not end the wait; a path planned after the event does.
+  const Output still = run(5, pushPath(2, now_us_ - 10 * kCycleUs), 0.0);
+  EXPECT_EQ(still.status.mode, Mode::ReplanWait);
+  Path detour = straightPath(3, now_us_ + kCycleUs);
+  detour.waypoints = {waypoint(pose_.x, pose_.y), waypoint(pose_.x, 2.0), waypoint(5.0, 2.0)};
+  const Output replanned = run(1, detour);
+  EXPECT_EQ(replanned.status.mode, Mode::Follow);
+  EXPECT_EQ(replanned.status.replans, 1);
+}
+
+TEST_F(ExecutiveTest, HigherCostWhilePushingWaitsForReplan)
+{
+  const Path path = pushPath(1, now_us_);
+  for (int cycle = 0; cycle < 3000 && executive_.mode() != Mode::Push; ++cycle) {
+    run(1, path);
+  }
+  ASSERT_EQ(executive_.mode(), Mode::Push);
+  Output output;
+  for (int cycle = 0; cycle < 300 && events_.empty(); ++cycle) {
+    output = run(1, path, 300.0);  // three times the planned force, still sliding
+  }
+  ASSERT_EQ(events_.size(), 1u);
+  EXPECT_TRUE(events_[0].pushable);
+  EXPECT_EQ(events_[0].reason, AffordanceReason::CostHigher);
+  EXPECT_NEAR(events_[0].measured_cost, 1.5 + 0.9 * 3.0, 0.05);  // travel + planned push part x 3
+  EXPECT_EQ(output.status.mode, Mode::ReplanWait);
+}
+
+TEST_F(ExecutiveTest, ReplanWaitTimesOutIntoStop)
+{
+  const Path path = pushPath(1, now_us_);
+  for (int cycle = 0; cycle < 3000 && executive_.mode() != Mode::Push; ++cycle) {
+    run(1, path);
+  }
+  for (int cycle = 0; cycle < 500 && executive_.mode() != Mode::ReplanWait; ++cycle) {
+    run(1, path, vehicle_.maxPushForce(), true);
+  }
+  ASSERT_EQ(executive_.mode(), Mode::ReplanWait);
+  const int timeout_cycles = static_cast<int>(settings_.replan_timeout_s / (kCycleUs * 1e-6)) + 2;
+  const Output output = run(timeout_cycles, path);
+  EXPECT_EQ(output.status.mode, Mode::Stop);
+  EXPECT_NE(output.status.reason.find("no replanned path"), std::string::npos) << output.status.reason;
+}
+
+TEST_F(ExecutiveTest, StaleInputDuringPushResumesThroughFollow)
+{
+  const Path path = pushPath();
+  for (int cycle = 0; cycle < 3000 && executive_.mode() != Mode::Push; ++cycle) {
+    run(1, path);
+  }
+  ASSERT_EQ(executive_.mode(), Mode::Push);
+  now_us_ += kCycleUs;
+  Inputs inputs = freshInputs(now_us_, path, 100.0);
+  inputs.pose->utime = now_us_ - 1'000'000;
+  EXPECT_EQ(executive_.step(now_us_, inputs).status.mode, Mode::Stop);
+  const Output resumed = run(1, path, 100.0);
+  EXPECT_NE(resumed.status.mode, Mode::Push);
+  EXPECT_NE(resumed.status.mode, Mode::Stop);
+}
+
+}  // namespace
+}  // namespace ifar::executive

@@ -1,0 +1,184 @@
+#include <algorithm>
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "executive/follower/arc.hpp"
+#include "executive/pusher/approach.hpp"
+#include "executive/pusher/push_tracker.hpp"
+#include "tests/unit/executive/simulation.hpp"
+
+namespace ifar::executive {
+namespace {
+
+using geometry::Pose2;
+
+PushControl pushFor(const Pose2& start, double linear, double angular, double duration)
+{
+  PushControl control;
+  control.kind = PushControlKind::Push;
+  control.linear_velocity = linear;
+  control.angular_velocity = angular;
+  control.duration_s = duration;
+  control.expected_vehicle_pose = integrateArc(start, linear, angular, duration);
+  return control;
+}
+
+class PusherTest : public ::testing::Test {
+ protected:
+  common::VehicleSettings vehicle_;
+  DifferentialDrive drive_{vehicle_};
+  FollowerSettings follower_;
+  ApproachSettings approach_;
+  PushTrackerSettings tracker_settings_;
+};
+
+TEST(ProjectOntoArc, StraightArcAndSpin)
+{
+  const Pose2 start{1.0, 1.0, 0.0};
+  EXPECT_NEAR(projectOntoArc(start, 0.5, 0.0, 0.0, {2.0, 1.3, 0.0}), 2.0, 1e-12);
+  // Quarter circle of radius 1 left: after pi/2 s at (0, 1) rad/s... position angle advances with time.
+  const Pose2 origin{0.0, 0.0, 0.0};
+  const Pose2 quarter = integrateArc(origin, 1.0, 1.0, 1.2);
+  EXPECT_NEAR(projectOntoArc(origin, 1.0, 1.0, 1.0, quarter), 1.2, 1e-9);
+  const Pose2 more_than_half = integrateArc(origin, 1.0, 1.0, 4.0);  // past pi: needs the search hint
+  EXPECT_NEAR(projectOntoArc(origin, 1.0, 1.0, 3.8, more_than_half), 4.0, 1e-9);
+  EXPECT_NEAR(projectOntoArc(origin, 0.0, 0.5, 0.0, {0.0, 0.0, 0.4}), 0.8, 1e-9);
+}
+
+TEST_F(PusherTest, TracksStraightPushFromOffsetStart)
+{
+  PushPlan plan;
+  plan.object_id = 7;
+  plan.contact_pose = {0.0, 0.0, 0.0};
+  plan.controls.push_back(pushFor(plan.contact_pose, 0.3, 0.0, 6.0));  // 1.8 m along +x
+
+  PushTracker tracker;
+  tracker.begin(plan);
+  Pose2 pose{0.0, 0.08, 0.1};  // 8 cm left of the lane, turned 0.1 rad
+  Pose2 end_of_push = pose;
+  double worst_late_cross_track = 0.0;
+  bool pushing_done = false;
+  int step = 0;
+  for (; step < 2000 && !tracker.finished(); ++step) {
+    const PushStep result = tracker.step(pose, 100.0, {}, tracker_settings_, approach_, follower_, drive_);
+    if (result.phase == PushPhase::Pushing) {
+      EXPECT_TRUE(result.expects_contact);
+      if (pose.x > 1.2) {  // converged within the first 1.2 m
+        worst_late_cross_track = std::max(worst_late_cross_track, std::abs(pose.y));
+      }
+      end_of_push = pose;
+    } else if (result.phase == PushPhase::Releasing) {
+      pushing_done = true;
+      EXPECT_LT(result.command.linear, 0.0);
+    }
+    pose = testing::drive(pose, drive_.limitSpeed(result.command), 0.02);
+  }
+  EXPECT_TRUE(tracker.finished());
+  EXPECT_TRUE(pushing_done);
+  EXPECT_LT(worst_late_cross_track, 0.02);
+  EXPECT_NEAR(end_of_push.x, 1.8, 0.05);
+  EXPECT_NEAR(end_of_push.y, 0.0, 0.02);
+  EXPECT_NEAR(end_of_push.heading, 0.0, 0.03);
+  EXPECT_NEAR(pose.x, 1.8 - tracker_settings_.release_m, 0.05);  // backed away from the object
+}
+
+TEST_F(PusherTest, TracksCurvedPush)
+{
+  PushPlan plan;
+  plan.contact_pose = {1.0, 2.0, 0.5};
+  plan.controls.push_back(pushFor(plan.contact_pose, 0.3, 0.15, 5.0));
+  const Pose2 expected = plan.controls.back().expected_vehicle_pose;
+
+  PushTracker tracker;
+  tracker.begin(plan);
+  Pose2 pose = plan.contact_pose;
+  Pose2 end_of_push = pose;
+  for (int step = 0; step < 2000 && !tracker.finished(); ++step) {
+    const PushStep result = tracker.step(pose, 100.0, {}, tracker_settings_, approach_, follower_, drive_);
+    if (result.phase == PushPhase::Pushing) {
+      end_of_push = pose;
+    }
+    pose = testing::drive(pose, drive_.limitSpeed(result.command), 0.02);
+  }
+  ASSERT_TRUE(tracker.finished());
+  EXPECT_NEAR(end_of_push.x, expected.x, 0.03);
+  EXPECT_NEAR(end_of_push.y, expected.y, 0.03);
+  EXPECT_NEAR(end_of_push.heading, expected.heading, 0.03);
+}
+
+TEST_F(PusherTest, SwitchesContactBetweenPushes)
+{
+  PushPlan plan;
+  plan.contact_pose = {0.0, 0.0, 0.0};
+  plan.controls.push_back(pushFor(plan.contact_pose, 0.3, 0.0, 2.0));  // to (0.6, 0)
+  PushControl switch_contact;
+  switch_contact.kind = PushControlKind::SwitchContact;
+  switch_contact.contact_edge = 1;
+  switch_contact.expected_vehicle_pose = {1.2, -1.0, 1.5707963267948966};  // push from below, along +y
+  plan.controls.push_back(switch_contact);
+  plan.controls.push_back(pushFor(switch_contact.expected_vehicle_pose, 0.3, 0.0, 2.0));  // to (1.2, -0.4)
+
+  PushTracker tracker;
+  tracker.begin(plan);
+  Pose2 pose = plan.contact_pose;
+  bool backed_off = false;
+  bool switched = false;
+  Pose2 end_of_push = pose;
+  for (int step = 0; step < 5000 && !tracker.finished(); ++step) {
+    const PushStep result = tracker.step(pose, 0.0, {}, tracker_settings_, approach_, follower_, drive_);
+    backed_off = backed_off || result.phase == PushPhase::BackingOff;
+    switched = switched || result.phase == PushPhase::Switching;
+    if (result.phase == PushPhase::Pushing && result.control_index == 2) {
+      end_of_push = pose;
+    }
+    pose = testing::drive(pose, drive_.limitSpeed(result.command), 0.02);
+  }
+  ASSERT_TRUE(tracker.finished());
+  EXPECT_TRUE(backed_off);
+  EXPECT_TRUE(switched);
+  EXPECT_NEAR(end_of_push.x, 1.2, 0.05);
+  EXPECT_NEAR(end_of_push.y, -0.4, 0.05);
+}
+
+TEST_F(PusherTest, ApproachReachesContactPose)
+{
+  const Pose2 contact{2.0, 1.0, 0.3};
+  Approach approach;
+  Pose2 pose{-2.0, -1.0, 2.0};
+  approach.begin(contact, pose, approach_);
+  EXPECT_EQ(approach.phase(), ApproachPhase::ToStandoff);
+  bool crept = false;
+  int step = 0;
+  for (; step < 5000; ++step) {
+    const ApproachStep result = approach.step(pose, 0.0, {}, approach_, follower_, drive_);
+    if (result.phase == ApproachPhase::Done) {
+      break;
+    }
+    crept = crept || result.phase == ApproachPhase::Creep;
+    pose = testing::drive(pose, drive_.limitSpeed(result.command), 0.02);
+  }
+  EXPECT_TRUE(crept);
+  EXPECT_LT(step, 5000);
+  EXPECT_NEAR(pose.x, contact.x, 0.06);
+  EXPECT_NEAR(pose.y, contact.y, 0.06);
+  EXPECT_NEAR(pose.heading, contact.heading, 0.06);
+}
+
+TEST_F(PusherTest, ApproachEndsOnContactForce)
+{
+  const Pose2 contact{1.0, 0.0, 0.0};
+  Approach approach;
+  const Pose2 pose{0.7, 0.0, 0.0};  // in the lane, 0.3 m short
+  approach.begin(contact, pose, approach_);
+  EXPECT_EQ(approach.phase(), ApproachPhase::Align);
+  const ApproachStep creeping = approach.step(pose, 0.0, {}, approach_, follower_, drive_);
+  EXPECT_EQ(creeping.phase, ApproachPhase::Creep);
+  EXPECT_GT(creeping.command.linear, 0.0);
+  const ApproachStep touching = approach.step(pose, 50.0, {}, approach_, follower_, drive_);
+  EXPECT_EQ(touching.phase, ApproachPhase::Done);
+  EXPECT_TRUE(touching.command.isZero());
+}
+
+}  // namespace
+}  // namespace ifar::executive

@@ -1,0 +1,226 @@
+#include <cmath>
+#include <limits>
+
+#include <gtest/gtest.h>
+
+#include "planner/graph/prior_map.hpp"
+#include "planner/graph/search.hpp"
+#include "planner/graph/visibility_builder.hpp"
+#include "tests/unit/graph/test_maps.hpp"
+
+namespace ifar::graph {
+namespace {
+
+using geometry::Point;
+using testing::mapFromRows;
+
+SearchResult plan(const PriorMap& prior, const Point& start, const Point& goal)
+{
+  SearchScratch scratch;
+  return findPath(SearchGraph::fromDvGraph(prior.graph), prior.obstacles, start, goal, scratch);
+}
+
+TEST(Search, AroundOneBlockedCell)
+{
+  const PriorMap prior = buildPriorMap(mapFromRows({"...", ".@.", "..."}), 0.0);
+  EXPECT_EQ(prior.graph.vertexCount(), 4u);  // the cell's corners; the rim has no convex corner
+  const auto result = plan(prior, Point(0, 0), Point(3, 3));
+  ASSERT_EQ(result.status, SearchStatus::Found);
+  EXPECT_NEAR(result.length, 2.0 * std::sqrt(5.0), 1e-12);
+  ASSERT_EQ(result.path.size(), 3u);
+  EXPECT_TRUE(result.path[1].position == Point(1, 2) || result.path[1].position == Point(2, 1));
+}
+
+TEST(Search, GrazingACornerIsAllowed)
+{
+  // (1,3) -> (3,1) touches the corner (2,2) of the blocked cell (1,1) only.
+  const PriorMap prior = buildPriorMap(mapFromRows({"....", ".@..", "....", "...."}), 0.0);
+  const auto result = plan(prior, Point(1, 3), Point(3, 1));
+  ASSERT_EQ(result.status, SearchStatus::Found);
+  EXPECT_NEAR(result.length, 2.0 * std::sqrt(2.0), 1e-12);
+  EXPECT_EQ(result.path.size(), 2u);
+}
+
+TEST(Search, NoSqueezingBetweenDiagonalCells)
+{
+  // Same query, but (2,2) now also blocks: the corner is where two blocked cells touch diagonally.
+  const PriorMap prior = buildPriorMap(mapFromRows({"....", ".@..", "..@.", "...."}), 0.0);
+  const auto result = plan(prior, Point(1, 3), Point(3, 1));
+  ASSERT_EQ(result.status, SearchStatus::Found);
+  EXPECT_NEAR(result.length, 4.0, 1e-12);
+}
+
+TEST(Search, RunningAlongAWallIsAllowed)
+{
+  const PriorMap prior = buildPriorMap(mapFromRows({".....", ".@@@.", "....."}), 0.0);
+  const auto result = plan(prior, Point(0, 1), Point(5, 1));
+  ASSERT_EQ(result.status, SearchStatus::Found);
+  EXPECT_NEAR(result.length, 5.0, 1e-12);
+}
+
+TEST(Search, ThroughAWallIsRefused)
+{
+  // A vertical wall with one gap at the bottom: the path must go down and around.
+  const PriorMap prior = buildPriorMap(mapFromRows({"..@..", "..@..", "..@..", "....."}), 0.0);
+  const auto result = plan(prior, Point(0, 0), Point(5, 0));
+  ASSERT_EQ(result.status, SearchStatus::Found);
+  EXPECT_NEAR(result.length, 2.0 * std::hypot(2.0, 3.0) + 1.0, 1e-12);  // via the wall's ends (2,3), (3,3)
+}
+
+TEST(Search, EnclosedGoalHasNoPath)
+{
+  const PriorMap prior = buildPriorMap(mapFromRows({"@.", ".@"}), 0.0);
+  // The only way from (0,2) to (2,0) is through the diagonal touch at (1,1).
+  EXPECT_EQ(plan(prior, Point(0, 2), Point(2, 0)).status, SearchStatus::NoPath);
+}
+
+TEST(Search, GoalInsideObstacleIsSnapped)
+{
+  const PriorMap prior = buildPriorMap(mapFromRows({".....", ".@@@.", ".@@@.", ".@@@.", "....."}), 0.0);
+  const auto result = plan(prior, Point(0, 0), Point(2.5, 1.4));
+  ASSERT_EQ(result.status, SearchStatus::Found);
+  EXPECT_TRUE(result.goal_snapped);
+  EXPECT_FALSE(result.start_snapped);
+  EXPECT_NEAR(result.goal.x(), 2.5, 1e-12);
+  EXPECT_NEAR(result.goal.y(), 1.0, 1e-12);  // nearest boundary point: the block's top side
+  EXPECT_NEAR(result.length, std::hypot(2.5, 1.0), 1e-12);
+}
+
+TEST(Search, GoalOffTheMapIsFlagged)
+{
+  const PriorMap prior = buildPriorMap(mapFromRows({"...", "...", "..."}), 0.0);
+  EXPECT_EQ(plan(prior, Point(1, 1), Point(7, 1)).status, SearchStatus::GoalOffMap);
+  EXPECT_EQ(plan(prior, Point(-1, 1), Point(1, 1)).status, SearchStatus::StartOffMap);
+}
+
+TEST(Search, NonFiniteInputsRejected)
+{
+  const PriorMap prior = buildPriorMap(mapFromRows({"...", ".@.", "..."}), 0.0);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double infinity = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(plan(prior, Point(nan, 0), Point(3, 3)).status, SearchStatus::InvalidStart);
+  EXPECT_EQ(plan(prior, Point(0, 0), Point(3, infinity)).status, SearchStatus::InvalidGoal);
+}
+
+TEST(Search, InteractionEdgeTakenWhenCheaper)
+{
+  // Two free corridors joined only far away; an interaction edge across the wall is cheaper.
+  PriorMap prior = buildPriorMap(mapFromRows({"........", "@@@@@@@.", "........"}), 0.0);
+  const auto detour = plan(prior, Point(0, 0), Point(0, 3));
+  ASSERT_EQ(detour.status, SearchStatus::Found);
+  Vertex waypoint;
+  waypoint.kind = VertexKind::TopologicalWaypoint;
+  waypoint.object_id = 7;
+  waypoint.position = Point(0.5, 0.5);
+  const VertexId above = prior.graph.addVertex(waypoint);
+  waypoint.position = Point(0.5, 2.5);
+  const VertexId below = prior.graph.addVertex(waypoint);
+  ASSERT_TRUE(prior.graph.addInteractionEdge(InteractionEdge{above, below, 7, 3.0, 42}).has_value());
+  const auto pushed = plan(prior, Point(0, 0), Point(0, 3));
+  ASSERT_EQ(pushed.status, SearchStatus::Found);
+  EXPECT_LT(pushed.cost, detour.cost);
+  EXPECT_NEAR(pushed.cost, 2.0 * std::hypot(0.5, 0.5) + 3.0, 1e-12);
+  bool saw_push = false;
+  for (const auto& point : pushed.path) {
+    if (point.interaction != kNoInteraction) {
+      saw_push = true;
+      EXPECT_EQ(point.object_id, 7);
+      EXPECT_EQ(point.push_plan, 42u);
+      EXPECT_EQ(point.vertex, below);
+    }
+  }
+  EXPECT_TRUE(saw_push);
+  // Once the object is known to be unpushable its edges go and the detour is back.
+  EXPECT_EQ(prior.graph.removeInteractionEdges(7), 1u);
+  EXPECT_NEAR(plan(prior, Point(0, 0), Point(0, 3)).cost, detour.cost, 1e-12);
+}
+
+TEST(Search, ScratchReusedAcrossGraphs)
+{
+  const PriorMap small = buildPriorMap(mapFromRows({"...", ".@.", "..."}), 0.0);
+  const PriorMap larger = buildPriorMap(mapFromRows({".....", ".@.@.", ".....", ".@.@.", "....."}), 0.0);
+  SearchScratch scratch;
+  const auto small_graph = SearchGraph::fromDvGraph(small.graph);
+  const auto larger_graph = SearchGraph::fromDvGraph(larger.graph);
+  for (int round = 0; round < 3; ++round) {
+    EXPECT_NEAR(findPath(small_graph, small.obstacles, Point(0, 0), Point(3, 3), scratch).length,
+                2.0 * std::sqrt(5.0), 1e-12);
+    EXPECT_NEAR(findPath(larger_graph, larger.obstacles, Point(1, 0), Point(1, 5), scratch).length, 5.0,
+                1e-12);
+  }
+}
+
+}  // namespace
+}  // namespace ifar::graph
+
+namespace ifar::graph {
+namespace {
+
+TEST(Search, PerceptionPolygonsInEitherOrientation)
+{
+  // A clockwise square (as a contour tracer may give it) blocks like a counter-clockwise one.
+  const geometry::Polygon clockwise = {Point(1, 1), Point(1, 3), Point(3, 3), Point(3, 1)};
+  const ObstacleSet obstacles({loopFromPolygon(clockwise, 5)});
+  EXPECT_EQ(obstacles.loops().front().object_id, 5);
+  EXPECT_FALSE(obstacles.visible(Point(0, 2), Point(4, 2)));
+  EXPECT_TRUE(obstacles.visible(Point(0, 3), Point(4, 3)));  // along the side
+  EXPECT_TRUE(obstacles.isBlocked(Point(2, 2)));
+  EXPECT_FALSE(obstacles.isBlocked(Point(0, 0)));
+  DvGraph graph;
+  addReducedVisibilityGraph(obstacles, graph);
+  EXPECT_EQ(graph.vertexCount(), 4u);
+  EXPECT_EQ(graph.visibilityEdgeCount(), 4u);  // the sides; the diagonals cross the inside
+  SearchScratch scratch;
+  const auto result = findPath(SearchGraph::fromDvGraph(graph), obstacles, Point(0, 2), Point(4, 2), scratch);
+  ASSERT_EQ(result.status, SearchStatus::Found);
+  EXPECT_NEAR(result.length, 2.0 * std::sqrt(2.0) + 2.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace ifar::graph
+
+namespace ifar::graph {
+namespace {
+
+TEST(Search, WaypointConnectedByVisibility)
+{
+  PriorMap prior = buildPriorMap(testing::mapFromRows({".....", ".@.@.", "....."}), 0.0);
+  Vertex waypoint;
+  waypoint.kind = VertexKind::TopologicalWaypoint;
+  waypoint.position = Point(2.5, 1.5);  // in the gap between the two blocked cells
+  const VertexId id = prior.graph.addVertex(waypoint);
+  // It sees the four corners facing the gap and the four outer ones along the rows above and below...
+  const std::size_t added = connectByVisibility(prior.obstacles, prior.graph, id);
+  EXPECT_EQ(added, prior.graph.visibilityLinks(id).size());
+  EXPECT_GE(added, 4u);
+  for (const auto& link : prior.graph.visibilityLinks(id)) {
+    const Vertex* other = prior.graph.vertex(link.other);
+    ASSERT_NE(other, nullptr);
+    EXPECT_TRUE(prior.obstacles.visible(waypoint.position, other->position));
+  }
+  EXPECT_EQ(connectByVisibility(prior.obstacles, prior.graph, id), 0u);  // idempotent
+  EXPECT_EQ(connectByVisibility(prior.obstacles, prior.graph, kNoVertex), 0u);
+}
+
+}  // namespace
+}  // namespace ifar::graph
+
+namespace ifar::graph {
+namespace {
+
+TEST(ObstacleSet, NonFiniteAndFarPointsHandled)
+{
+  const ObstacleSet obstacles({loopFromPolygon({Point(1, 1), Point(3, 1), Point(3, 3), Point(1, 3)})});
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  BlockerCache cache;
+  EXPECT_FALSE(obstacles.visible(Point(nan, 0), Point(4, 4)));
+  EXPECT_FALSE(obstacles.visible(Point(0, 0), Point(4, std::numeric_limits<double>::infinity()), cache));
+  EXPECT_TRUE(obstacles.isBlocked(Point(nan, 1)));
+  EXPECT_FALSE(obstacles.isBlocked(Point(1e300, 2)));
+  EXPECT_FALSE(obstacles.isBlocked(Point(-1e300, -1e300)));
+  EXPECT_TRUE(obstacles.visible(Point(-1e12, 0), Point(1e12, 0)));
+  EXPECT_FALSE(obstacles.visible(Point(-1e6, 2), Point(1e6, 2)));
+}
+
+}  // namespace
+}  // namespace ifar::graph

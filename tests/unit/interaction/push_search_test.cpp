@@ -1,0 +1,266 @@
+#include "planner/interaction/push_search.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "planner/interaction/convex_polygon.hpp"
+#include "planner/interaction/interaction_planner.hpp"
+#include "tests/unit/interaction/scenes.hpp"
+
+namespace ifar::interaction {
+namespace {
+
+using geometry::Point;
+using geometry::Pose2;
+using test::rectangle;
+
+InteractionSettings defaultSettings()
+{
+  InteractionSettings settings;
+  settings.pusher = PusherSettings::fromVehicle(common::VehicleSettings{});
+  settings.search.time_budget_s = 1.0;  // generous: tests check outcomes, the benchmark checks speed
+  return settings;
+}
+
+/// Follows the controls from the contact pose as a unicycle and checks each control ends where it says.
+void expectControlsConsistent(const PushPlan& plan)
+{
+  Pose2 vehicle = plan.contact_pose;
+  for (const PushControl& control : plan.controls) {
+    if (control.kind == ControlKind::ContactSwitch) {
+      vehicle = control.vehicle_pose;
+      continue;
+    }
+    const double turn = control.angular_radps * control.duration_s;
+    if (std::abs(control.angular_radps) < 1e-12) {
+      vehicle.x += std::cos(vehicle.heading) * control.linear_mps * control.duration_s;
+      vehicle.y += std::sin(vehicle.heading) * control.linear_mps * control.duration_s;
+    } else {
+      const double radius = control.linear_mps / control.angular_radps;
+      vehicle.x += radius * (std::sin(vehicle.heading + turn) - std::sin(vehicle.heading));
+      vehicle.y -= radius * (std::cos(vehicle.heading + turn) - std::cos(vehicle.heading));
+      vehicle.heading = geometry::wrapAngle(vehicle.heading + turn);
+    }
+    EXPECT_NEAR(vehicle.x, control.vehicle_pose.x, 1e-6);
+    EXPECT_NEAR(vehicle.y, control.vehicle_pose.y, 1e-6);
+    EXPECT_NEAR(geometry::wrapAngle(vehicle.heading - control.vehicle_pose.heading), 0.0, 1e-6);
+  }
+}
+
+double passageClearance(const PushPlan& plan, const Point& from, const Point& to)
+{
+  const Pose2 final_pose = plan.controls.empty() ? plan.start_object_pose : plan.controls.back().object_pose;
+  geometry::Polygon world;
+  for (const Point& vertex : plan.footprint) {
+    world.push_back(final_pose.transform(vertex));
+  }
+  return segmentPolygonDistance(geometry::Segment{from, to}, world);
+}
+
+TEST(PushSearchTest, DoorwayGivesTwoDirectedPlans)
+{
+  const LocalScene scene = test::doorwayScene();
+  const ObjectInteractions result =
+      planObjectInteractions(scene, 0, ObjectPhysics{0.4, 20.0}, defaultSettings());
+  ASSERT_EQ(result.connectivity.waypoints.size(), 2U);
+  ASSERT_EQ(result.plans.size(), 2U);
+  for (const PairPlan& pair : result.plans) {
+    const PushPlan& plan = pair.plan;
+    ASSERT_EQ(plan.status, PlanStatus::Found) << toString(plan.status);
+    ASSERT_FALSE(plan.controls.empty());
+    const Point from = result.connectivity.waypoints[pair.pair.from].position;
+    const Point to = result.connectivity.waypoints[pair.pair.to].position;
+    EXPECT_GE(passageClearance(plan, from, to), 0.32);
+    // The vehicle starts on the waypoint's side and pushes away from it through the door.
+    EXPECT_GT(plan.contact_pose.x * from.x(), 0.0);
+    EXPECT_GT(std::cos(plan.contact_pose.heading) * (to.x() - from.x()), 0.0);
+    // Straight pushes of a 20 kg box on mu 0.4: 78.48 N; J = work / 100 N + travel.
+    EXPECT_NEAR(plan.expected_force_n, 0.4 * 20.0 * 9.81, 1e-9);
+    EXPECT_NEAR(plan.cost, plan.push_work_nm / 100.0 + plan.travel_distance_m, 1e-9);
+    EXPECT_GT(plan.push_distance_m, 1.0);
+    EXPECT_LT(plan.push_distance_m, 3.0);
+    expectControlsConsistent(plan);
+  }
+}
+
+TEST(PushSearchTest, TJunctionGivesSixDirectedPlans)
+{
+  const ObjectInteractions result =
+      planObjectInteractions(test::tJunctionScene(), 0, ObjectPhysics{0.4, 20.0}, defaultSettings());
+  ASSERT_EQ(result.connectivity.waypoints.size(), 3U);
+  ASSERT_EQ(result.plans.size(), 6U);
+  for (const PairPlan& pair : result.plans) {
+    ASSERT_EQ(pair.plan.status, PlanStatus::Found)
+        << pair.pair.from << " -> " << pair.pair.to << ": " << toString(pair.plan.status);
+    EXPECT_GE(passageClearance(pair.plan, result.connectivity.waypoints[pair.pair.from].position,
+                               result.connectivity.waypoints[pair.pair.to].position),
+              0.32);
+    expectControlsConsistent(pair.plan);
+  }
+}
+
+/// Every footprint sample at every control's end pose stays out of the obstacles' real extent.
+void expectNoWallHit(const PushPlan& plan, const std::vector<geometry::Polygon>& obstacles, double inflation)
+{
+  for (const PushControl& control : plan.controls) {
+    for (std::size_t index = 0; index < plan.footprint.size(); ++index) {
+      const Point first = plan.footprint[index];
+      const Point second = plan.footprint[(index + 1) % plan.footprint.size()];
+      for (double fraction = 0.0; fraction < 1.0; fraction += 0.05) {
+        const Point world = control.object_pose.transform(first + (second - first) * fraction);
+        for (const geometry::Polygon& obstacle : obstacles) {
+          if (geometry::containsPoint(obstacle, world)) {
+            EXPECT_LE(geometry::distanceToBoundary(obstacle, world), inflation + 0.031);
+          }
+        }
+      }
+    }
+  }
+}
+
+TEST(PushSearchTest, WallBehindTheDoorForcesATurnedPush)
+{
+  const LocalScene scene = test::doorwayWithWallBehindScene();
+  const InteractionSettings settings = defaultSettings();
+  const ObjectInteractions result = planObjectInteractions(scene, 0, ObjectPhysics{0.4, 20.0}, settings);
+  ASSERT_EQ(result.plans.size(), 2U);
+  for (const PairPlan& pair : result.plans) {
+    ASSERT_EQ(pair.plan.status, PlanStatus::Found) << toString(pair.plan.status);
+    expectNoWallHit(pair.plan, scene.background, settings.pusher.inflation_m);
+    expectControlsConsistent(pair.plan);
+    const Point from = result.connectivity.waypoints[pair.pair.from].position;
+    const Point to = result.connectivity.waypoints[pair.pair.to].position;
+    EXPECT_GE(passageClearance(pair.plan, from, to), 0.32);
+    if (from.x() < 0.0) {  // pushing towards the wall: a straight push cannot clear the door
+      const bool turned =
+          std::any_of(pair.plan.controls.begin(), pair.plan.controls.end(),
+                      [](const PushControl& control) { return control.kind != ControlKind::Straight; });
+      EXPECT_TRUE(turned);
+    }
+  }
+}
+
+TEST(PushSearchTest, NearWallNeedsAContactSwitch)
+{
+  const LocalScene scene = test::doorwayWithNearWallScene();
+  const InteractionSettings settings = defaultSettings();
+  const ObjectInteractions result = planObjectInteractions(scene, 0, ObjectPhysics{0.4, 20.0}, settings);
+  ASSERT_EQ(result.plans.size(), 2U);
+  for (const PairPlan& pair : result.plans) {
+    ASSERT_EQ(pair.plan.status, PlanStatus::Found) << toString(pair.plan.status);
+    expectNoWallHit(pair.plan, scene.background, settings.pusher.inflation_m);
+    expectControlsConsistent(pair.plan);
+    EXPECT_GE(passageClearance(pair.plan, result.connectivity.waypoints[pair.pair.from].position,
+                               result.connectivity.waypoints[pair.pair.to].position),
+              0.32);
+    if (result.connectivity.waypoints[pair.pair.from].position.x() < 0.0) {
+      const auto switched =
+          std::find_if(pair.plan.controls.begin(), pair.plan.controls.end(),
+                       [](const PushControl& control) { return control.kind == ControlKind::ContactSwitch; });
+      ASSERT_NE(switched, pair.plan.controls.end());
+      EXPECT_GT(switched->distance_m, 0.5);
+      EXPECT_NEAR(pair.plan.cost, pair.plan.push_work_nm / 100.0 + pair.plan.travel_distance_m, 1e-9);
+      for (const geometry::Polygon& wall : scene.background) {
+        EXPECT_FALSE(geometry::containsPoint(wall, switched->vehicle_pose.position()));
+      }
+    }
+  }
+}
+
+PushProblemObject doorwayProblem(const ObjectPhysics& physics)
+{
+  const LocalScene scene = test::doorwayScene();
+  return PushProblemObject{scene.movable[0], scene.background, physics};
+}
+
+TEST(PushSearchTest, BadPhysicsGivesReasons)
+{
+  const InteractionSettings settings = defaultSettings();
+  const auto status = [&](const ObjectPhysics& physics, const PusherSettings& pusher) {
+    return PushPlanner(doorwayProblem(physics), pusher, settings.search, settings.connectivity)
+        .plan(Point(-1.1, 0.0), Point(1.1, 0.0))
+        .status;
+  };
+  EXPECT_EQ(status(ObjectPhysics{0.0, 20.0}, settings.pusher), PlanStatus::InvalidPhysics);
+  EXPECT_EQ(status(ObjectPhysics{0.4, -1.0}, settings.pusher), PlanStatus::InvalidPhysics);
+  EXPECT_EQ(status(ObjectPhysics{0.4, std::nan("")}, settings.pusher), PlanStatus::InvalidPhysics);
+  EXPECT_EQ(status(ObjectPhysics{0.9, 500.0}, settings.pusher), PlanStatus::TooHeavy);
+  PusherSettings slippery = settings.pusher;
+  slippery.bumper_friction = 0.0;
+  EXPECT_EQ(status(ObjectPhysics{0.4, 20.0}, slippery), PlanStatus::NoStableContact);
+}
+
+TEST(PushSearchTest, DegenerateObjectsGiveReasons)
+{
+  const InteractionSettings settings = defaultSettings();
+  const auto status = [&](const geometry::Polygon& object) {
+    PushProblemObject problem = doorwayProblem(ObjectPhysics{0.4, 20.0});
+    problem.object = object;
+    return PushPlanner(problem, settings.pusher, settings.search, settings.connectivity)
+        .plan(Point(-1.1, 0.0), Point(1.1, 0.0))
+        .status;
+  };
+  EXPECT_EQ(status({Point(0, 0), Point(1, 0)}), PlanStatus::DegeneratePolygon);
+  EXPECT_EQ(status({Point(0, 0), Point(1, 0), Point(2, 1e-7)}), PlanStatus::DegeneratePolygon);
+  EXPECT_EQ(status({Point(0, 0), Point(1, 1), Point(1, 0), Point(0, 1)}), PlanStatus::DegeneratePolygon);
+  EXPECT_EQ(status({}), PlanStatus::DegeneratePolygon);
+  EXPECT_EQ(status(rectangle(-50.0, -1.0, 50.0, 1.0)), PlanStatus::ObjectTooLarge);
+}
+
+TEST(PushSearchTest, EnclosedObjectHasUnreachableContacts)
+{
+  // Walls 0.2 m (real) round every face: no standing point is free.
+  PushProblemObject problem;
+  problem.object = rectangle(-0.6, -0.6, 0.6, 0.6);
+  problem.obstacles = {rectangle(-2.0, 0.4, 2.0, 2.0), rectangle(-2.0, -2.0, 2.0, -0.4),
+                       rectangle(-2.0, -2.0, -0.4, 2.0), rectangle(0.4, -2.0, 2.0, 2.0)};
+  const InteractionSettings settings = defaultSettings();
+  const PushPlanner planner(problem, settings.pusher, settings.search, settings.connectivity);
+  EXPECT_EQ(planner.status(), PlanStatus::Found);
+  EXPECT_EQ(planner.plan(Point(3.0, 0.0), Point(-3.0, 0.0)).status, PlanStatus::UnreachableContact);
+}
+
+TEST(PushSearchTest, WaypointsInsideObstaclesAreRejected)
+{
+  const InteractionSettings settings = defaultSettings();
+  const PushPlanner planner(doorwayProblem(ObjectPhysics{0.4, 20.0}), settings.pusher, settings.search,
+                            settings.connectivity);
+  EXPECT_EQ(planner.plan(Point(0.0, 2.0), Point(1.1, 0.0)).status, PlanStatus::InvalidWaypoints);
+  EXPECT_EQ(planner.plan(Point(1.1, 0.0), Point(1.1, 0.0)).status, PlanStatus::InvalidWaypoints);
+  EXPECT_EQ(planner.plan(Point(std::nan(""), 0.0), Point(1.1, 0.0)).status, PlanStatus::InvalidWaypoints);
+}
+
+TEST(PushSearchTest, BudgetsStopTheSearch)
+{
+  InteractionSettings settings = defaultSettings();
+  settings.search.analytic_max_distance_m = 0.0;  // no shortcut: the search has to expand
+  settings.search.max_expansions = 2;
+  const PushProblemObject problem = doorwayProblem(ObjectPhysics{0.4, 20.0});
+  const PushPlan limited = PushPlanner(problem, settings.pusher, settings.search, settings.connectivity)
+                               .plan(Point(-1.1, 0.0), Point(1.1, 0.0));
+  EXPECT_EQ(limited.status, PlanStatus::ExpansionLimit);
+  EXPECT_EQ(limited.expansions, 2U);
+  settings.search.max_expansions = 100000;
+  settings.search.time_budget_s = 0.0;
+  EXPECT_EQ(PushPlanner(problem, settings.pusher, settings.search, settings.connectivity)
+                .plan(Point(-1.1, 0.0), Point(1.1, 0.0))
+                .status,
+            PlanStatus::TimeBudget);
+}
+
+TEST(PushSearchTest, SearchWithoutAnalyticExpansionStillFindsThePlan)
+{
+  InteractionSettings settings = defaultSettings();
+  settings.search.analytic_max_distance_m = 0.0;
+  const PushPlan plan = PushPlanner(doorwayProblem(ObjectPhysics{0.4, 20.0}), settings.pusher,
+                                    settings.search, settings.connectivity)
+                            .plan(Point(-1.1, 0.0), Point(1.1, 0.0));
+  ASSERT_EQ(plan.status, PlanStatus::Found) << toString(plan.status);
+  EXPECT_GE(passageClearance(plan, Point(-1.1, 0.0), Point(1.1, 0.0)), 0.32);
+  expectControlsConsistent(plan);
+}
+
+}  // namespace
+}  // namespace ifar::interaction

@@ -1,0 +1,54 @@
+#pragma once
+// Local-layer scenes for interaction tests and benchmarks. Polygons are already inflated by the
+// vehicle's half width (0.35 m), as perception delivers them.
+
+#include "common/geometry/polygon.hpp"
+#include "planner/interaction/connectivity.hpp"
+
+namespace ifar::interaction::test {
+
+inline geometry::Polygon rectangle(double min_x, double min_y, double max_x, double max_y)
+{
+  return {geometry::Point(min_x, min_y), geometry::Point(max_x, min_y), geometry::Point(max_x, max_y),
+          geometry::Point(min_x, max_y)};
+}
+
+/// A wall along x = 0 with a door; a box (real 0.5 m x 0.9 m) stands in the doorway.
+inline LocalScene doorwayScene()
+{
+  LocalScene scene;
+  scene.background = {rectangle(-0.5, 0.6, 0.5, 5.0), rectangle(-0.5, -5.0, 0.5, -0.6)};
+  scene.movable = {rectangle(-0.6, -0.8, 0.6, 0.8)};
+  return scene;
+}
+
+/// The doorway with a wall 1.8 m (real) beyond the door: a straight push from the left runs into it,
+/// so the box has to be turned aside.
+inline LocalScene doorwayWithWallBehindScene()
+{
+  LocalScene scene = doorwayScene();
+  scene.background.push_back(rectangle(1.45, -1.0, 2.5, 1.0));
+  return scene;
+}
+
+/// The doorway with a wall 1.6 m (real) beyond the door: the box has to be pushed through, then the
+/// vehicle drives round it and pushes it sideways (a contact switch).
+inline LocalScene doorwayWithNearWallScene()
+{
+  LocalScene scene = doorwayScene();
+  scene.background.push_back(rectangle(1.25, -1.0, 2.25, 1.0));
+  return scene;
+}
+
+/// A corridor along x (real free band 0 < y < 2) with a stem going down (real -1 < x < 1); a box
+/// (real 1.2 m x 1.0 m) in the junction blocks all three arms.
+inline LocalScene tJunctionScene()
+{
+  LocalScene scene;
+  scene.background = {rectangle(-6.35, 1.65, 6.35, 3.35), rectangle(-6.35, -6.35, -0.65, 0.35),
+                      rectangle(0.65, -6.35, 6.35, 0.35)};
+  scene.movable = {rectangle(-0.95, 0.1, 0.95, 1.8)};
+  return scene;
+}
+
+}  // namespace ifar::interaction::test

@@ -1,0 +1,47 @@
+#include "planner/interaction/settings_loader.hpp"
+
+#include <string>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+namespace ifar::interaction {
+namespace {
+
+std::string errorOf(const std::string& yaml)
+{
+  try {
+    loadInteractionSettings(common::ConfigNode::loadString(yaml, "planner.yaml"), common::VehicleSettings{});
+  } catch (const common::ConfigError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(InteractionSettingsLoaderTest, ReadsKeysAndTakesThePusherFromTheVehicle)
+{
+  common::VehicleSettings vehicle;
+  vehicle.bumper_friction = 0.3;
+  const InteractionSettings settings = loadInteractionSettings(
+      common::ConfigNode::loadString("primitive_length_m: 0.3\nmax_expansions: 100\nreference_force_n: 50\n",
+                                     "planner.yaml"),
+      vehicle);
+  EXPECT_DOUBLE_EQ(settings.search.primitive_length_m, 0.3);
+  EXPECT_EQ(settings.search.max_expansions, 100U);
+  EXPECT_DOUBLE_EQ(settings.search.reference_force_n, 50.0);
+  EXPECT_DOUBLE_EQ(settings.search.time_budget_s, SearchSettings{}.time_budget_s);
+  EXPECT_DOUBLE_EQ(settings.pusher.bumper_friction, 0.3);
+  EXPECT_DOUBLE_EQ(settings.pusher.inflation_m, vehicle.width_m / 2.0);
+  EXPECT_DOUBLE_EQ(settings.pusher.bumper_to_axle_m, vehicle.length_m / 2.0);
+  EXPECT_NEAR(settings.pusher.max_push_force_n, 0.7 * 80.0 * 9.81, 1e-9);
+}
+
+TEST(InteractionSettingsLoaderTest, RejectsBadValuesAndUnknownKeysByName)
+{
+  EXPECT_THAT(errorOf("time_budget_s: -1\n"), ::testing::HasSubstr("time_budget_s"));
+  EXPECT_THAT(errorOf("heading_bins: 0\n"), ::testing::HasSubstr("heading_bins"));
+  EXPECT_THAT(errorOf("primitive_lenght_m: 0.3\n"), ::testing::HasSubstr("primitive_lenght_m"));
+}
+
+}  // namespace
+}  // namespace ifar::interaction

@@ -1,0 +1,45 @@
+#include "tools/launch/launch_config.hpp"
+
+#include <set>
+
+namespace ifar::launch {
+
+LaunchSpec loadLaunchSpec(const common::ConfigNode& root)
+{
+  LaunchSpec spec;
+  spec.stop_timeout_s = root.optional<double>("stop_timeout_s", spec.stop_timeout_s);
+  if (!(spec.stop_timeout_s > 0.0)) {
+    root.fail("stop_timeout_s", "must be greater than zero");
+  }
+  std::set<std::string> names;
+  const auto processes = root.sequence("processes");
+  if (processes.empty()) {
+    root.fail("processes", "the launch file starts nothing: list at least one process");
+  }
+  for (const auto& node : processes) {
+    ProcessSpec process;
+    process.name = node.required<std::string>("name");
+    if (process.name.empty() || !names.insert(process.name).second) {
+      node.fail("name", "'" + process.name + "' is empty or used twice");
+    }
+    process.command = node.required<std::vector<std::string>>("command");
+    if (process.command.empty() || process.command.front().empty()) {
+      node.fail("command", "must name a program");
+    }
+    process.respawn = node.optional<bool>("respawn", process.respawn);
+    process.respawn_delay_s = node.optional<double>("respawn_delay_s", process.respawn_delay_s);
+    process.max_restarts = node.optional<int>("max_restarts", process.max_restarts);
+    process.required = node.optional<bool>("required", process.required);
+    if (node.has("environment")) {
+      const auto environment = node.child("environment");
+      for (const auto& key : environment.keys()) {
+        process.environment[key] = environment.required<std::string>(key);
+      }
+    }
+    spec.processes.push_back(std::move(process));
+  }
+  root.rejectUnknownKeys();
+  return spec;
+}
+
+}  // namespace ifar::launch

@@ -1,0 +1,40 @@
+#pragma once
+// What `ifar launch` starts: a YAML file listing processes, each with its command line, whether it is
+// restarted when it dies, and whether the whole launch ends when it ends.
+//
+//   stop_timeout_s: 3            # after SIGINT, wait this long before SIGKILL
+//   processes:
+//     - name: sim
+//       command: [ifar-sim, config/worlds/demo_room.yaml]
+//       respawn: true            # restart when it exits or crashes (default false)
+//       respawn_delay_s: 0.5     # wait before restarting, doubled per quick crash up to 8 s
+//       required: false          # true: when it exits for good, stop everything
+//       environment: {SPDLOG_LEVEL: debug}
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "common/config.hpp"
+
+namespace ifar::launch {
+
+struct ProcessSpec {
+  std::string name;
+  std::vector<std::string> command;
+  bool respawn = false;
+  double respawn_delay_s = 0.5;
+  int max_restarts = 100;
+  bool required = false;
+  std::map<std::string, std::string> environment;
+};
+
+struct LaunchSpec {
+  double stop_timeout_s = 3.0;
+  std::vector<ProcessSpec> processes;
+};
+
+/// Reads and validates a launch file (strict: unknown keys, empty commands, duplicate names are errors).
+LaunchSpec loadLaunchSpec(const common::ConfigNode& root);
+
+}  // namespace ifar::launch

@@ -1,0 +1,40 @@
+// ifar launch CONFIG: starts the processes a launch file lists (simulator or not, drivers, planner,
+// executive, logger), prefixes their output with their names, restarts those marked respawn, and stops
+// them all cleanly on Ctrl-C.
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+
+#include "tools/launch/launch_config.hpp"
+#include "tools/launch/supervisor.hpp"
+
+int main(int argc, char** argv)
+{
+  CLI::App app{"Starts the processes of a launch file with respawn, prefixed output and clean shutdown"};
+  std::string config_path;
+  double duration_s = 0.0;
+  bool no_colour = false;
+  app.add_option("config", config_path, "launch file, e.g. config/launch/sim_demo.yaml")->required();
+  app.add_option("--duration", duration_s, "stop everything after this many seconds (0 = run until Ctrl-C)");
+  app.add_flag("--no-colour", no_colour, "plain output even on a terminal");
+  CLI11_PARSE(app, argc, argv);
+
+  ifar::launch::LaunchSpec spec;
+  try {
+    spec = ifar::launch::loadLaunchSpec(ifar::common::ConfigNode::loadFile(config_path));
+  } catch (const ifar::common::ConfigError& error) {
+    std::cerr << "ifar-launch: error: " << error.what() << std::endl;
+    return 2;
+  }
+  std::error_code error;
+  const auto self = std::filesystem::read_symlink("/proc/self/exe", error);
+  const std::string program_directory = error ? std::string(".") : self.parent_path().string();
+  ifar::launch::Supervisor supervisor(std::move(spec), program_directory, std::cout,
+                                      !no_colour && isatty(STDOUT_FILENO) != 0);
+  const auto result = supervisor.run(duration_s);
+  return result.exit_code;
+}

@@ -1,0 +1,311 @@
+#include "tools/launch/supervisor.hpp"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/signalfd.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <stdexcept>
+
+#include "common/time.hpp"
+
+namespace ifar::launch {
+namespace {
+
+constexpr double kMaxRespawnDelayS = 8.0;
+constexpr double kStableRunS = 10.0;  // a process up this long resets its back-off
+
+sigset_t handledSignals()
+{
+  sigset_t signals;
+  sigemptyset(&signals);
+  sigaddset(&signals, SIGINT);
+  sigaddset(&signals, SIGTERM);
+  sigaddset(&signals, SIGCHLD);
+  return signals;
+}
+
+std::string describeStatus(int status)
+{
+  if (WIFEXITED(status)) {
+    return "exited with code " + std::to_string(WEXITSTATUS(status));
+  }
+  if (WIFSIGNALED(status)) {
+    return std::string("killed by signal ") + std::to_string(WTERMSIG(status)) + " (" +
+           strsignal(WTERMSIG(status)) + ")";
+  }
+  return "stopped";
+}
+
+const char* colourOf(std::size_t index)
+{
+  static const char* kColours[] = {"\033[36m", "\033[33m", "\033[35m", "\033[32m", "\033[34m", "\033[91m"};
+  return kColours[index % (sizeof(kColours) / sizeof(kColours[0]))];
+}
+
+}  // namespace
+
+Supervisor::Supervisor(LaunchSpec spec, std::string program_directory, std::ostream& out, bool colour)
+    : program_directory_(std::move(program_directory)),
+      out_(out),
+      colour_(colour),
+      stop_timeout_s_(spec.stop_timeout_s)
+{
+  for (auto& process : spec.processes) {
+    name_width_ = std::max(name_width_, process.name.size());
+    Child child;
+    child.delay_s = process.respawn_delay_s;
+    child.spec = std::move(process);
+    children_.push_back(std::move(child));
+  }
+  name_width_ = std::max<std::size_t>(name_width_, 6);
+  const sigset_t signals = handledSignals();
+  sigprocmask(SIG_BLOCK, &signals, nullptr);
+  signal_fd_ = signalfd(-1, &signals, SFD_NONBLOCK | SFD_CLOEXEC);
+  if (signal_fd_ < 0) {
+    throw std::runtime_error("cannot create a signalfd");
+  }
+}
+
+Supervisor::~Supervisor()
+{
+  stopAll(stop_timeout_s_);
+  if (signal_fd_ >= 0) {
+    close(signal_fd_);
+  }
+}
+
+void Supervisor::say(const std::string& name, const std::string& line)
+{
+  std::string padded = name;
+  padded.resize(name_width_, ' ');
+  std::size_t index = 0;
+  for (std::size_t candidate = 0; candidate < children_.size(); ++candidate) {
+    if (children_[candidate].spec.name == name) {
+      index = candidate;
+    }
+  }
+  if (colour_ && name != "launch") {
+    out_ << colourOf(index) << padded << " |\033[0m " << line << '\n';
+  } else {
+    out_ << padded << " | " << line << '\n';
+  }
+  out_.flush();
+}
+
+void Supervisor::start(Child& child)
+{
+  int pipe_fds[2];
+  if (pipe2(pipe_fds, O_CLOEXEC) != 0) {
+    say("launch", "cannot create a pipe for " + child.spec.name + ": " + std::strerror(errno));
+    child.done = true;
+    return;
+  }
+  const pid_t pid = fork();
+  if (pid < 0) {
+    say("launch", "cannot fork " + child.spec.name + ": " + std::strerror(errno));
+    close(pipe_fds[0]);
+    close(pipe_fds[1]);
+    child.done = true;
+    return;
+  }
+  if (pid == 0) {
+    // In the child: own process group (so stopping reaches its children), default signals, output to
+    // the pipe, then the program.
+    setpgid(0, 0);
+    const sigset_t signals = handledSignals();
+    sigprocmask(SIG_UNBLOCK, &signals, nullptr);
+    dup2(pipe_fds[1], STDOUT_FILENO);
+    dup2(pipe_fds[1], STDERR_FILENO);
+    const char* path = std::getenv("PATH");
+    const std::string new_path = program_directory_ + ":" + (path != nullptr ? path : "/usr/bin:/bin");
+    setenv("PATH", new_path.c_str(), 1);
+    for (const auto& [key, value] : child.spec.environment) {
+      setenv(key.c_str(), value.c_str(), 1);
+    }
+    std::vector<char*> argv;
+    for (const auto& argument : child.spec.command) {
+      argv.push_back(const_cast<char*>(argument.c_str()));  // execvp predates const
+    }
+    argv.push_back(nullptr);
+    execvp(argv[0], argv.data());
+    const std::string message =
+        "cannot run '" + child.spec.command.front() + "': " + std::strerror(errno) + "\n";
+    [[maybe_unused]] const ssize_t written = write(STDERR_FILENO, message.data(), message.size());
+    _exit(127);
+  }
+  setpgid(pid, pid);  // also from the parent, so the group exists before any signal is sent
+  close(pipe_fds[1]);
+  fcntl(pipe_fds[0], F_SETFL, O_NONBLOCK);
+  child.pid = pid;
+  child.output_fd = pipe_fds[0];
+  child.started_us = common::monotonicMicroseconds();
+  child.restart_due_us = -1;
+  std::string command;
+  for (const auto& argument : child.spec.command) {
+    command += (command.empty() ? "" : " ") + argument;
+  }
+  say("launch", "started " + child.spec.name + " (pid " + std::to_string(pid) + "): " + command);
+}
+
+void Supervisor::drainOutput(Child& child, bool flush_partial)
+{
+  if (child.output_fd < 0) {
+    return;
+  }
+  char buffer[4096];
+  while (true) {
+    const ssize_t count = read(child.output_fd, buffer, sizeof(buffer));
+    if (count <= 0) {
+      if (count == 0 || (errno != EAGAIN && errno != EINTR)) {
+        flush_partial = true;
+        close(child.output_fd);
+        child.output_fd = -1;
+      }
+      break;
+    }
+    child.partial_line.append(buffer, static_cast<std::size_t>(count));
+    std::size_t newline;
+    while ((newline = child.partial_line.find('\n')) != std::string::npos) {
+      say(child.spec.name, child.partial_line.substr(0, newline));
+      child.partial_line.erase(0, newline + 1);
+    }
+  }
+  if (flush_partial && !child.partial_line.empty()) {
+    say(child.spec.name, child.partial_line);
+    child.partial_line.clear();
+  }
+}
+
+void Supervisor::reapChildren(bool stopping, SupervisorResult& result)
+{
+  int status = 0;
+  pid_t pid;
+  while ((pid = waitpid(-1, &status, WNOHANG)) > 0) {
+    for (auto& child : children_) {
+      if (child.pid != pid) {
+        continue;
+      }
+      drainOutput(child, true);
+      child.pid = -1;
+      say("launch", child.spec.name + " " + describeStatus(status));
+      if (stopping) {
+        child.done = true;
+        break;
+      }
+      const std::int64_t now = common::monotonicMicroseconds();
+      if (child.spec.respawn && child.restarts < child.spec.max_restarts) {
+        // Back off when it keeps crashing right after start.
+        if (common::microsecondsToSeconds(now - child.started_us) > kStableRunS) {
+          child.delay_s = child.spec.respawn_delay_s;
+        }
+        child.restart_due_us = now + common::secondsToMicroseconds(child.delay_s);
+        say("launch",
+            "restarting " + child.spec.name + " in " + std::to_string(child.delay_s).substr(0, 4) + " s");
+        child.delay_s = std::min(kMaxRespawnDelayS, child.delay_s * 2.0);
+      } else {
+        child.done = true;
+        if (child.spec.required) {
+          const bool failed = !(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+          result.reason = "required process " + child.spec.name + " " + describeStatus(status);
+          result.exit_code = failed ? 1 : 0;
+        }
+      }
+      break;
+    }
+  }
+}
+
+bool Supervisor::anyRunning() const
+{
+  return std::any_of(children_.begin(), children_.end(), [](const Child& child) { return child.pid > 0; });
+}
+
+void Supervisor::stopAll(double timeout_s)
+{
+  if (!anyRunning()) {
+    return;
+  }
+  for (const auto& child : children_) {
+    if (child.pid > 0) {
+      kill(-child.pid, SIGINT);
+    }
+  }
+  SupervisorResult ignored;
+  const std::int64_t deadline = common::monotonicMicroseconds() + common::secondsToMicroseconds(timeout_s);
+  while (anyRunning() && common::monotonicMicroseconds() < deadline) {
+    for (auto& child : children_) {
+      drainOutput(child, false);
+    }
+    reapChildren(true, ignored);
+    usleep(20'000);
+  }
+  for (auto& child : children_) {
+    if (child.pid > 0) {
+      say("launch", child.spec.name + " did not stop within " + std::to_string(timeout_s).substr(0, 4) +
+                        " s: killing it");
+      kill(-child.pid, SIGKILL);
+    }
+  }
+  while (anyRunning()) {
+    reapChildren(true, ignored);
+    usleep(10'000);
+  }
+}
+
+SupervisorResult Supervisor::run(double duration_s)
+{
+  SupervisorResult result;
+  for (auto& child : children_) {
+    start(child);
+  }
+  const std::int64_t end_us =
+      duration_s > 0.0 ? common::monotonicMicroseconds() + common::secondsToMicroseconds(duration_s) : -1;
+  while (result.reason.empty()) {
+    std::vector<pollfd> descriptors{{signal_fd_, POLLIN, 0}};
+    for (const auto& child : children_) {
+      if (child.output_fd >= 0) {
+        descriptors.push_back({child.output_fd, POLLIN, 0});
+      }
+    }
+    poll(descriptors.data(), descriptors.size(), 50);
+    signalfd_siginfo info{};
+    while (read(signal_fd_, &info, sizeof(info)) == static_cast<ssize_t>(sizeof(info))) {
+      if (info.ssi_signo == SIGINT || info.ssi_signo == SIGTERM) {
+        result.reason = std::string("received ") + strsignal(static_cast<int>(info.ssi_signo));
+      }
+    }
+    for (auto& child : children_) {
+      drainOutput(child, false);
+    }
+    reapChildren(false, result);
+    const std::int64_t now = common::monotonicMicroseconds();
+    for (auto& child : children_) {
+      if (!child.done && child.pid < 0 && child.restart_due_us >= 0 && now >= child.restart_due_us) {
+        ++child.restarts;
+        ++result.restarts;
+        start(child);
+      }
+    }
+    if (end_us >= 0 && now >= end_us && result.reason.empty()) {
+      result.reason = "ran for the requested " + std::to_string(duration_s).substr(0, 5) + " s";
+    }
+    const bool all_done =
+        std::all_of(children_.begin(), children_.end(), [](const Child& child) { return child.done; });
+    if (all_done && result.reason.empty()) {
+      result.reason = "every process ended";
+    }
+  }
+  say("launch", "stopping: " + result.reason);
+  stopAll(stop_timeout_s_);
+  say("launch", "stopped (" + std::to_string(result.restarts) + " restarts)");
+  return result;
+}
+
+}  // namespace ifar::launch

@@ -1,0 +1,63 @@
+#pragma once
+// Runs the processes of a launch file: starts each in its own process group with its output prefixed by
+// its name, restarts the ones marked respawn when they die (with back-off), and on SIGINT/SIGTERM, when a
+// required process ends, or after a set duration, stops them all: SIGINT first, SIGKILL after the timeout.
+
+#include <sys/types.h>
+
+#include <cstdint>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "tools/launch/launch_config.hpp"
+
+namespace ifar::launch {
+
+struct SupervisorResult {
+  int exit_code = 0;   // 0: stopped on request or after the duration; 1: a required process failed
+  int restarts = 0;    // respawns over the whole run
+  std::string reason;  // why the launch ended
+};
+
+class Supervisor {
+ public:
+  /// `program_directory` is put first on PATH so ifar-* executables beside `ifar` are found.
+  Supervisor(LaunchSpec spec, std::string program_directory, std::ostream& out, bool colour);
+  ~Supervisor();
+  Supervisor(const Supervisor&) = delete;
+  Supervisor& operator=(const Supervisor&) = delete;
+
+  /// Runs until a signal, a required process ending, or `duration_s` (<= 0: no limit).
+  SupervisorResult run(double duration_s);
+
+ private:
+  struct Child {
+    ProcessSpec spec;
+    pid_t pid = -1;
+    int output_fd = -1;
+    std::string partial_line;
+    int restarts = 0;
+    double delay_s = 0.0;
+    std::int64_t started_us = 0;
+    std::int64_t restart_due_us = -1;  // when a respawn is scheduled
+    bool done = false;                 // exited and will not be restarted
+  };
+
+  void start(Child& child);
+  void reapChildren(bool stopping, SupervisorResult& result);
+  void drainOutput(Child& child, bool flush_partial);
+  void say(const std::string& name, const std::string& line);
+  void stopAll(double timeout_s);
+  bool anyRunning() const;
+
+  std::vector<Child> children_;
+  std::string program_directory_;
+  std::ostream& out_;
+  bool colour_;
+  double stop_timeout_s_;
+  int signal_fd_ = -1;
+  std::size_t name_width_ = 0;
+};
+
+}  // namespace ifar::launch
