@@ -37,7 +37,10 @@ geometry::Point GridMap::worldToGrid(const geometry::Point& world) const
   return (world - origin_) / resolution_;
 }
 
-geometry::Point GridMap::cellCentre(int x, int y) const { return cornerToWorld(x + 0.5, y + 0.5); }
+geometry::Point GridMap::cellCentre(int x, int y) const
+{
+  return cornerToWorld(x + 0.5, y + 0.5);
+}
 
 CellIndex GridMap::cellAt(const geometry::Point& world) const
 {

@@ -12,7 +12,10 @@
 namespace ifar::grid_map {
 namespace {
 
-std::string where(const std::string& path, int line) { return path + ":" + std::to_string(line) + ": "; }
+std::string where(const std::string& path, int line)
+{
+  return path + ":" + std::to_string(line) + ": ";
+}
 
 /// Reads "key value" where value is a positive integer; returns false with `error` set otherwise.
 bool readHeaderNumber(std::istream& input, const std::string& path, int& line, const std::string& key,
@@ -105,8 +108,9 @@ MapReadResult readMovingAiMap(const std::string& path)
           map.set(x, y, Cell::Blocked);
           break;
         default:
-          result.error = where(path, line) + "column " + std::to_string(x + 1) + ": unknown cell character '" +
-                         std::string(1, text[static_cast<std::size_t>(x)]) + "'";
+          result.error = where(path, line) + "column " + std::to_string(x + 1) +
+                         ": unknown cell character '" + std::string(1, text[static_cast<std::size_t>(x)]) +
+                         "'";
           return result;
       }
     }
@@ -150,7 +154,8 @@ ScenarioReadResult readMovingAiScenarios(const std::string& path)
     }
     scenario.start = geometry::Point(start_x, start_y);
     scenario.goal = geometry::Point(goal_x, goal_y);
-    if (!scenario.start.allFinite() || !scenario.goal.allFinite() || !std::isfinite(scenario.optimal_length)) {
+    if (!scenario.start.allFinite() || !scenario.goal.allFinite() ||
+        !std::isfinite(scenario.optimal_length)) {
       result.error = where(path, line) + "non-finite number";
       return result;
     }
@@ -267,7 +272,8 @@ MapReadResult readMapServer(const std::string& yaml_path)
   if (!(std::isfinite(resolution) && resolution > 0.0)) {
     return fail("resolution", "missing or not a positive number");
   }
-  if (origin.size() != 3 || !std::isfinite(origin[0]) || !std::isfinite(origin[1]) || !std::isfinite(origin[2])) {
+  if (origin.size() != 3 || !std::isfinite(origin[0]) || !std::isfinite(origin[1]) ||
+      !std::isfinite(origin[2])) {
     return fail("origin", "expected [x, y, yaw] with finite numbers");
   }
   if (origin[2] != 0.0) {
@@ -348,7 +354,8 @@ MapReadResult readMapServer(const std::string& yaml_path)
 MapReadResult readGridMapFile(const std::string& path)
 {
   const auto ends_with = [&](const std::string& suffix) {
-    return path.size() >= suffix.size() && path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0;
+    return path.size() >= suffix.size() &&
+           path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0;
   };
   if (ends_with(".yaml") || ends_with(".yml")) {
     return readMapServer(path);

@@ -30,7 +30,8 @@ class TemporaryFile {
 
 GridMap fromRows(const std::vector<std::string>& rows)
 {
-  GridMap map(static_cast<int>(rows.front().size()), static_cast<int>(rows.size()), 1.0, geometry::Point::Zero());
+  GridMap map(static_cast<int>(rows.front().size()), static_cast<int>(rows.size()), 1.0,
+              geometry::Point::Zero());
   for (std::size_t y = 0; y < rows.size(); ++y) {
     for (std::size_t x = 0; x < rows[y].size(); ++x) {
       if (rows[y][x] == '@') {
@@ -103,8 +104,9 @@ TEST(MapServer, ReadsPgmAndFlipsRows)
   std::string pgm = "P5\n# comment\n3 2\n255\n";
   pgm += std::string{'\x00', '\xff', '\xcd', '\xff', '\xff', '\x00'};
   const TemporaryFile image("tiny.pgm", pgm);
-  const TemporaryFile yaml("tiny.yaml", "image: tiny.pgm\nresolution: 0.5\norigin: [1.0, 2.0, 0.0]\nnegate: 0\n"
-                                        "occupied_thresh: 0.65\nfree_thresh: 0.196\n");
+  const TemporaryFile yaml("tiny.yaml",
+                           "image: tiny.pgm\nresolution: 0.5\norigin: [1.0, 2.0, 0.0]\nnegate: 0\n"
+                           "occupied_thresh: 0.65\nfree_thresh: 0.196\n");
   const auto result = readMapServer(yaml.path());
   ASSERT_TRUE(result.ok()) << result.error;
   const GridMap& map = result.map;

@@ -1,0 +1,83 @@
+#include "planner/daemon/daemon_settings.hpp"
+
+#include <cmath>
+
+#include "planner/graph/settings.hpp"
+#include "planner/perception/perception_settings.hpp"
+
+namespace ifar::planner {
+
+namespace {
+
+double positive(const common::ConfigNode& node, const std::string& key, double fallback)
+{
+  const double value = node.optional<double>(key, fallback);
+  if (!std::isfinite(value) || value <= 0.0) {
+    node.fail(key, "must be a positive number");
+  }
+  return value;
+}
+
+std::string channel(const common::ConfigNode& node, const std::string& key, const std::string& fallback)
+{
+  std::string value = node.optional<std::string>(key, fallback);
+  if (value.empty()) {
+    node.fail(key, "channel name must not be empty");
+  }
+  return value;
+}
+
+}  // namespace
+
+DaemonSettings loadDaemonSettings(const common::ConfigNode& root)
+{
+  DaemonSettings settings;
+  // Top level, as in sim.yaml: the file every daemon reads the vehicle from.
+  settings.vehicle_config = root.optional<std::string>("vehicle_config", settings.vehicle_config);
+  if (settings.vehicle_config.empty()) {
+    root.fail("vehicle_config", "must name the vehicle settings file");
+  }
+  if (!root.has("daemon")) {
+    return settings;
+  }
+  const common::ConfigNode node = root.child("daemon");
+  settings.rate_hz = positive(node, "rate_hz", settings.rate_hz);
+  settings.input.stale_input_age_s = positive(node, "stale_input_age_s", settings.input.stale_input_age_s);
+  settings.input.max_future_s = positive(node, "max_future_s", settings.input.max_future_s);
+  settings.input.pose_history_s = positive(node, "pose_history_s", settings.input.pose_history_s);
+  settings.detector_max_age_s = positive(node, "detector_max_age_s", settings.detector_max_age_s);
+  settings.arrival_radius_m = positive(node, "arrival_radius_m", settings.arrival_radius_m);
+  settings.prior_graph = node.optional<std::string>("prior_graph", settings.prior_graph);
+  if (node.has("channels")) {
+    const common::ConfigNode channels = node.child("channels");
+    PlannerChannels& out = settings.channels;
+    out.velodyne_packet = channel(channels, "velodyne_packet", out.velodyne_packet);
+    out.pose = channel(channels, "pose", out.pose);
+    out.goal = channel(channels, "goal", out.goal);
+    out.detected_objects = channel(channels, "detected_objects", out.detected_objects);
+    out.affordance = channel(channels, "affordance", out.affordance);
+    out.dv_graph = channel(channels, "dv_graph", out.dv_graph);
+    out.global_path = channel(channels, "global_path", out.global_path);
+    out.planner_status = channel(channels, "planner_status", out.planner_status);
+  }
+  node.rejectUnknownKeys();
+  return settings;
+}
+
+PlannerConfig loadPlannerConfig(const common::ConfigNode& root)
+{
+  PlannerConfig config;
+  config.planner.perception = perception::loadPerceptionSettings(root);
+  config.planner.graph =
+      root.has("graph") ? graph::loadGraphSettings(root.child("graph")) : graph::GraphSettings{};
+  config.daemon = loadDaemonSettings(root);
+  config.planner.arrival_radius_m = config.daemon.arrival_radius_m;
+  if (root.has("interaction")) {
+    // Read by the interaction planner once it is wired in; accepted here so the file stays valid.
+    root.acceptAllUnder("interaction");
+  }
+  root.rejectUnknownKeys();
+  return config;
+}
+
+}  // namespace ifar::planner

@@ -1,0 +1,335 @@
+// The planner frame pipeline on simulated VLP-16 packets, and every kind of bad input issue 5 names.
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "planner/core/frame_assembler.hpp"
+#include "planner/core/planner.hpp"
+#include "planner/graph/graph_file.hpp"
+#include "sim/simulator/builtin_worlds.hpp"
+#include "tests/unit/planner_core/simulated_feed.hpp"
+
+namespace ifar::planner {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+/// Box of 0.6 m centred at (3.5, 6) in a 12 m room; the vehicle stands at (2, 6) facing it.
+const std::vector<testing::FeedRecord>& pushRoomRecords()
+{
+  static const std::vector<testing::FeedRecord> records =
+      testing::recordSimulation(sim::builtinPushRoom(200.0), 0.35);
+  return records;
+}
+
+std::vector<FrameInput> pushRoomFrames()
+{
+  FrameAssembler assembler{InputSettings{}};
+  return testing::feedAll(pushRoomRecords(), assembler);
+}
+
+/// A frame with valid motion: the vehicle still at (2, 6) facing +x.
+FrameInput stillFrame()
+{
+  FrameInput frame;
+  frame.utime = 1'000'000;
+  frame.has_motion = true;
+  frame.motion.vehicle_at_start.translation() = Eigen::Vector3d(2.0, 6.0, 0.0);
+  frame.motion.vehicle_at_end = frame.motion.vehicle_at_start;
+  frame.motion.duration_s = 0.1;
+  return frame;
+}
+
+TEST(PlannerCore, SimulatedRoomGivesPolygonsGraphAndPathAroundTheBox)
+{
+  const std::vector<FrameInput> frames = pushRoomFrames();
+  ASSERT_GE(frames.size(), 2U);
+  Planner planner{PlannerSettings{}};
+  ASSERT_TRUE(planner.setGoal(Goal{7, geometry::Point(6.0, 6.0)}));
+  const FrameResult result = planner.processFrame(frames[1]);
+
+  EXPECT_EQ(result.status.state, PlannerState::Planning) << result.status.message;
+  EXPECT_EQ(result.status.flags, 0) << result.status.message;
+  EXPECT_GE(result.status.polygons, 2);  // the room's walls and the box
+  bool has_movable = false;
+  for (const auto& polygon : result.polygons) {
+    has_movable = has_movable || polygon.obstacle_class == perception::ObstacleClass::Movable;
+  }
+  EXPECT_TRUE(has_movable);
+  EXPECT_GE(result.status.vertices, 4);
+  EXPECT_GT(result.status.edges, 0);
+  EXPECT_EQ(result.sequence, 1);
+
+  ASSERT_TRUE(result.path.valid);
+  EXPECT_EQ(result.path.goal_id, 7);
+  ASSERT_GE(result.path.waypoints.size(), 3U);  // must bend around the inflated box
+  EXPECT_NEAR(result.path.waypoints.front().position.x(), 2.0, 0.05);
+  EXPECT_NEAR(result.path.waypoints.front().position.y(), 6.0, 0.05);
+  EXPECT_NEAR(result.path.waypoints.back().position.x(), 6.0, 1e-9);
+  EXPECT_NEAR(result.path.waypoints.back().position.y(), 6.0, 1e-9);
+  EXPECT_GT(result.path.length_m, 4.0 + 1e-3);  // longer than the blocked straight line
+  EXPECT_LT(result.path.length_m, 5.5);
+  // The box spans y 5.7..6.3; its inflated outline (rounded, simplified corners) keeps a waypoint at
+  // least 0.45 m from the centre line.
+  bool beside_box = false;
+  for (const auto& waypoint : result.path.waypoints) {
+    beside_box = beside_box || std::abs(waypoint.position.y() - 6.0) >= 0.45;
+  }
+  EXPECT_TRUE(beside_box);
+
+  EXPECT_GT(result.status.timings.total_ms, 0.0);
+}
+
+TEST(PlannerCore, NoGoalIsIdle)
+{
+  const std::vector<FrameInput> frames = pushRoomFrames();
+  ASSERT_FALSE(frames.empty());
+  Planner planner{PlannerSettings{}};
+  const FrameResult result = planner.processFrame(frames[0]);
+  EXPECT_EQ(result.status.state, PlannerState::Idle);
+  EXPECT_FALSE(result.path.valid);
+  EXPECT_GT(result.status.vertices, 0);
+}
+
+TEST(PlannerCore, GoalInsideObstacleIsSnappedAndFlagged)
+{
+  const std::vector<FrameInput> frames = pushRoomFrames();
+  ASSERT_FALSE(frames.empty());
+  Planner planner{PlannerSettings{}};
+  ASSERT_TRUE(planner.setGoal(Goal{1, geometry::Point(3.5, 6.0)}));  // the box's centre
+  const FrameResult result = planner.processFrame(frames[0]);
+  EXPECT_NE(result.status.flags & kFlagGoalSnapped, 0) << result.status.message;
+  EXPECT_NE(result.status.message.find("snapped"), std::string::npos);
+  ASSERT_TRUE(result.path.valid);
+  // Only the box's front face is seen, so the snap leaves through the near side of its inflated outline.
+  EXPECT_GT((result.path.waypoints.back().position - geometry::Point(3.5, 6.0)).norm(), 0.01);
+}
+
+TEST(PlannerCore, GoalOffTheMapIsFlaggedAndAttempted)
+{
+  const std::vector<FrameInput> frames = pushRoomFrames();
+  ASSERT_FALSE(frames.empty());
+  Planner planner{PlannerSettings{}};
+  ASSERT_TRUE(planner.setGoal(Goal{2, geometry::Point(500.0, 6.0)}));
+  const FrameResult result = planner.processFrame(frames[0]);
+  EXPECT_NE(result.status.flags & kFlagGoalOffMap, 0) << result.status.message;
+  EXPECT_NE(result.status.message.find("outside the observed map"), std::string::npos);
+}
+
+TEST(PlannerCore, GoalWithinArrivalRadiusIsArrivedAndClearingIsIdle)
+{
+  const std::vector<FrameInput> frames = pushRoomFrames();
+  ASSERT_FALSE(frames.empty());
+  Planner planner{PlannerSettings{}};
+  ASSERT_TRUE(planner.setGoal(Goal{4, geometry::Point(2.3, 6.1)}));  // 0.32 m from the vehicle
+  EXPECT_EQ(planner.processFrame(frames[0]).status.state, PlannerState::Arrived);
+  planner.clearGoal();
+  const FrameResult idle = planner.replan();
+  EXPECT_EQ(idle.status.state, PlannerState::Idle);
+  EXPECT_FALSE(idle.path.valid);
+}
+
+TEST(PlannerCore, NonFiniteGoalIsRefused)
+{
+  Planner planner{PlannerSettings{}};
+  EXPECT_FALSE(planner.setGoal(Goal{3, geometry::Point(kNaN, 1.0)}));
+  EXPECT_FALSE(planner.goal().has_value());
+  EXPECT_EQ(planner.badInputs(), 1);
+}
+
+TEST(PlannerCore, NonFinitePointsAreDroppedAndFlagged)
+{
+  std::vector<FrameInput> frames = pushRoomFrames();
+  ASSERT_FALSE(frames.empty());
+  FrameInput frame = frames[0];
+  perception::SensorPoint bad;
+  bad.position_sensor = Eigen::Vector3f(std::numeric_limits<float>::quiet_NaN(), 1.0F, 0.0F);
+  frame.points.push_back(bad);
+  bad.position_sensor = Eigen::Vector3f(std::numeric_limits<float>::infinity(), 1.0F, 0.0F);
+  frame.points.push_back(bad);
+  Planner planner{PlannerSettings{}};
+  const FrameResult result = planner.processFrame(frame);
+  EXPECT_NE(result.status.flags & kFlagBadPoints, 0);
+  EXPECT_NE(result.status.message.find("2 non-finite points"), std::string::npos) << result.status.message;
+  EXPECT_GT(result.status.polygons, 0);  // the good points still make the frame
+}
+
+TEST(PlannerCore, NonFiniteMotionRejectsTheFrame)
+{
+  FrameInput frame = stillFrame();
+  frame.motion.vehicle_at_end.translation().x() = kNaN;
+  Planner planner{PlannerSettings{}};
+  const FrameResult result = planner.processFrame(frame);
+  EXPECT_EQ(result.status.state, PlannerState::BadInput);
+  EXPECT_EQ(result.status.frames, 0);
+  EXPECT_EQ(planner.badInputs(), 1);
+  EXPECT_NE(result.status.message.find("not finite"), std::string::npos) << result.status.message;
+}
+
+TEST(PlannerCore, FrameWithoutPoseIsRejected)
+{
+  FrameInput frame = stillFrame();
+  frame.has_motion = false;
+  Planner planner{PlannerSettings{}};
+  const FrameResult result = planner.processFrame(frame);
+  EXPECT_EQ(result.status.state, PlannerState::BadInput);
+  EXPECT_NE(result.status.message.find("no pose"), std::string::npos);
+}
+
+TEST(PlannerCore, EmptyScanIsFlaggedAndKeepsTheGraph)
+{
+  const std::vector<FrameInput> frames = pushRoomFrames();
+  ASSERT_FALSE(frames.empty());
+  Planner planner{PlannerSettings{}};
+  planner.processFrame(frames[0]);
+  const std::size_t vertices = planner.graph().vertexCount();
+  ASSERT_GT(vertices, 0U);
+  PlannerSettings settings;
+  for (int frame_index = 0; frame_index < settings.graph.votes + 2; ++frame_index) {
+    const FrameResult result = planner.processFrame(stillFrame());
+    EXPECT_NE(result.status.flags & kFlagEmptyScan, 0);
+    EXPECT_EQ(result.status.polygons, 0);
+  }
+  EXPECT_EQ(planner.graph().vertexCount(), vertices);  // a sensor gap casts no removal votes
+}
+
+TEST(PlannerCore, CorruptGraphFileIsReportedAndIgnored)
+{
+  const std::string path = std::string(IFAR_BINARY_DIR) + "/planner_core_corrupt_graph.txt";
+  {
+    std::ofstream file(path);
+    file << "ifar-dv-graph 1\nslots 2\nvertices 1\nv 0 0 nan 1 0 0 0 0 0 0\n";
+  }
+  Planner planner{PlannerSettings{}};
+  const std::string error = planner.loadPriorGraph(path);
+  EXPECT_NE(error.find(path), std::string::npos) << error;
+  EXPECT_EQ(planner.graph().vertexCount(), 0U);
+  EXPECT_EQ(planner.badInputs(), 1);
+}
+
+TEST(PlannerCore, SavedGraphLoadsAsPriorMap)
+{
+  const std::vector<FrameInput> frames = pushRoomFrames();
+  ASSERT_FALSE(frames.empty());
+  Planner first{PlannerSettings{}};
+  first.processFrame(frames[0]);
+  const std::string path = std::string(IFAR_BINARY_DIR) + "/planner_core_prior_graph.txt";
+  ASSERT_EQ(graph::saveGraph(first.graph(), path), "");
+  Planner second{PlannerSettings{}};
+  EXPECT_EQ(second.loadPriorGraph(path), "");
+  EXPECT_EQ(graph::serializeGraph(second.graph()), graph::serializeGraph(first.graph()));
+}
+
+TEST(PlannerCore, ReplanAnswersANewGoalWithoutANewFrame)
+{
+  const std::vector<FrameInput> frames = pushRoomFrames();
+  ASSERT_FALSE(frames.empty());
+  Planner planner{PlannerSettings{}};
+  planner.processFrame(frames[0]);
+  ASSERT_TRUE(planner.setGoal(Goal{9, geometry::Point(2.0, 9.0)}));
+  const FrameResult result = planner.replan();
+  EXPECT_EQ(result.status.state, PlannerState::Planning) << result.status.message;
+  ASSERT_TRUE(result.path.valid);
+  EXPECT_NEAR(result.path.length_m, 3.0, 0.05);  // nothing between the vehicle and this goal
+}
+
+TEST(PlannerFrameAssembler, SimulatedPacketsMakeOneFramePerRevolutionWithMotion)
+{
+  const std::vector<FrameInput> frames = pushRoomFrames();
+  ASSERT_GE(frames.size(), 2U);
+  for (const FrameInput& frame : frames) {
+    EXPECT_TRUE(frame.has_motion);
+    EXPECT_EQ(frame.flags, 0) << frame.problems;
+    EXPECT_NEAR(frame.motion.vehicle_at_end.translation().x(), 2.0, 1e-6);
+  }
+  // 10 Hz: a full revolution holds about 0.1 s of firings.
+  EXPECT_NEAR(frames[1].motion.duration_s, 0.1, 0.015);
+  EXPECT_EQ(frames[1].utime - frames[0].utime, 100'000);
+}
+
+TEST(PlannerFrameAssembler, BadPosesAreRefusedWithAReason)
+{
+  FrameAssembler assembler{InputSettings{}};
+  PoseSample pose = testing::planarPose(1'000'000, 1.0, 2.0, 0.0);
+  EXPECT_EQ(assembler.addPose(pose, 1'000'000), InputVerdict::Accepted);
+  PoseSample nan_pose = testing::planarPose(1'010'000, kNaN, 2.0, 0.0);
+  EXPECT_EQ(assembler.addPose(nan_pose, 1'010'000), InputVerdict::NonFinite);
+  PoseSample infinite_pose = testing::planarPose(1'010'000, 1.0, 2.0, 0.0);
+  infinite_pose.orientation.w() = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(assembler.addPose(infinite_pose, 1'010'000), InputVerdict::NonFinite);
+  PoseSample scaled = testing::planarPose(1'010'000, 1.0, 2.0, 0.0);
+  scaled.orientation.coeffs() *= 2.0;
+  EXPECT_EQ(assembler.addPose(scaled, 1'010'000), InputVerdict::NotUnitQuaternion);
+  EXPECT_EQ(assembler.addPose(testing::planarPose(900'000, 1.0, 2.0, 0.0), 1'010'000),
+            InputVerdict::OutOfOrder);
+  EXPECT_EQ(assembler.addPose(testing::planarPose(9'000'000, 1.0, 2.0, 0.0), 1'010'000),
+            InputVerdict::FromFuture);
+  EXPECT_EQ(assembler.rejectedInputs(), 5);
+  ASSERT_TRUE(assembler.latestPose().has_value());
+  EXPECT_EQ(assembler.latestPose()->utime, 1'000'000);
+}
+
+TEST(PlannerFrameAssembler, BadPacketsAreRefusedAndFlagTheNextFrame)
+{
+  const std::vector<testing::FeedRecord>& records = pushRoomRecords();
+  FrameAssembler assembler{InputSettings{}};
+  std::vector<FrameInput> frames;
+  bool injected = false;
+  for (const testing::FeedRecord& record : records) {
+    if (record.kind == testing::FeedRecord::Kind::Pose) {
+      assembler.addPose(record.pose, record.utime);
+      continue;
+    }
+    ASSERT_EQ(assembler.addPacket(common::ByteView(record.payload.data(), record.payload.size()),
+                                  record.utime, record.utime),
+              InputVerdict::Accepted);
+    if (!injected && record.utime > records.front().utime + 50'000) {
+      injected = true;
+      const common::ByteView payload(record.payload.data(), record.payload.size());
+      EXPECT_EQ(assembler.addPacket(payload, record.utime - 20'000, record.utime), InputVerdict::OutOfOrder);
+      EXPECT_EQ(assembler.addPacket(payload, record.utime + 5'000'000, record.utime),
+                InputVerdict::FromFuture);
+      EXPECT_EQ(assembler.addPacket(common::ByteView(record.payload.data(), 100), record.utime, record.utime),
+                InputVerdict::Undecodable);
+    }
+    for (FrameInput& frame : assembler.takeFrames()) {
+      frames.push_back(std::move(frame));
+    }
+  }
+  ASSERT_TRUE(injected);
+  ASSERT_FALSE(frames.empty());
+  EXPECT_NE(frames[0].flags & kFlagStaleInput, 0);
+  EXPECT_NE(frames[0].problems.find("packet out of order"), std::string::npos) << frames[0].problems;
+  EXPECT_NE(frames[0].problems.find("packet from the future"), std::string::npos);
+  EXPECT_EQ(assembler.rejectedInputs(), 3);
+  // Processing the flagged frame still works and reports the flag.
+  Planner planner{PlannerSettings{}};
+  const FrameResult result = planner.processFrame(frames[0]);
+  EXPECT_NE(result.status.flags & kFlagStaleInput, 0);
+  EXPECT_GT(result.status.polygons, 0);
+}
+
+TEST(PlannerFrameAssembler, PacketsWithoutPosesGiveAFrameThatCannotBePlaced)
+{
+  FrameAssembler assembler{InputSettings{}};
+  for (const testing::FeedRecord& record : pushRoomRecords()) {
+    if (record.kind == testing::FeedRecord::Kind::Packet) {
+      assembler.addPacket(common::ByteView(record.payload.data(), record.payload.size()), record.utime,
+                          record.utime);
+    }
+  }
+  const std::vector<FrameInput> frames = assembler.takeFrames();
+  ASSERT_FALSE(frames.empty());
+  EXPECT_FALSE(frames[0].has_motion);
+  EXPECT_NE(frames[0].flags & kFlagStaleInput, 0);
+  Planner planner{PlannerSettings{}};
+  EXPECT_EQ(planner.processFrame(frames[0]).status.state, PlannerState::BadInput);
+}
+
+}  // namespace
+}  // namespace ifar::planner

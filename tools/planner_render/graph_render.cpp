@@ -1,0 +1,142 @@
+#include "tools/planner_render/graph_render.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <unordered_map>
+#include <vector>
+
+#include <lcm/lcm-cpp.hpp>
+
+namespace ifar::planner_render {
+
+namespace {
+
+struct Extent {
+  geometry::Point min = geometry::Point::Constant(std::numeric_limits<double>::infinity());
+  geometry::Point max = geometry::Point::Constant(-std::numeric_limits<double>::infinity());
+  void add(double x, double y)
+  {
+    if (std::isfinite(x) && std::isfinite(y)) {
+      min = min.cwiseMin(geometry::Point(x, y));
+      max = max.cwiseMax(geometry::Point(x, y));
+    }
+  }
+  bool empty() const { return !(min.x() <= max.x()); }
+};
+
+geometry::Polygon outline(const polygon_t& polygon)
+{
+  geometry::Polygon points;
+  const std::size_t count = std::min(polygon.x.size(), polygon.y.size());
+  for (std::size_t index = 0; index < count; ++index) {
+    points.emplace_back(polygon.x[index], polygon.y[index]);
+  }
+  return points;
+}
+
+}  // namespace
+
+render::Canvas renderGraph(const dv_graph_t& graph, const std::optional<path_t>& path,
+                           const RenderOptions& options)
+{
+  Extent extent;
+  for (const polygon_t& polygon : graph.polygons) {
+    for (std::size_t index = 0; index < std::min(polygon.x.size(), polygon.y.size()); ++index) {
+      extent.add(polygon.x[index], polygon.y[index]);
+    }
+  }
+  for (const graph_vertex_t& vertex : graph.vertices) {
+    extent.add(vertex.x, vertex.y);
+  }
+  if (path) {
+    for (const waypoint_t& waypoint : path->waypoints) {
+      extent.add(waypoint.x, waypoint.y);
+    }
+  }
+  if (extent.empty()) {
+    extent.add(0.0, 0.0);
+  }
+  const geometry::Point margin = geometry::Point::Constant(options.margin_m);
+  render::Canvas canvas(extent.min - margin, extent.max + margin, options.metres_per_pixel);
+
+  // Outlines are counter-clockwise, free-space holes clockwise (planner_messages.hpp): each class is
+  // filled, then its holes are cleared. Background first so movable objects stay visible on top.
+  const render::Color cleared{255, 255, 255};
+  for (const std::int8_t kind : {polygon_t::KIND_BACKGROUND, polygon_t::KIND_MOVABLE}) {
+    const render::Color color = kind == polygon_t::KIND_MOVABLE ? colors::kMovable : colors::kBackground;
+    for (const bool holes : {false, true}) {
+      for (const polygon_t& polygon : graph.polygons) {
+        const geometry::Polygon points = outline(polygon);
+        if (polygon.kind != kind || (geometry::signedArea(points) < 0.0) != holes) {
+          continue;
+        }
+        canvas.drawPolygon(
+            points, holes ? render::ShapeStyle{cleared, color, 2} : render::ShapeStyle{color, color, 1});
+      }
+    }
+  }
+  std::unordered_map<std::int64_t, geometry::Point> positions;
+  for (const graph_vertex_t& vertex : graph.vertices) {
+    positions[vertex.id] = geometry::Point(vertex.x, vertex.y);
+  }
+  for (const graph_edge_t& edge : graph.edges) {
+    const auto from = positions.find(edge.from_id);
+    const auto to = positions.find(edge.to_id);
+    if (from == positions.end() || to == positions.end()) {
+      continue;  // an edge naming a vertex the message does not hold: skipped
+    }
+    const bool interaction = edge.kind == graph_edge_t::KIND_INTERACTION;
+    canvas.drawSegment(from->second, to->second,
+                       interaction ? colors::kInteractionEdge : colors::kVisibilityEdge, interaction ? 3 : 2);
+  }
+  for (const auto& entry : positions) {
+    canvas.drawCircle(entry.second, 0.05, render::ShapeStyle{colors::kVertex, std::nullopt, 1});
+  }
+  if (path && path->valid && !path->waypoints.empty()) {
+    std::vector<geometry::Point> points;
+    for (const waypoint_t& waypoint : path->waypoints) {
+      points.emplace_back(waypoint.x, waypoint.y);
+    }
+    canvas.drawPolyline(points, colors::kPath, 3);
+    canvas.drawCircle(points.front(), 0.15, render::ShapeStyle{colors::kPath, colors::kVertex, 1});
+    canvas.drawCircle(points.back(), 0.15, render::ShapeStyle{std::nullopt, colors::kPath, 3});
+  }
+  canvas.drawLegend({{"background", colors::kBackground},
+                     {"movable", colors::kMovable},
+                     {"visibility edge", colors::kVisibilityEdge},
+                     {"interaction edge", colors::kInteractionEdge},
+                     {"path", colors::kPath}});
+  return canvas;
+}
+
+LastMessages readLastMessages(const std::string& log_path, const std::string& graph_channel,
+                              const std::string& path_channel)
+{
+  LastMessages last;
+  lcm::LogFile log(log_path, "r");
+  if (!log.good()) {
+    last.error = log_path + ": cannot open as an LCM log";
+    return last;
+  }
+  for (const lcm::LogEvent* event = log.readNextEvent(); event != nullptr; event = log.readNextEvent()) {
+    if (event->channel == graph_channel) {
+      dv_graph_t graph{};
+      if (graph.decode(event->data, 0, event->datalen) < 0) {
+        ++last.undecodable;
+      } else {
+        last.graph = std::move(graph);
+      }
+    } else if (event->channel == path_channel) {
+      path_t path{};
+      if (path.decode(event->data, 0, event->datalen) < 0) {
+        ++last.undecodable;
+      } else {
+        last.path = std::move(path);
+      }
+    }
+  }
+  return last;
+}
+
+}  // namespace ifar::planner_render

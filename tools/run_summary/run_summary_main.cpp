@@ -1,0 +1,151 @@
+// ifar run-summary LOG --goal X Y: what a recorded run achieved, from its LCM log: arrived or not, distance
+// driven and time (simulator ground truth, else POSE), pushes and replans (EXEC_STATUS), affordance
+// updates, and the executive's last mode and reason. --json prints the same as one JSON line.
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include <CLI/CLI.hpp>
+#include <lcm/lcm-cpp.hpp>
+
+#include "ifar/affordance_t.hpp"
+#include "ifar/exec_status_t.hpp"
+#include "ifar/path_t.hpp"
+#include "ifar/pose_t.hpp"
+#include "ifar/world_state_t.hpp"
+
+namespace {
+
+struct Track {
+  bool has_position = false;
+  double x = 0.0;
+  double y = 0.0;
+  double distance_m = 0.0;
+  std::int64_t first_utime = 0;
+  std::int64_t last_utime = 0;
+
+  void add(double new_x, double new_y, std::int64_t utime)
+  {
+    if (has_position) {
+      distance_m += std::hypot(new_x - x, new_y - y);
+    } else {
+      first_utime = utime;
+    }
+    has_position = true;
+    x = new_x;
+    y = new_y;
+    last_utime = utime;
+  }
+};
+
+template <typename Message>
+bool decode(const lcm::LogEvent& event, Message& message)
+{
+  return message.decode(event.data, 0, static_cast<int>(event.datalen)) == static_cast<int>(event.datalen);
+}
+
+std::string jsonEscape(const std::string& text)
+{
+  std::string out;
+  for (const char character : text) {
+    if (character == '"' || character == '\\') {
+      out += '\\';
+    }
+    out += (static_cast<unsigned char>(character) < 0x20) ? ' ' : character;
+  }
+  return out;
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+  CLI::App app{"Summarises a recorded run: arrival, distance, time, pushes, replans, affordance updates"};
+  std::string path;
+  double goal_x = 0.0;
+  double goal_y = 0.0;
+  double tolerance = 0.5;
+  bool json = false;
+  app.add_option("log", path, "the .lcmlog file")->required()->check(CLI::ExistingFile);
+  app.add_option("--goal-x", goal_x, "goal x, metres")->required();
+  app.add_option("--goal-y", goal_y, "goal y, metres")->required();
+  app.add_option("--tolerance", tolerance, "arrival radius, metres")->capture_default_str();
+  app.add_flag("--json", json, "one JSON line instead of text");
+  CLI11_PARSE(app, argc, argv);
+
+  lcm::LogFile log(path, "r");
+  if (!log.good()) {
+    std::fprintf(stderr, "ifar run-summary: error: cannot read '%s' as an LCM log\n", path.c_str());
+    return 1;
+  }
+  Track truth;
+  Track pose;
+  ifar::exec_status_t last_status{};
+  bool has_status = false;
+  bool arrived_mode = false;
+  int affordance_updates = 0;
+  int paths = 0;
+  int undecodable = 0;
+  while (const lcm::LogEvent* event = log.readNextEvent()) {
+    if (event->channel == "SIM_GROUND_TRUTH") {
+      ifar::world_state_t state{};
+      if (decode(*event, state)) {
+        truth.add(state.vehicle_x, state.vehicle_y, state.utime);
+      } else {
+        ++undecodable;
+      }
+    } else if (event->channel == "POSE") {
+      ifar::pose_t message{};
+      if (decode(*event, message)) {
+        pose.add(message.position[0], message.position[1], message.utime);
+      } else {
+        ++undecodable;
+      }
+    } else if (event->channel == "EXEC_STATUS") {
+      if (decode(*event, last_status)) {
+        has_status = true;
+        arrived_mode = arrived_mode || last_status.mode == ifar::exec_status_t::MODE_ARRIVED;
+      } else {
+        ++undecodable;
+      }
+    } else if (event->channel == "AFFORDANCE") {
+      ++affordance_updates;
+    } else if (event->channel == "GLOBAL_PATH") {
+      ++paths;
+    }
+  }
+  const Track& track = truth.has_position ? truth : pose;
+  if (!track.has_position) {
+    std::fprintf(stderr, "ifar run-summary: error: '%s' has neither SIM_GROUND_TRUTH nor POSE\n",
+                 path.c_str());
+    return 1;
+  }
+  const double remaining = std::hypot(goal_x - track.x, goal_y - track.y);
+  const bool arrived = remaining <= tolerance || arrived_mode;
+  const double seconds = static_cast<double>(track.last_utime - track.first_utime) * 1e-6;
+  const int pushes = has_status ? last_status.pushes : 0;
+  const int replans = has_status ? last_status.replans : 0;
+  const std::string reason = has_status ? last_status.reason : "no EXEC_STATUS in the log";
+  if (json) {
+    std::printf(
+        "{\"arrived\": %s, \"distance_m\": %.3f, \"time_s\": %.2f, \"remaining_m\": %.3f, \"final_x\": %.3f, "
+        "\"final_y\": %.3f, \"pushes\": %d, \"replans\": %d, \"affordance_updates\": %d, \"paths\": %d, "
+        "\"source\": \"%s\", \"last_reason\": \"%s\", \"log\": \"%s\"}\n",
+        arrived ? "true" : "false", track.distance_m, seconds, remaining, track.x, track.y, pushes, replans,
+        affordance_updates, paths, truth.has_position ? "SIM_GROUND_TRUTH" : "POSE",
+        jsonEscape(reason).c_str(), jsonEscape(path).c_str());
+  } else {
+    std::printf("arrived:            %s (%.2f m from the goal (%.2f, %.2f))\n", arrived ? "yes" : "no",
+                remaining, goal_x, goal_y);
+    std::printf("distance driven:    %.2f m in %.1f s (%s)\n", track.distance_m, seconds,
+                truth.has_position ? "simulator ground truth" : "POSE");
+    std::printf("pushes / replans:   %d / %d; affordance updates %d; %d paths published\n", pushes, replans,
+                affordance_updates, paths);
+    std::printf("executive at end:   %s\n", reason.c_str());
+    if (undecodable > 0) {
+      std::printf("skipped:            %d messages that did not decode\n", undecodable);
+    }
+  }
+  return 0;
+}
