@@ -1,5 +1,6 @@
 // The planner frame pipeline on simulated VLP-16 packets, and every kind of bad input issue 5 names.
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -83,6 +84,60 @@ TEST(PlannerCore, SimulatedRoomGivesPolygonsGraphAndPathAroundTheBox)
   EXPECT_TRUE(beside_box);
 
   EXPECT_GT(result.status.timings.total_ms, 0.0);
+}
+
+// Issue 5: polygons from a simulated scan of a known world match the world's inflated obstacles within two
+// cells. Every vertex the planner extracts from the simulator's VLP-16 packets lies within two cells of the
+// inflation radius around some wall or object of the world (outer outlines and free-space holes alike),
+// and the box is found where it stands.
+TEST(PlannerCore, PolygonsFromSimulatedPacketsMatchTheInflatedWorldWithinTwoCells)
+{
+  const sim::World world = sim::builtinPushRoom(200.0);
+  std::vector<geometry::Polygon> world_outlines;
+  for (const auto& obstacle : world.obstacles) {
+    world_outlines.push_back(obstacle.outline);
+  }
+  for (const auto& object : world.objects) {
+    geometry::Polygon placed;
+    for (const auto& corner : object.outline) {
+      placed.push_back(object.pose.transform(corner));
+    }
+    world_outlines.push_back(placed);
+  }
+  const PlannerSettings settings{};
+  const double inflation = settings.perception.inflation_radius_m;
+  const double two_cells = 2.0 * settings.perception.cell_size_m;
+
+  const std::vector<FrameInput> frames = pushRoomFrames();
+  ASSERT_GE(frames.size(), 2U);
+  Planner planner{settings};
+  const FrameResult result = planner.processFrame(frames[1]);
+  ASSERT_FALSE(result.polygons.empty());
+  std::size_t vertices = 0;
+  for (const auto& polygon : result.polygons) {
+    for (const auto& vertex : polygon.vertices) {
+      double nearest = std::numeric_limits<double>::infinity();
+      for (const auto& outline : world_outlines) {
+        const double distance =
+            geometry::containsPoint(outline, vertex) ? 0.0 : geometry::distanceToBoundary(outline, vertex);
+        nearest = std::min(nearest, distance);
+      }
+      EXPECT_NEAR(nearest, inflation, two_cells)
+          << "vertex (" << vertex.x() << ", " << vertex.y() << ") is " << nearest
+          << " m from the nearest world obstacle, expected the inflation radius " << inflation;
+      ++vertices;
+    }
+  }
+  EXPECT_GT(vertices, 8U);
+
+  bool box_found = false;
+  for (const auto& polygon : result.polygons) {
+    if (polygon.obstacle_class == perception::ObstacleClass::Movable) {
+      const geometry::Point middle = geometry::centroid(polygon.vertices);
+      box_found = box_found || (middle - world.objects.front().pose.position()).norm() < two_cells;
+    }
+  }
+  EXPECT_TRUE(box_found) << "no movable polygon centred within two cells of the box";
 }
 
 TEST(PlannerCore, NoGoalIsIdle)
