@@ -4,6 +4,7 @@
 #include <chrono>
 
 #include "drivers/can/error_frame.hpp"
+#include "drivers/can/frame_queue.hpp"
 
 namespace ifar::can {
 namespace {
@@ -120,20 +121,8 @@ ReceiveResult LcmBridgeBus::receive(std::chrono::microseconds timeout)
 {
   const auto deadline = std::chrono::steady_clock::now() + timeout;
   while (true) {
-    while (!queue_.empty()) {
-      const Frame frame = queue_.front();
-      queue_.pop_front();
-      if (frame.error()) {
-        ++counters_.error_frames;
-        if (const auto next = stateAfterErrorFrame(frame, state_)) {
-          state_ = *next;
-        }
-        return {IoStatus::kOk, frame, {}};
-      }
-      if (accepts(filters_, frame)) {
-        ++counters_.frames_received;
-        return {IoStatus::kOk, frame, {}};
-      }
+    if (const auto frame = takeAcceptedFrame(queue_, filters_, state_, counters_)) {
+      return {IoStatus::kOk, *frame, {}};
     }
     const auto remaining =
         std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "drivers/can/error_frame.hpp"
+#include "drivers/can/frame_queue.hpp"
 
 namespace ifar::can {
 
@@ -89,20 +90,8 @@ ReceiveResult MemoryBus::receive(std::chrono::microseconds timeout)
   std::unique_lock<std::mutex> lock(mutex_);
   const auto deadline = std::chrono::steady_clock::now() + timeout;
   while (true) {
-    while (!queue_.empty()) {
-      Frame frame = queue_.front();
-      queue_.pop_front();
-      if (frame.error()) {
-        ++counters_.error_frames;
-        if (const auto next = stateAfterErrorFrame(frame, state_)) {
-          state_ = *next;
-        }
-        return {IoStatus::kOk, frame, {}};
-      }
-      if (accepts(filters_, frame)) {
-        ++counters_.frames_received;
-        return {IoStatus::kOk, frame, {}};
-      }
+    if (const auto frame = takeAcceptedFrame(queue_, filters_, state_, counters_)) {
+      return {IoStatus::kOk, *frame, {}};
     }
     if (arrived_.wait_until(lock, deadline) == std::cv_status::timeout && queue_.empty()) {
       return {IoStatus::kTimeout, {}, {}};
