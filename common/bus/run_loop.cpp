@@ -65,13 +65,21 @@ RunLoop::RunLoop(const std::string& url, std::shared_ptr<spdlog::logger> logger)
                              (resolveLcmUrl(url).empty() ? std::string("(default)") : resolveLcmUrl(url)) +
                              "' (is multicast routed? see docs/deploy.md)");
   }
-  // Signals become readable events on a file descriptor instead of asynchronous handlers.
+  if (!signals_blocked_) {
+    throw std::runtime_error("cannot block SIGINT/SIGTERM for the run loop");
+  }
+  // Signals (blocked since before LCM started) become readable events on a file descriptor.
   const sigset_t signals = terminationSignals();
-  pthread_sigmask(SIG_BLOCK, &signals, nullptr);
   signal_fd_ = signalfd(-1, &signals, SFD_NONBLOCK | SFD_CLOEXEC);
   if (signal_fd_ < 0) {
     throw std::runtime_error("cannot create a signalfd for SIGINT/SIGTERM");
   }
+}
+
+bool RunLoop::blockTerminationSignals()
+{
+  const sigset_t signals = terminationSignals();
+  return pthread_sigmask(SIG_BLOCK, &signals, nullptr) == 0;
 }
 
 RunLoop::~RunLoop()

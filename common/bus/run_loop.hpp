@@ -85,6 +85,10 @@ class RunLoop {
   int nextTimeoutMs() const;
 
   struct Subscribers;
+  /// Blocks SIGINT/SIGTERM before LCM starts, so no thread LCM creates can take them with the default
+  /// action; they are read from signal_fd_ instead.
+  static bool blockTerminationSignals();
+  bool signals_blocked_ = blockTerminationSignals();
   lcm::LCM lcm_;
   std::shared_ptr<spdlog::logger> logger_;
   std::unique_ptr<Subscribers> subscribers_;  // owns the objects LCM calls back into
