@@ -224,6 +224,20 @@ T ConfigNode::optional(const std::string& key, const T& fallback) const
   return has(key) ? required<T>(key) : fallback;
 }
 
+double ConfigNode::requiredPositive(const std::string& key) const
+{
+  const double value = required<double>(key);
+  if (!(value > 0.0)) {
+    fail(key, "must be greater than zero, got " + std::to_string(value));
+  }
+  return value;
+}
+
+double ConfigNode::optionalPositive(const std::string& key, double fallback) const
+{
+  return has(key) ? requiredPositive(key) : fallback;
+}
+
 ConfigNode ConfigNode::child(const std::string& key) const
 {
   std::string full_path;

@@ -44,6 +44,12 @@ class ConfigNode {
   template <typename T>
   T optional(const std::string& key, const T& fallback) const;
 
+  /// required<double>(key) that must be greater than zero (NaN fails too), else ConfigError
+  /// "<file>: key '<k>': must be greater than zero, got <value>".
+  double requiredPositive(const std::string& key) const;
+  /// optional<double>(key, fallback) with the same check on a value that is present.
+  double optionalPositive(const std::string& key, double fallback) const;
+
   bool has(const std::string& key) const;
 
   /// The map at a dotted key path. Throws ConfigError when missing or not a map.

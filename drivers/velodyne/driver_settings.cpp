@@ -12,15 +12,6 @@ std::uint16_t readPort(const common::ConfigNode& node, const std::string& key, s
   return static_cast<std::uint16_t>(port);
 }
 
-double readPositive(const common::ConfigNode& node, const std::string& key, double fallback)
-{
-  const double value = node.optional<double>(key, fallback);
-  if (!(value > 0.0)) {
-    node.fail(key, "must be greater than zero");
-  }
-  return value;
-}
-
 }  // namespace
 
 DriverSettings loadDriverSettings(const common::ConfigNode& node)
@@ -38,9 +29,9 @@ DriverSettings loadDriverSettings(const common::ConfigNode& node)
   settings.data_channel = node.optional<std::string>("data_channel", settings.data_channel);
   settings.position_channel = node.optional<std::string>("position_channel", settings.position_channel);
   settings.status_channel = node.optional<std::string>("status_channel", settings.status_channel);
-  settings.status_period_s = readPositive(node, "status_period_s", settings.status_period_s);
+  settings.status_period_s = node.optionalPositive("status_period_s", settings.status_period_s);
   settings.bad_packet_log_interval_s =
-      readPositive(node, "bad_packet_log_interval_s", settings.bad_packet_log_interval_s);
+      node.optionalPositive("bad_packet_log_interval_s", settings.bad_packet_log_interval_s);
   return settings;
 }
 

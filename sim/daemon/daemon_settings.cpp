@@ -3,15 +3,6 @@
 namespace ifar::sim {
 namespace {
 
-double positive(const common::ConfigNode& node, const std::string& key, double fallback)
-{
-  const double value = node.optional<double>(key, fallback);
-  if (!(value > 0.0)) {
-    node.fail(key, "must be positive");
-  }
-  return value;
-}
-
 double nonNegative(const common::ConfigNode& node, const std::string& key, double fallback)
 {
   const double value = node.optional<double>(key, fallback);
@@ -36,9 +27,9 @@ SimDaemonSettings loadSimDaemonSettings(const common::ConfigNode& root)
 
   if (root.has("physics")) {
     const auto physics = root.child("physics");
-    settings.simulator.physics.step_seconds = 1.0 / positive(physics, "step_hz", 200.0);
-    settings.simulator.physics.surface_friction = positive(physics, "surface_friction", 0.5);
-    settings.simulator.physics.bumper_depth_m = positive(physics, "bumper_depth_m", 0.05);
+    settings.simulator.physics.step_seconds = 1.0 / physics.optionalPositive("step_hz", 200.0);
+    settings.simulator.physics.surface_friction = physics.optionalPositive("surface_friction", 0.5);
+    settings.simulator.physics.bumper_depth_m = physics.optionalPositive("bumper_depth_m", 0.05);
   }
   if (root.has("lidar")) {
     const auto lidar = root.child("lidar");
@@ -49,21 +40,21 @@ SimDaemonSettings loadSimDaemonSettings(const common::ConfigNode& root)
       lidar.fail("port", "must be a UDP port, 1..65535");
     }
     settings.lidar_port = static_cast<std::uint16_t>(port);
-    settings.simulator.lidar_rotation_hz = positive(lidar, "rotation_hz", 10.0);
-    settings.simulator.lidar_max_range_m = positive(lidar, "max_range_m", 100.0);
-    settings.simulator.lidar_scene.cell_size_m = positive(lidar, "grid_cell_m", 2.0);
+    settings.simulator.lidar_rotation_hz = lidar.optionalPositive("rotation_hz", 10.0);
+    settings.simulator.lidar_max_range_m = lidar.optionalPositive("max_range_m", 100.0);
+    settings.simulator.lidar_scene.cell_size_m = lidar.optionalPositive("grid_cell_m", 2.0);
   }
   if (root.has("pose")) {
     const auto pose = root.child("pose");
     settings.pose_channel = pose.optional<std::string>("channel", settings.pose_channel);
-    settings.pose_rate_hz = positive(pose, "rate_hz", settings.pose_rate_hz);
+    settings.pose_rate_hz = pose.optionalPositive("rate_hz", settings.pose_rate_hz);
     settings.simulator.pose_noise_position_m = nonNegative(pose, "noise_position_m", 0.0);
     settings.simulator.pose_noise_heading_rad = nonNegative(pose, "noise_heading_rad", 0.0);
   }
   if (root.has("ground_truth")) {
     const auto truth = root.child("ground_truth");
     settings.ground_truth_channel = truth.optional<std::string>("channel", settings.ground_truth_channel);
-    settings.ground_truth_rate_hz = positive(truth, "rate_hz", settings.ground_truth_rate_hz);
+    settings.ground_truth_rate_hz = truth.optionalPositive("rate_hz", settings.ground_truth_rate_hz);
   }
   if (root.has("commands")) {
     const auto commands = root.child("commands");
@@ -76,7 +67,7 @@ SimDaemonSettings loadSimDaemonSettings(const common::ConfigNode& root)
       commands.fail("source", "must be 'can' (RPDO frames to the emulated drives) or 'lcm' (velocity_cmd_t)");
     }
     settings.velocity_channel = commands.optional<std::string>("velocity_channel", settings.velocity_channel);
-    settings.command_timeout_s = positive(commands, "timeout_s", settings.command_timeout_s);
+    settings.command_timeout_s = commands.optionalPositive("timeout_s", settings.command_timeout_s);
   }
   if (root.has("can_nodes")) {
     const auto nodes = root.child("can_nodes");

@@ -141,3 +141,21 @@ TEST(Config, AcceptAllUnderSkipsAFreeFormSection)
 }
 
 }  // namespace
+
+namespace {
+
+TEST(Config, PositiveNumbersAreCheckedWithKeyAndValue)
+{
+  const auto root = ConfigNode::loadString("rate: 2.5\nzero: 0\nnegative: -1.5\nnan: .nan\n", "r.yaml");
+  EXPECT_DOUBLE_EQ(root.requiredPositive("rate"), 2.5);
+  EXPECT_DOUBLE_EQ(root.optionalPositive("absent", 4.0), 4.0);
+  EXPECT_EQ(errorOf([&] { root.requiredPositive("zero"); }),
+            "r.yaml: key 'zero': must be greater than zero, got 0.000000");
+  EXPECT_EQ(errorOf([&] { root.optionalPositive("negative", 1.0); }),
+            "r.yaml: key 'negative': must be greater than zero, got -1.500000");
+  EXPECT_EQ(
+      errorOf([&] { root.requiredPositive("nan"); }).rfind("r.yaml: key 'nan': must be greater than zero", 0),
+      0U);
+}
+
+}  // namespace
