@@ -102,16 +102,21 @@ void RunLoop::subscribeRaw(const std::string& channel,
 
 void RunLoop::guard(const std::string& channel, const std::function<void()>& body)
 {
+  // Nothing may unwind into LCM's C code: every exception is caught, counted and logged.
+  std::string problem;
   try {
     body();
+    return;
   } catch (const std::exception& error) {
-    ++handler_errors_;
-    const std::int64_t now = common::monotonicMicroseconds();
-    if (now - last_error_log_us_ >= kErrorLogIntervalUs) {
-      last_error_log_us_ = now;
-      logger_->error("handler for {} failed: {} ({} handler errors so far)", channel, error.what(),
-                     handler_errors_);
-    }
+    problem = error.what();
+  } catch (...) {
+    problem = "an exception that is not a std::exception";
+  }
+  ++handler_errors_;
+  const std::int64_t now = common::monotonicMicroseconds();
+  if (now - last_error_log_us_ >= kErrorLogIntervalUs) {
+    last_error_log_us_ = now;
+    logger_->error("handler for {} failed: {} ({} handler errors so far)", channel, problem, handler_errors_);
   }
 }
 
