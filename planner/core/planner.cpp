@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <utility>
 
+#include "planner/core/occupancy_rectangles.hpp"
 #include "planner/graph/graph_file.hpp"
 #include "planner/graph/merge.hpp"
 #include "planner/graph/visibility_builder.hpp"
@@ -30,16 +32,15 @@ void appendMessage(std::string& message, const std::string& part)
 }
 
 /// Obstacle loops of the layer: outer borders as they are, free-space holes reversed so the blocked side
-/// stays on the left. Movable outlines carry a per-frame object id (index + 1), background 0.
-std::vector<graph::ObstacleLoop> loopsOf(const std::vector<perception::LayerPolygon>& polygons)
+/// stays on the left. Movable outlines carry their tracked object's id, background 0.
+std::vector<graph::ObstacleLoop> loopsOf(const std::vector<perception::LayerPolygon>& polygons,
+                                         const std::vector<std::int64_t>& polygon_ids)
 {
   std::vector<graph::ObstacleLoop> loops;
   loops.reserve(polygons.size());
   for (std::size_t index = 0; index < polygons.size(); ++index) {
     const perception::LayerPolygon& polygon = polygons[index];
-    const std::int64_t object_id = polygon.obstacle_class == perception::ObstacleClass::Movable
-                                       ? static_cast<std::int64_t>(index) + 1
-                                       : 0;
+    const std::int64_t object_id = index < polygon_ids.size() ? polygon_ids[index] : 0;
     if (polygon.boundary == perception::BoundaryKind::Outer) {
       loops.push_back(graph::loopFromPolygon(polygon.vertices, object_id));
     } else {
@@ -52,9 +53,32 @@ std::vector<graph::ObstacleLoop> loopsOf(const std::vector<perception::LayerPoly
   return loops;
 }
 
+PlannerSettings completed(PlannerSettings settings)
+{
+  // The pusher is the vehicle: always derived from it, whatever the caller left in the struct.
+  settings.interaction.pusher = interaction::PusherSettings::fromVehicle(settings.vehicle);
+  return settings;
+}
+
+TrackerSettings trackerSettings(const PlannerSettings& settings)
+{
+  TrackerSettings tracker;
+  tracker.association_distance_m = settings.interaction.loop.track_association_m;
+  tracker.drop_after_frames = settings.interaction.loop.track_drop_frames;
+  tracker.view_radius_m = settings.graph.view_radius_m;
+  return tracker;
+}
+
+constexpr double kGravity = 9.81;
+
 }  // namespace
 
-Planner::Planner(const PlannerSettings& settings) : settings_(settings) {}
+Planner::Planner(const PlannerSettings& settings)
+    : settings_(completed(settings)),
+      tracker_(trackerSettings(settings_)),
+      interaction_(settings_.interaction)
+{
+}
 
 bool Planner::setGoal(const Goal& goal)
 {
@@ -167,9 +191,30 @@ FrameResult Planner::processFrame(const FrameInput& frame)
     known_extent_ = std::make_pair(grid.origin, layer_max);
   }
 
+  // Stable ids for the movable outlines.
+  std::vector<geometry::Polygon> movable_outlines;
+  std::vector<std::size_t> movable_polygons;
+  for (std::size_t index = 0; index < result.polygons.size(); ++index) {
+    const perception::LayerPolygon& polygon = result.polygons[index];
+    if (polygon.obstacle_class == perception::ObstacleClass::Movable &&
+        polygon.boundary == perception::BoundaryKind::Outer) {
+      movable_outlines.push_back(polygon.vertices);
+      movable_polygons.push_back(index);
+    }
+  }
+  TrackingResult tracked = tracker_.update(movable_outlines, robot);
+  result.polygon_ids.assign(result.polygons.size(), 0);
+  for (std::size_t outline = 0; outline < movable_polygons.size(); ++outline) {
+    result.polygon_ids[movable_polygons[outline]] = tracked.polygon_ids[outline];
+  }
+  for (const std::int64_t dropped : tracked.dropped) {
+    interaction_.drop(dropped, global_);
+  }
+
   // Local DV-graph of this frame's obstacles.
   Clock::time_point stage_start = Clock::now();
-  obstacles_.emplace(loopsOf(result.polygons), std::nullopt, settings_.graph.bucket_size_m);
+  obstacles_.emplace(loopsOf(result.polygons, result.polygon_ids), std::nullopt,
+                     settings_.graph.bucket_size_m);
   graph::DvGraph local;
   graph::addReducedVisibilityGraph(*obstacles_, local);
   status.timings.local_graph_ms = millisecondsSince(stage_start);
@@ -183,8 +228,36 @@ FrameResult Planner::processFrame(const FrameInput& frame)
     graph::mergeLocalIntoGlobal(graph::toLocalLayer(local), view, settings_.graph, global_);
   }
   status.timings.merge_ms = millisecondsSince(stage_start);
-  // TODO(interaction): connectivity analysis and push planning (planner/interaction) go here.
-  status.timings.interaction_ms = 0.0;
+  // Interaction: waypoints and push plans for the movable objects within reach (paper Algorithm 1).
+  stage_start = Clock::now();
+  if (settings_.interaction_enabled && !empty_scan) {
+    InteractionFrame interaction_frame;
+    interaction_frame.robot = robot;
+    interaction_frame.reach_m = settings_.graph.view_radius_m;
+    geometry::Point region_minimum = geometry::Point::Constant(std::numeric_limits<double>::infinity());
+    geometry::Point region_maximum = -region_minimum;
+    for (TrackedObject& object : tracked.seen) {
+      if ((object.centroid - robot).norm() <= interaction_frame.reach_m) {
+        for (const geometry::Point& point : object.outline) {
+          region_minimum = region_minimum.cwiseMin(point);
+          region_maximum = region_maximum.cwiseMax(point);
+        }
+      }
+      interaction_frame.scene.movable.push_back(object.outline);
+      interaction_frame.objects.push_back(std::move(object));
+    }
+    if (region_minimum.allFinite()) {
+      // Everything the connectivity window and the push search can reach around the objects.
+      const interaction::InteractionSettings& planning = settings_.interaction;
+      const double margin = std::max(planning.connectivity.window_margin_m, planning.search.search_radius_m) +
+                            planning.pusher.bumper_to_axle_m + planning.pusher.inflation_m;
+      interaction_frame.scene.background = occupancyRectangles(
+          grid, perceived.layer.background_occupancy, region_minimum - geometry::Point::Constant(margin),
+          region_maximum + geometry::Point::Constant(margin));
+      interaction_.update(interaction_frame, *obstacles_, global_);
+    }
+  }
+  status.timings.interaction_ms = millisecondsSince(stage_start);
 
   ++frames_;
   last_frame_utime_ = frame.utime;
@@ -245,6 +318,25 @@ void Planner::search(FrameResult& result)
     path.waypoints = found.path;
     path.length_m = found.length;
     path.cost = found.cost;
+    for (std::size_t index = 1; index < path.waypoints.size(); ++index) {
+      const graph::PathPoint& point = path.waypoints[index];
+      if (point.interaction == graph::kNoInteraction) {
+        continue;
+      }
+      const StoredPush* stored = interaction_.push(point.push_plan);
+      if (stored == nullptr) {
+        continue;  // cannot happen: edges and plans are replaced together
+      }
+      PathPush push;
+      push.object_id = point.object_id;
+      push.from_waypoint = index - 1;
+      push.to_waypoint = index;
+      push.from_vertex = path.waypoints[index - 1].vertex;
+      push.to_vertex = point.vertex;
+      push.plan = stored->plan;
+      push.affordance = stored->affordance;
+      path.pushes.push_back(std::move(push));
+    }
     const bool arrived = (*robot_ - found.goal).norm() <= settings_.arrival_radius_m;
     status.state = arrived ? PlannerState::Arrived : PlannerState::Planning;
   } else {
@@ -253,6 +345,47 @@ void Planner::search(FrameResult& result)
   }
   last_path_ = path;
   result.path = std::move(path);
+}
+
+FrameResult Planner::applyAffordance(const AffordanceUpdate& update)
+{
+  const Clock::time_point start = Clock::now();
+  std::string problem;
+  AffordanceOutcome outcome = AffordanceOutcome::UnknownObject;
+  if (!std::isfinite(update.push_force_n) || !std::isfinite(update.affordance)) {
+    problem = "affordance for object " + std::to_string(update.object_id) +
+              " rejected: push_force_n and affordance must be finite";
+  } else {
+    interaction::ObjectPhysics physics = interaction_.physicsOf(update.object_id);
+    // The mass stays the prior; the measurement moves the ground friction (what mu is).
+    if (update.affordance > 0.0) {
+      physics.ground_friction = update.affordance;
+    } else if (update.push_force_n > 0.0 && physics.mass_kg > 0.0) {
+      physics.ground_friction = update.push_force_n / (physics.mass_kg * kGravity);
+    }
+    outcome =
+        interaction_.applyAffordance(update.object_id, tracker_.contains(update.object_id), update.pushable,
+                                     physics, obstacles_ ? &*obstacles_ : nullptr, global_);
+    if (outcome == AffordanceOutcome::UnknownObject) {
+      problem =
+          "affordance for object " + std::to_string(update.object_id) + " rejected: no such object tracked";
+    }
+  }
+  if (!problem.empty()) {
+    ++bad_inputs_;
+  }
+  const double update_ms = millisecondsSince(start);
+  FrameResult result = replan();
+  appendMessage(result.status.message, problem);
+  if (problem.empty()) {
+    appendMessage(result.status.message,
+                  outcome == AffordanceOutcome::Removed
+                      ? "object " + std::to_string(update.object_id) + " unpushable: edges removed"
+                      : "object " + std::to_string(update.object_id) + " physics updated");
+  }
+  result.status.timings.interaction_ms = update_ms;
+  result.status.timings.total_ms += update_ms;
+  return result;
 }
 
 }  // namespace ifar::planner

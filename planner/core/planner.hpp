@@ -4,6 +4,7 @@
 // carries per-stage timings and input flags. Deterministic: the same frames and goals give the same graph
 // and path. Not thread safe: one thread owns a Planner (the daemon's worker).
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -12,11 +13,15 @@
 #include "common/geometry/point.hpp"
 #include "common/vehicle.hpp"
 #include "planner/core/frame_assembler.hpp"
+#include "planner/core/interaction_stage.hpp"
+#include "planner/core/object_tracker.hpp"
 #include "planner/core/planner_status.hpp"
 #include "planner/graph/dv_graph.hpp"
 #include "planner/graph/obstacle_set.hpp"
 #include "planner/graph/search.hpp"
 #include "planner/graph/settings.hpp"
+#include "planner/interaction/interaction_settings.hpp"
+#include "planner/interaction/push_plan.hpp"
 #include "planner/perception/local_layer.hpp"
 #include "planner/perception/perception_settings.hpp"
 
@@ -25,13 +30,28 @@ namespace ifar::planner {
 struct PlannerSettings {
   perception::PerceptionSettings perception;
   graph::GraphSettings graph;
-  common::VehicleSettings vehicle;  // the lidar mount comes from here
-  double arrival_radius_m = 0.5;    // the vehicle this close to the goal has arrived
+  common::VehicleSettings vehicle;               // the lidar mount comes from here
+  double arrival_radius_m = 0.5;                 // the vehicle this close to the goal has arrived
+  interaction::InteractionSettings interaction;  // from planner.yaml `interaction:` section
+  bool interaction_enabled = true;               // false = "FAR mode": no interaction edges at all
 };
 
 struct Goal {
   std::int64_t id = 0;
   geometry::Point position = geometry::Point::Zero();  // world frame, metres
+};
+
+/// One interaction edge used by a path: push `object_id` from waypoint `from_waypoint` to `to_waypoint`.
+struct PathPush {
+  std::int64_t object_id = -1;  // stable id of the tracked movable object (same across frames)
+  std::size_t from_waypoint =
+      0;  // index in PlannedPath::waypoints of the topological waypoint where pushing starts
+  std::size_t to_waypoint =
+      0;  // index of the topological waypoint reached when the passage is open (from + 1)
+  graph::VertexId from_vertex = graph::kNoVertex;
+  graph::VertexId to_vertex = graph::kNoVertex;
+  interaction::PushPlan plan;  // status Found; world frame
+  double affordance = 0.0;     // mu the plan assumed (friction force / weight)
 };
 
 struct PlannedPath {
@@ -40,11 +60,20 @@ struct PlannedPath {
   std::vector<graph::PathPoint> waypoints;  // robot first, goal last
   double length_m = 0.0;
   double cost = 0.0;
+  std::vector<PathPush> pushes;  // in path order; waypoints[to_waypoint].interaction != kNoInteraction
+};
+
+struct AffordanceUpdate {
+  std::int64_t object_id = -1;
+  bool pushable = true;       // false: remove the object's interaction edges for good
+  double push_force_n = 0.0;  // measured force to keep it sliding (<= 0: unknown)
+  double affordance = 0.0;    // measured mu (<= 0: unknown)
 };
 
 struct FrameResult {
   PlannerStatus status;
   std::vector<perception::LayerPolygon> polygons;  // this frame's local polygons, world frame
+  std::vector<std::int64_t> polygon_ids;  // per polygon: the tracked object's stable id, 0 = background
   PlannedPath path;
   std::int64_t sequence = 0;  // graph updates so far (equals status.frames)
 };
@@ -67,8 +96,19 @@ class Planner {
   /// input is counted and the reason (file and line) is returned; empty on success.
   std::string loadPriorGraph(const std::string& path);
 
+  /// Updates the object's physics estimate or marks it unpushable, redoes/removes its edges and
+  /// searches again at once (no frame needed). Unknown object id: counted as bad input, message says so.
+  FrameResult applyAffordance(const AffordanceUpdate& update);
+
   const graph::DvGraph& graph() const { return global_; }
   std::int64_t badInputs() const { return bad_inputs_; }
+  /// The physics the planner assumes for a movable object (the configured prior until AFFORDANCE).
+  interaction::ObjectPhysics objectPhysics(std::int64_t object_id) const
+  {
+    return interaction_.physicsOf(object_id);
+  }
+  /// How often interaction planning ran for the object (cache misses), for diagnostics and tests.
+  std::size_t interactionPlans(std::int64_t object_id) const { return interaction_.plansMade(object_id); }
 
  private:
   /// Search and state for the current robot position; fills result.path and the status.
@@ -78,6 +118,8 @@ class Planner {
 
   PlannerSettings settings_;
   graph::DvGraph global_;
+  ObjectTracker tracker_;
+  InteractionStage interaction_;
   std::optional<graph::ObstacleSet> obstacles_;  // last frame's observed obstacles, for attachment
   std::optional<Goal> goal_;
   std::optional<geometry::Point> robot_;

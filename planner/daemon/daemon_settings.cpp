@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "planner/graph/settings.hpp"
+#include "planner/interaction/settings_loader.hpp"
 #include "planner/perception/perception_settings.hpp"
 
 namespace ifar::planner {
@@ -42,6 +43,7 @@ DaemonSettings loadDaemonSettings(const common::ConfigNode& root)
   }
   const common::ConfigNode node = root.child("daemon");
   settings.rate_hz = positive(node, "rate_hz", settings.rate_hz);
+  settings.path_resend_hz = positive(node, "path_resend_hz", settings.path_resend_hz);
   settings.input.stale_input_age_s = positive(node, "stale_input_age_s", settings.input.stale_input_age_s);
   settings.input.max_future_s = positive(node, "max_future_s", settings.input.max_future_s);
   settings.input.pose_history_s = positive(node, "pose_history_s", settings.input.pose_history_s);
@@ -73,8 +75,11 @@ PlannerConfig loadPlannerConfig(const common::ConfigNode& root)
   config.daemon = loadDaemonSettings(root);
   config.planner.arrival_radius_m = config.daemon.arrival_radius_m;
   if (root.has("interaction")) {
-    // Read by the interaction planner once it is wired in; accepted here so the file stays valid.
-    root.acceptAllUnder("interaction");
+    const common::ConfigNode interaction = root.child("interaction");
+    config.planner.interaction_enabled =
+        interaction.optional<bool>("enabled", config.planner.interaction_enabled);
+    // The pusher part is derived from the vehicle again when the Planner is built.
+    config.planner.interaction = interaction::loadInteractionSettings(interaction, common::VehicleSettings{});
   }
   root.rejectUnknownKeys();
   return config;

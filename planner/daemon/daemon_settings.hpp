@@ -23,6 +23,7 @@ struct PlannerChannels {
 
 struct DaemonSettings {
   double rate_hz = 2.5;             // graph updates and publications per second (the paper's 2.5 Hz)
+  double path_resend_hz = 10.0;     // the last GLOBAL_PATH is sent again this often (fresh utime)
   InputSettings input;              // stale and future limits for packets and poses
   double detector_max_age_s = 1.0;  // detector outlines older than this fall back to reflectivity
   double arrival_radius_m = 0.5;    // the vehicle this close to the goal has arrived
@@ -36,9 +37,9 @@ struct DaemonSettings {
 /// common::ConfigError naming file and key.
 DaemonSettings loadDaemonSettings(const common::ConfigNode& root);
 
-/// The whole planner.yaml: perception, graph and daemon sections (the vehicle is read separately from
-/// daemon.vehicle_config). An `interaction` section is accepted for the interaction planner. Unknown keys
-/// anywhere throw common::ConfigError.
+/// The whole planner.yaml: perception, graph, interaction and daemon sections (the vehicle is read
+/// separately from daemon.vehicle_config; the interaction pusher comes from it). Unknown keys anywhere
+/// throw common::ConfigError.
 struct PlannerConfig {
   PlannerSettings planner;  // vehicle left at its defaults
   DaemonSettings daemon;

@@ -4,10 +4,12 @@
 // kept for the next tick and counted as dropped; revolutions between ticks are skipped by design (their
 // input flags carry over).
 
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "common/bus/run_loop.hpp"
 #include "common/daemon_main.hpp"
@@ -26,6 +28,8 @@ namespace ifar::planner {
 namespace {
 
 constexpr int kVelodyneDataPort = 2368;
+// Planner::applyAffordance names a refused estimate (unknown id, non-finite values) this way.
+constexpr const char* kAffordanceRejected = "affordance for object";
 
 /// Everything the LCM thread owns between callbacks.
 struct LoopState {
@@ -41,6 +45,9 @@ struct LoopState {
   std::int64_t bad_messages = 0;         // malformed detector polygons, non-data packets of the wrong size
   std::int64_t published = 0;
   std::int64_t affordances = 0;
+  std::int64_t bad_affordances = 0;  // non-finite values (unknown ids are counted by the planner)
+  std::vector<AffordanceUpdate> pending_affordances;  // wait for the worker, applied before the next search
+  std::optional<path_t> last_path;                    // resent between updates with a fresh utime
   common::RateLimiter input_log{5'000'000};
 };
 
@@ -96,7 +103,7 @@ int runPlanner(common::DaemonContext& context)
   // the next tick. A goal change alone replans at once without taking the frame, so graph updates keep
   // to the configured rate.
   const auto dispatch = [&](bool with_frame) {
-    if (!(with_frame && state.latest_frame) && !state.goal_changed) {
+    if (!(with_frame && state.latest_frame) && !state.goal_changed && state.pending_affordances.empty()) {
       return;
     }
     PlannerJob job;
@@ -105,6 +112,7 @@ int runPlanner(common::DaemonContext& context)
     }
     job.new_goal = state.new_goal;
     job.clear_goal = state.clear_goal;
+    job.affordances = state.pending_affordances;
     if (!worker.trySubmit(std::move(job))) {
       if (with_frame && state.latest_frame) {
         ++state.dropped_frames;
@@ -114,6 +122,7 @@ int runPlanner(common::DaemonContext& context)
     if (with_frame) {
       state.latest_frame.reset();
     }
+    state.pending_affordances.clear();
     state.new_goal.reset();
     state.clear_goal = false;
     state.goal_changed = false;
@@ -170,12 +179,20 @@ int runPlanner(common::DaemonContext& context)
                                       state.bad_messages += skipped;
                                     });
   loop.subscribe<affordance_t>(channels.affordance, [&](const affordance_t& affordance, std::int64_t) {
-    // TODO(interaction): update the object's interaction edges once planner/interaction is wired in.
     ++state.affordances;
-    logger->info(
-        "affordance for object {}: pushable {}, mu {:.3f} (not used yet: interaction planning is not "
-        "wired into the planner)",
-        affordance.object_id, affordance.pushable, affordance.affordance);
+    const AffordanceUpdate update = toAffordanceUpdate(affordance);
+    if (!std::isfinite(update.push_force_n) || !std::isfinite(update.affordance)) {
+      // Still handed on: the planner counts it and says so in PLANNER_STATUS.
+      ++state.bad_affordances;
+      logger->warn("{}: object {}: push_force_n {} / affordance {} not finite, ignored ({} so far)",
+                   channels.affordance, affordance.object_id, affordance.push_force_n, affordance.affordance,
+                   state.bad_affordances);
+    } else {
+      logger->info("affordance for object {}: pushable {}, force {:.1f} N, mu {:.3f}", affordance.object_id,
+                   affordance.pushable, affordance.push_force_n, affordance.affordance);
+    }
+    state.pending_affordances.push_back(update);
+    dispatch(false);  // replans at once when the worker is free, else with the next job
   });
 
   loop.every(1.0 / daemon.rate_hz, [&] {
@@ -204,13 +221,26 @@ int runPlanner(common::DaemonContext& context)
                                    std::to_string(state.dropped_frames) +
                                    " frames dropped while the worker was busy";
       }
+      if (messages.status.message.find(kAffordanceRejected) != std::string::npos) {
+        logger->warn("{}: {}", channels.affordance, messages.status.message);
+      }
       loop.publish(channels.dv_graph, messages.graph);
       loop.publish(channels.global_path, messages.path);
+      state.last_path = messages.path;
       loop.publish(channels.planner_status, messages.status);
       ++state.published;
       logger->debug("frame {}: {} vertices, {} edges, path {} ({:.2f} m), {:.1f} ms", messages.status.frames,
                     messages.status.num_vertices, messages.status.num_edges,
                     messages.path.valid ? "valid" : "none", messages.path.length_m, messages.status.total_ms);
+    }
+  });
+
+  // The same path again between updates, freshly stamped: the executive treats a path older than about
+  // 0.2 s as a dead planner, while graph updates come at only 2.5 Hz.
+  loop.every(1.0 / daemon.path_resend_hz, [&] {
+    if (state.last_path) {
+      state.last_path->utime = common::nowMicroseconds();
+      loop.publish(channels.global_path, *state.last_path);
     }
   });
 

@@ -4,6 +4,46 @@
 
 namespace ifar::planner {
 
+push_plan_t toPushPlanMessage(const PathPush& push, std::int64_t now_utime)
+{
+  const interaction::PushPlan& plan = push.plan;
+  push_plan_t message{};
+  message.utime = now_utime;
+  message.object_id = push.object_id;
+  message.from_vertex =
+      push.from_vertex == graph::kNoVertex ? -1 : static_cast<std::int64_t>(push.from_vertex);
+  message.to_vertex = push.to_vertex == graph::kNoVertex ? -1 : static_cast<std::int64_t>(push.to_vertex);
+  message.contact_edge = static_cast<std::int32_t>(plan.contact_edge);
+  message.contact_x = plan.contact_pose.x;
+  message.contact_y = plan.contact_pose.y;
+  message.contact_heading = plan.contact_pose.heading;
+  const geometry::Pose2& start = plan.start_object_pose;
+  for (const interaction::PushControl& control : plan.controls) {
+    push_control_t out{};
+    const bool switch_contact = control.kind == interaction::ControlKind::ContactSwitch;
+    out.kind = switch_contact ? push_control_t::KIND_SWITCH_CONTACT : push_control_t::KIND_PUSH;
+    out.contact_edge = static_cast<std::int32_t>(control.contact_edge);
+    out.linear_velocity = control.linear_mps;
+    out.angular_velocity = control.angular_radps;
+    out.duration_s = control.duration_s;
+    out.vehicle_x = control.vehicle_pose.x;
+    out.vehicle_y = control.vehicle_pose.y;
+    out.vehicle_heading = control.vehicle_pose.heading;
+    out.object_x = control.object_pose.x;
+    out.object_y = control.object_pose.y;
+    // push_control_t: the object's rotation from its pose at planning time.
+    out.object_heading = geometry::wrapAngle(control.object_pose.heading - start.heading);
+    message.controls.push_back(out);
+  }
+  message.num_controls = static_cast<std::int32_t>(message.controls.size());
+  message.expected_force_n = plan.expected_force_n;
+  message.push_distance_m = plan.push_distance_m;
+  message.travel_m = plan.travel_distance_m;
+  message.expected_cost = plan.cost;
+  message.affordance = push.affordance;
+  return message;
+}
+
 planner_status_t toStatusMessage(const PlannerStatus& status)
 {
   planner_status_t message{};
@@ -36,7 +76,8 @@ PlannerMessages toMessages(const Planner& planner, const FrameResult& result, st
   for (std::size_t index = 0; index < result.polygons.size(); ++index) {
     const perception::LayerPolygon& layer_polygon = result.polygons[index];
     polygon_t polygon{};
-    polygon.id = static_cast<std::int64_t>(index) + 1;
+    const std::int64_t object_id = index < result.polygon_ids.size() ? result.polygon_ids[index] : 0;
+    polygon.id = object_id > 0 ? object_id : kBackgroundPolygonIdBase + static_cast<std::int64_t>(index);
     polygon.kind = layer_polygon.obstacle_class == perception::ObstacleClass::Movable
                        ? polygon_t::KIND_MOVABLE
                        : polygon_t::KIND_BACKGROUND;
@@ -99,27 +140,47 @@ PlannerMessages toMessages(const Planner& planner, const FrameResult& result, st
   path.valid = result.path.valid;
   path.length_m = result.path.length_m;
   path.cost = result.path.cost;
-  for (const graph::PathPoint& point : result.path.waypoints) {
+  for (const PathPush& push : result.path.pushes) {
+    path.push_plans.push_back(toPushPlanMessage(push, now_utime));
+  }
+  path.num_push_plans = static_cast<std::int32_t>(path.push_plans.size());
+  for (std::size_t index = 0; index < result.path.waypoints.size(); ++index) {
+    const graph::PathPoint& point = result.path.waypoints[index];
     waypoint_t waypoint{};
     waypoint.x = point.position.x();
     waypoint.y = point.position.y();
-    const bool push = point.interaction != graph::kNoInteraction;
-    waypoint.kind = push ? waypoint_t::KIND_PUSH : waypoint_t::KIND_FREE;
-    if (!push && point.vertex != graph::kNoVertex) {
+    waypoint.kind = waypoint_t::KIND_FREE;
+    waypoint.object_id = -1;
+    waypoint.push_plan_index = -1;
+    if (point.vertex != graph::kNoVertex) {
       const graph::Vertex* vertex = dv_graph.vertex(point.vertex);
       if (vertex != nullptr && vertex->kind == graph::VertexKind::TopologicalWaypoint) {
         waypoint.kind = waypoint_t::KIND_TOPOLOGICAL;
       }
     }
-    waypoint.object_id = push ? point.object_id : -1;
-    waypoint.push_plan_index = -1;  // push plans are not produced yet (interaction planner not wired in)
+    for (std::size_t push = 0; push < result.path.pushes.size(); ++push) {
+      if (result.path.pushes[push].to_waypoint == index) {
+        waypoint.kind = waypoint_t::KIND_PUSH;
+        waypoint.object_id = result.path.pushes[push].object_id;
+        waypoint.push_plan_index = static_cast<std::int32_t>(push);
+      }
+    }
     path.waypoints.push_back(waypoint);
   }
   path.num_waypoints = static_cast<std::int32_t>(path.waypoints.size());
-  path.num_push_plans = 0;
 
   messages.status = toStatusMessage(result.status);
   return messages;
+}
+
+AffordanceUpdate toAffordanceUpdate(const affordance_t& message)
+{
+  AffordanceUpdate update;
+  update.object_id = message.object_id;
+  update.pushable = message.pushable;
+  update.push_force_n = message.push_force_n;
+  update.affordance = message.affordance;
+  return update;
 }
 
 PoseSample toPoseSample(const pose_t& pose)

@@ -18,9 +18,10 @@
 namespace ifar::planner {
 
 struct PlannerJob {
-  std::optional<FrameInput> frame;  // nullopt: replan only (a goal changed)
+  std::optional<FrameInput> frame;  // nullopt: replan only (a goal or an affordance changed)
   std::optional<Goal> new_goal;
   bool clear_goal = false;
+  std::vector<AffordanceUpdate> affordances;  // applied first, in order
 };
 
 /// `Output` is what the worker hands back, built on the worker thread where the graph lives.
@@ -98,7 +99,17 @@ class PlannerWorker {
     }
     FrameResult result;
     try {
-      result = job.frame ? planner_.processFrame(*job.frame) : planner_.replan();
+      std::optional<FrameResult> affordance_result;
+      for (const AffordanceUpdate& update : job.affordances) {
+        affordance_result = planner_.applyAffordance(update);
+      }
+      if (job.frame) {
+        result = planner_.processFrame(*job.frame);
+      } else if (affordance_result && !job.new_goal && !job.clear_goal) {
+        result = std::move(*affordance_result);  // already searched again
+      } else {
+        result = planner_.replan();
+      }
     } catch (const std::exception& error) {
       // A library failure costs this update, never the process: reported like rejected input.
       result.status.state = PlannerState::BadInput;

@@ -10,8 +10,9 @@ namespace ifar::interaction {
 using geometry::Point;
 using geometry::Polygon;
 
-InteractionCache::InteractionCache(const InteractionSettings& settings, double tolerance_m)
-    : settings_(settings), tolerance_m_(tolerance_m)
+InteractionCache::InteractionCache(const InteractionSettings& settings, double tolerance_m,
+                                   double area_tolerance_m2)
+    : settings_(settings), tolerance_m_(tolerance_m), area_tolerance_m2_(area_tolerance_m2)
 {
 }
 
@@ -29,11 +30,23 @@ InteractionCache::Signature InteractionCache::signatureOf(const LocalScene& scen
   Bounds window = boundsOf(object);
   window.minimum -= Point::Constant(settings_.connectivity.window_margin_m);
   window.maximum += Point::Constant(settings_.connectivity.window_margin_m);
+  const Polygon window_polygon{window.minimum, Point(window.maximum.x(), window.minimum.y()), window.maximum,
+                               Point(window.minimum.x(), window.maximum.y())};
+  Point moment = Point::Zero();
   const auto add = [&](const Polygon& polygon) {
-    if (polygon.size() >= 3 && boundsOf(polygon).overlaps(window)) {
-      ++signature.neighbour_count;
-      signature.neighbour_centroid_sum += geometry::centroid(polygon);
+    if (polygon.size() < 3 || !boundsOf(polygon).overlaps(window)) {
+      return;
     }
+    // The part inside the window (a non-convex obstacle by its hull: only a summary is needed).
+    const Polygon convex =
+        geometry::isConvex(polygon) ? geometry::counterClockwise(polygon) : geometry::convexHull(polygon);
+    const Polygon inside = clipConvex(convex, window_polygon);
+    if (inside.size() < 3) {
+      return;
+    }
+    const double inside_area = geometry::area(inside);
+    signature.neighbour_area += inside_area;
+    moment += inside_area * geometry::centroid(inside);
   };
   for (const Polygon& polygon : scene.background) {
     add(polygon);
@@ -42,6 +55,9 @@ InteractionCache::Signature InteractionCache::signatureOf(const LocalScene& scen
     if (index != movable_index) {
       add(scene.movable[index]);
     }
+  }
+  if (signature.neighbour_area > 0.0) {
+    signature.neighbour_centroid = moment / signature.neighbour_area;
   }
   return signature;
 }
@@ -52,9 +68,8 @@ bool InteractionCache::same(const Signature& first, const Signature& second) con
   return (first.object_centroid - second.object_centroid).norm() <= tolerance_m_ &&
          close(first.object_area, second.object_area,
                0.1 * std::max(first.object_area, second.object_area)) &&
-         first.neighbour_count == second.neighbour_count &&
-         (first.neighbour_centroid_sum - second.neighbour_centroid_sum).norm() <=
-             tolerance_m_ * static_cast<double>(std::max<std::size_t>(1, first.neighbour_count)) &&
+         close(first.neighbour_area, second.neighbour_area, area_tolerance_m2_) &&
+         (first.neighbour_centroid - second.neighbour_centroid).norm() <= tolerance_m_ &&
          first.physics.ground_friction == second.physics.ground_friction &&
          first.physics.mass_kg == second.physics.mass_kg;
 }

@@ -13,8 +13,10 @@ namespace ifar::interaction {
 
 class InteractionCache {
  public:
-  /// Changes smaller than `tolerance_m` (object centroid shift, neighbour centroids) reuse the plans.
-  explicit InteractionCache(const InteractionSettings& settings, double tolerance_m = 0.1);
+  /// Changes smaller than `tolerance_m` (object and obstacle centroid shifts) and `area_tolerance_m2`
+  /// (obstacle area in the analysis window) reuse the plans.
+  explicit InteractionCache(const InteractionSettings& settings, double tolerance_m = 0.1,
+                            double area_tolerance_m2 = 0.5);
 
   /// True when interactionsFor() would have to plan (unknown object, moved, new surroundings or physics).
   bool stale(std::int64_t object_id, const LocalScene& scene, std::size_t movable_index,
@@ -33,11 +35,14 @@ class InteractionCache {
   std::size_t size() const { return entries_.size(); }
 
  private:
+  /// What the plans depend on. The surroundings are summarised by the obstacle area inside the analysis
+  /// window and its centroid, not by a polygon count: a scene built from a noisy raster splits its
+  /// obstacles differently every frame while the area barely changes.
   struct Signature {
     geometry::Point object_centroid = geometry::Point::Zero();
     double object_area = 0.0;
-    std::size_t neighbour_count = 0;
-    geometry::Point neighbour_centroid_sum = geometry::Point::Zero();
+    double neighbour_area = 0.0;
+    geometry::Point neighbour_centroid = geometry::Point::Zero();
     ObjectPhysics physics;
   };
   struct Entry {
@@ -52,6 +57,7 @@ class InteractionCache {
 
   InteractionSettings settings_;
   double tolerance_m_;
+  double area_tolerance_m2_;
   std::map<std::int64_t, Entry> entries_;
 };
 

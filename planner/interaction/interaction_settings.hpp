@@ -61,8 +61,19 @@ struct SearchSettings {
   double boundary_sample_m = 0.1;         ///< spacing of footprint boundary points checked for contact
   double contact_clearance_m = 0.05;      ///< vehicle keeps this from the inflated object when driving round
   double penetration_tolerance_m = 0.03;  ///< rasterisation slack when deciding the object hits a wall
+  /// The passage counts as open only with this much room beyond the vehicle's half width: the lidar sees
+  /// an object's near faces only (its hidden depth is modelled thin) and an open-loop push slips a little.
+  double passage_margin_m = 0.15;
   std::size_t max_expansions = 4000;
   double time_budget_s = 0.05;
+};
+
+/// How the planner runs interaction planning each frame (planner/core).
+struct PlanningLoopSettings {
+  ObjectPhysics default_physics;     ///< prior for every object until AFFORDANCE says otherwise
+  double frame_budget_ms = 50.0;     ///< objects not reached within this per frame are done next frame
+  double track_association_m = 1.0;  ///< largest centroid jump of one object between frames
+  int track_drop_frames = 5;         ///< frames unseen while in view before an object is dropped
 };
 
 /// Everything one object's interaction planning needs.
@@ -70,6 +81,7 @@ struct InteractionSettings {
   ConnectivitySettings connectivity;
   PusherSettings pusher;
   SearchSettings search;
+  PlanningLoopSettings loop;
 };
 
 }  // namespace ifar::interaction

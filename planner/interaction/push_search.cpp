@@ -243,7 +243,7 @@ double PushPlanner::heuristic(const Pose2& pose, const Passage& passage) const
 bool PushPlanner::passageClear(const Pose2& pose, const Passage& passage) const
 {
   return segmentPolygonDistance(passage.segment, transformed(model_.footprint, pose)) >=
-         pusher_.inflation_m - search_.penetration_tolerance_m;
+         pusher_.inflation_m + search_.passage_margin_m - search_.penetration_tolerance_m;
 }
 
 PushPlan PushPlanner::plan(const Point& start, const Point& goal) const

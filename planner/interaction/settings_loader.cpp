@@ -49,6 +49,18 @@ InteractionSettings loadInteractionSettings(const common::ConfigNode& node,
   readCount(node, "analytic_interval", search.analytic_interval);
   readCount(node, "max_expansions", search.max_expansions);
   readPositive(node, "time_budget_s", search.time_budget_s);
+  search.passage_margin_m = node.optional<double>("passage_margin_m", search.passage_margin_m);
+  if (!(std::isfinite(search.passage_margin_m) && search.passage_margin_m >= 0.0)) {
+    node.fail("passage_margin_m", "must be a number >= 0");
+  }
+  PlanningLoopSettings& loop = settings.loop;
+  readPositive(node, "default_mass_kg", loop.default_physics.mass_kg);
+  readPositive(node, "default_ground_friction", loop.default_physics.ground_friction);
+  readPositive(node, "frame_budget_ms", loop.frame_budget_ms);
+  readPositive(node, "track_association_m", loop.track_association_m);
+  std::size_t drop_frames = static_cast<std::size_t>(loop.track_drop_frames);
+  readCount(node, "track_drop_frames", drop_frames);
+  loop.track_drop_frames = static_cast<int>(drop_frames);
   node.rejectUnknownKeys();
   return settings;
 }

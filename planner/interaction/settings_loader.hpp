@@ -12,6 +12,11 @@
 //     reference_force_n: 100.0     # J = force x distance / this + travel
 //     max_expansions: 4000
 //     time_budget_s: 0.05
+//     default_mass_kg: 20.0        # physics prior per object until AFFORDANCE
+//     default_ground_friction: 0.4
+//     frame_budget_ms: 50.0        # interaction planning per frame; the rest waits (round robin)
+//     track_association_m: 1.0     # object tracking across frames
+//     track_drop_frames: 5
 
 #include "common/config.hpp"
 #include "common/vehicle.hpp"

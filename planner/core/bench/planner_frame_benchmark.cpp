@@ -1,6 +1,10 @@
 // One planner update (perception, local graph, merge, search) on simulated VLP-16 revolutions of a room
-// with a box, the vehicle driving a curve; and a replan (search only) on the resulting graph.
+// with a box, the vehicle driving a curve; and a replan (search only) on the resulting graph. The demo
+// room variants drive towards the doorway box with interaction planning (cache in use, as deployed), and
+// run a fresh planner's first frame (every object planned from scratch).
 
+#include <algorithm>
+#include <string>
 #include <vector>
 
 #include <benchmark/benchmark.h>
@@ -8,6 +12,7 @@
 #include "planner/core/frame_assembler.hpp"
 #include "planner/core/planner.hpp"
 #include "sim/simulator/builtin_worlds.hpp"
+#include "sim/world/world_file.hpp"
 #include "tests/unit/planner_core/simulated_feed.hpp"
 
 namespace ifar::planner {
@@ -50,6 +55,66 @@ void BM_PlannerReplan(benchmark::State& state)
   }
 }
 BENCHMARK(BM_PlannerReplan)->Unit(benchmark::kMicrosecond);
+
+const std::vector<FrameInput>& demoRoomFrames()
+{
+  static const std::vector<FrameInput> recorded = [] {
+    const sim::WorldResult world =
+        sim::loadWorldFile(std::string(IFAR_SOURCE_DIR) + "/config/worlds/demo_room.yaml");
+    if (!world.ok()) {
+      return std::vector<FrameInput>{};
+    }
+    FrameAssembler assembler{InputSettings{}};
+    return testing::feedAll(testing::recordSimulation(world.world(), 2.0, 1.0), assembler);
+  }();
+  return recorded;
+}
+
+void BM_PlannerFrameDemoRoom(benchmark::State& state)
+{
+  if (demoRoomFrames().empty()) {
+    state.SkipWithError("config/worlds/demo_room.yaml did not load");
+    return;
+  }
+  Planner planner{PlannerSettings{}};
+  planner.setGoal(Goal{1, geometry::Point(8.0, 26.0)});
+  std::size_t index = 0;
+  double interaction_ms = 0.0;
+  double pushes = 0.0;
+  for (auto _ : state) {
+    const FrameResult result = planner.processFrame(demoRoomFrames()[index]);
+    interaction_ms += result.status.timings.interaction_ms;
+    pushes += static_cast<double>(result.path.pushes.size());
+    benchmark::DoNotOptimize(result.path.length_m);
+    index = (index + 1) % demoRoomFrames().size();
+  }
+  const double iterations = static_cast<double>(std::max<benchmark::IterationCount>(state.iterations(), 1));
+  state.counters["interaction_ms"] = interaction_ms / iterations;
+  state.counters["pushes"] = pushes / iterations;
+}
+BENCHMARK(BM_PlannerFrameDemoRoom)->Unit(benchmark::kMillisecond);
+
+/// The first frame of a fresh planner: every object planned from scratch (no cache), the worst frame.
+void BM_PlannerFirstFrameDemoRoom(benchmark::State& state)
+{
+  if (demoRoomFrames().empty()) {
+    state.SkipWithError("config/worlds/demo_room.yaml did not load");
+    return;
+  }
+  double interaction_ms = 0.0;
+  for (auto _ : state) {
+    state.PauseTiming();
+    Planner planner{PlannerSettings{}};
+    planner.setGoal(Goal{1, geometry::Point(8.0, 26.0)});
+    state.ResumeTiming();
+    const FrameResult result = planner.processFrame(demoRoomFrames().front());
+    interaction_ms += result.status.timings.interaction_ms;
+    benchmark::DoNotOptimize(result.path.length_m);
+  }
+  const double iterations = static_cast<double>(std::max<benchmark::IterationCount>(state.iterations(), 1));
+  state.counters["interaction_ms"] = interaction_ms / iterations;
+}
+BENCHMARK(BM_PlannerFirstFrameDemoRoom)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace ifar::planner

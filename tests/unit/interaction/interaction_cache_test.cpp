@@ -54,5 +54,23 @@ TEST(InteractionCacheTest, ReplansOnlyWhenObjectSurroundingsOrAffordanceChange)
   EXPECT_TRUE(cache.stale(5, scene, 0, physics));
 }
 
+TEST(InteractionCacheTest, ObstaclesSplitDifferentlyReuseThePlans)
+{
+  InteractionCache cache(defaultSettings());
+  const LocalScene scene = test::doorwayScene();
+  const ObjectPhysics physics{0.4, 20.0};
+  bool replanned = false;
+  cache.interactionsFor(5, scene, 0, physics, replanned);
+  ASSERT_TRUE(replanned);
+  // The same walls as pieces of a raster (the planner's scene): count and pieces change, area does not.
+  LocalScene pieces = scene;
+  pieces.background = {test::rectangle(-0.5, 0.6, 0.5, 2.0), test::rectangle(-0.5, 2.0, 0.5, 5.0),
+                       test::rectangle(-0.5, -5.0, 0.5, -3.0), test::rectangle(-0.5, -3.0, 0.5, -0.6)};
+  EXPECT_FALSE(cache.stale(5, pieces, 0, physics));
+  // A raster cell more or less along a wall (0.15 m x 0.15 m) is noise too.
+  pieces.background.push_back(test::rectangle(0.5, 3.0, 0.65, 3.15));
+  EXPECT_FALSE(cache.stale(5, pieces, 0, physics));
+}
+
 }  // namespace
 }  // namespace ifar::interaction

@@ -1,6 +1,8 @@
 // The planner daemon's settings: the shipped config/planner.yaml loads as a whole, and bad values name
 // the key.
 
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -22,6 +24,54 @@ TEST(PlannerDaemonConfig, ShippedFileLoadsAndPassesRejectUnknownKeys)
   EXPECT_EQ(config.daemon.vehicle_config, "config/vehicle.yaml");
   EXPECT_DOUBLE_EQ(config.planner.perception.cell_size_m, 0.15);
   EXPECT_EQ(config.planner.graph.votes, 10);
+  EXPECT_DOUBLE_EQ(config.daemon.path_resend_hz, 10.0);
+  EXPECT_TRUE(config.planner.interaction_enabled);
+  EXPECT_DOUBLE_EQ(config.planner.interaction.loop.frame_budget_ms, 50.0);
+  EXPECT_DOUBLE_EQ(config.planner.interaction.loop.default_physics.mass_kg, 20.0);
+  EXPECT_DOUBLE_EQ(config.planner.interaction.loop.default_physics.ground_friction, 0.4);
+  EXPECT_DOUBLE_EQ(config.planner.interaction.search.passage_margin_m, 0.15);
+}
+
+TEST(PlannerDaemonConfig, InteractionSectionIsReadStrictly)
+{
+  std::ifstream file(std::string(IFAR_SOURCE_DIR) + "/config/planner.yaml");
+  std::stringstream text;
+  text << file.rdbuf();
+  std::string yaml = text.str();
+  const auto replace = [&](const std::string& from, const std::string& to) {
+    const std::size_t at = yaml.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    yaml.replace(at, from.size(), to);
+  };
+  replace("  enabled: true", "  enabled: false");
+  replace("  frame_budget_ms: 50.0", "  frame_budget_ms: 20");
+  replace("  default_mass_kg: 20.0", "  default_mass_kg: 35");
+  const PlannerConfig config = loadPlannerConfig(common::ConfigNode::loadString(yaml, "far.yaml"));
+  EXPECT_FALSE(config.planner.interaction_enabled);
+  EXPECT_DOUBLE_EQ(config.planner.interaction.loop.frame_budget_ms, 20.0);
+  EXPECT_DOUBLE_EQ(config.planner.interaction.loop.default_physics.mass_kg, 35.0);
+
+  replace("  frame_budget_ms: 20", "  frame_budget: 20");
+  try {
+    loadPlannerConfig(common::ConfigNode::loadString(yaml, "bad.yaml"));
+    ADD_FAILURE() << "misspelt key accepted";
+  } catch (const common::ConfigError& error) {
+    EXPECT_NE(std::string(error.what()).find("frame_budget"), std::string::npos) << error.what();
+  }
+  replace("  frame_budget: 20", "  frame_budget_ms: 20");
+  replace("  default_mass_kg: 35", "  default_mass_kg: -3");
+  try {
+    loadPlannerConfig(common::ConfigNode::loadString(yaml, "bad.yaml"));
+    ADD_FAILURE() << "negative mass accepted";
+  } catch (const common::ConfigError& error) {
+    EXPECT_NE(std::string(error.what()).find("default_mass_kg"), std::string::npos) << error.what();
+  }
+  try {
+    loadDaemonSettings(common::ConfigNode::loadString("daemon:\n  path_resend_hz: 0\n", "bad.yaml"));
+    ADD_FAILURE() << "zero resend rate accepted";
+  } catch (const common::ConfigError& error) {
+    EXPECT_NE(std::string(error.what()).find("path_resend_hz"), std::string::npos) << error.what();
+  }
 }
 
 TEST(PlannerDaemonConfig, MissingDaemonSectionUsesDefaults)

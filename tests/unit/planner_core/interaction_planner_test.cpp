@@ -1,0 +1,344 @@
+// The planner with interaction planning on simulated VLP-16 packets of config/worlds/demo_room.yaml: the
+// light box in the 1.4 m doorway at (8, 16) is pushed instead of driving round through the east doorway,
+// its id is stable, AFFORDANCE re-plans or removes its edges, FAR mode never pushes.
+
+#include <cmath>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "planner/core/frame_assembler.hpp"
+#include "planner/core/planner.hpp"
+#include "sim/world/world_file.hpp"
+#include "tests/unit/planner_core/simulated_feed.hpp"
+
+namespace ifar::planner {
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+const geometry::Point kDoorwayBox(8.0, 16.0);
+const geometry::Point kGoal(8.0, 26.0);
+
+const sim::World& demoRoom()
+{
+  static const sim::World world = [] {
+    const sim::WorldResult loaded =
+        sim::loadWorldFile(std::string(IFAR_SOURCE_DIR) + "/config/worlds/demo_room.yaml");
+    EXPECT_TRUE(loaded.ok()) << loaded.error();
+    return loaded.ok() ? loaded.world() : sim::World{};
+  }();
+  return world;
+}
+
+/// Frames of the vehicle standing at the demo room's start (8, 4) facing the doorway.
+const std::vector<FrameInput>& standingFrames()
+{
+  static const std::vector<FrameInput> frames = [] {
+    FrameAssembler assembler{InputSettings{}};
+    return testing::feedAll(testing::recordSimulation(demoRoom(), 0.45), assembler);
+  }();
+  return frames;
+}
+
+/// Frames of the vehicle standing at (8, 12) facing the doorway, as if it had driven up: from the start
+/// the heavy box at (12, 10) hides part of the partition, and the search rightly tries that gap. Long
+/// enough (graph.votes frames) for the merge to drop the corners of that gap.
+const std::vector<FrameInput>& approachFrames()
+{
+  static const std::vector<FrameInput> frames = [] {
+    sim::World world = demoRoom();
+    world.start = geometry::Pose2{8.0, 12.0, M_PI / 2.0};
+    FrameAssembler assembler{InputSettings{}};
+    return testing::feedAll(testing::recordSimulation(world, 1.25), assembler);
+  }();
+  return frames;
+}
+
+FrameResult runFrames(Planner& planner, const std::vector<FrameInput>& frames)
+{
+  EXPECT_TRUE(planner.setGoal(Goal{3, kGoal}));
+  FrameResult result;
+  for (const FrameInput& frame : frames) {
+    result = planner.processFrame(frame);
+  }
+  return result;
+}
+
+/// Standing at the start, then near the doorway.
+FrameResult runStartThenApproach(Planner& planner)
+{
+  runFrames(planner, standingFrames());
+  return runFrames(planner, approachFrames());
+}
+
+/// The stable id of the movable outline nearest `near` (0 when there is none within a metre).
+std::int64_t objectNear(const FrameResult& result, const geometry::Point& near)
+{
+  for (std::size_t index = 0; index < result.polygons.size(); ++index) {
+    if (result.polygon_ids[index] > 0 &&
+        (geometry::centroid(result.polygons[index].vertices) - near).norm() < 1.0) {
+      return result.polygon_ids[index];
+    }
+  }
+  return 0;
+}
+
+/// x where the path first crosses the line y = `y`.
+std::optional<double> crossingX(const PlannedPath& path, double y)
+{
+  for (std::size_t index = 1; index < path.waypoints.size(); ++index) {
+    const geometry::Point& a = path.waypoints[index - 1].position;
+    const geometry::Point& b = path.waypoints[index].position;
+    if ((a.y() - y) * (b.y() - y) <= 0.0 && a.y() != b.y()) {
+      return a.x() + (b.x() - a.x()) * (y - a.y()) / (b.y() - a.y());
+    }
+  }
+  return std::nullopt;
+}
+
+TEST(InteractionPlanner, DemoRoomPushesTheDoorwayBoxInsteadOfDrivingRound)
+{
+  ASSERT_GE(standingFrames().size(), 3U);
+  Planner planner{PlannerSettings{}};
+  const FrameResult result = runFrames(planner, standingFrames());
+  const std::int64_t box = objectNear(result, kDoorwayBox);
+  ASSERT_GT(box, 0);
+  ASSERT_TRUE(result.path.valid) << result.status.message;
+  ASSERT_EQ(result.path.pushes.size(), 1U);
+  const PathPush& push = result.path.pushes.front();
+  EXPECT_EQ(push.object_id, box);
+  EXPECT_EQ(push.to_waypoint, push.from_waypoint + 1);
+  EXPECT_EQ(push.plan.status, interaction::PlanStatus::Found);
+  EXPECT_FALSE(push.plan.controls.empty());
+  EXPECT_DOUBLE_EQ(push.affordance, interaction::ObjectPhysics{}.ground_friction);
+  // Waypoint kinds: both ends are topological waypoints of the box, the push lands on the second.
+  const graph::PathPoint& from = result.path.waypoints[push.from_waypoint];
+  const graph::PathPoint& to = result.path.waypoints[push.to_waypoint];
+  const auto kindOf = [&](graph::VertexId id) {
+    const graph::Vertex* vertex = planner.graph().vertex(id);
+    return vertex != nullptr ? static_cast<int>(vertex->kind) : -1;
+  };
+  EXPECT_EQ(kindOf(from.vertex), static_cast<int>(graph::VertexKind::TopologicalWaypoint));
+  EXPECT_EQ(kindOf(to.vertex), static_cast<int>(graph::VertexKind::TopologicalWaypoint));
+  EXPECT_EQ(from.interaction, graph::kNoInteraction);
+  EXPECT_NE(to.interaction, graph::kNoInteraction);
+  EXPECT_EQ(to.object_id, box);
+  EXPECT_EQ(push.from_vertex, from.vertex);
+  EXPECT_EQ(push.to_vertex, to.vertex);
+  // South of the box before, north of it after, straight through the doorway.
+  EXPECT_LT(from.position.y(), 16.0);
+  EXPECT_GT(to.position.y(), 16.0);
+  EXPECT_NEAR(from.position.x(), 8.0, 0.3);
+  const std::optional<double> crossing = crossingX(result.path, 16.0);
+  ASSERT_TRUE(crossing);
+  EXPECT_NEAR(*crossing, 8.0, 0.3);
+
+  EXPECT_GT(result.status.timings.interaction_ms, 0.0);
+
+  // Cheaper than going round: near the doorway (the whole partition in view) the same frames in FAR mode
+  // go through the east doorway, while the planner still pushes the box with the same id.
+  const FrameResult near = runFrames(planner, approachFrames());
+  ASSERT_EQ(near.path.pushes.size(), 1U);
+  EXPECT_EQ(near.path.pushes.front().object_id, box);
+  PlannerSettings far_settings;
+  far_settings.interaction_enabled = false;
+  Planner far_planner{far_settings};
+  const FrameResult around = runStartThenApproach(far_planner);
+  ASSERT_TRUE(around.path.valid);
+  EXPECT_LT(near.path.cost, around.path.cost);
+  const std::optional<double> around_crossing = crossingX(around.path, 16.0);
+  ASSERT_TRUE(around_crossing);
+  EXPECT_GT(*around_crossing, 24.0);
+  EXPECT_LT(*around_crossing, 28.0);
+}
+
+TEST(InteractionPlanner, UnpushableBoxIsDroppedAtOnceAndForGood)
+{
+  Planner planner{PlannerSettings{}};
+  const FrameResult pushed = runStartThenApproach(planner);
+  const std::int64_t box = objectNear(pushed, kDoorwayBox);
+  ASSERT_EQ(pushed.path.pushes.size(), 1U);
+  EXPECT_EQ(pushed.path.pushes.front().object_id, box);
+  const std::int64_t edges_before = pushed.status.interaction_edges;
+
+  AffordanceUpdate update;
+  update.object_id = box;
+  update.pushable = false;
+  const FrameResult result = planner.applyAffordance(update);
+  EXPECT_EQ(result.sequence, pushed.sequence);  // no frame needed
+  ASSERT_TRUE(result.path.valid) << result.status.message;
+  EXPECT_TRUE(result.path.pushes.empty());
+  EXPECT_LT(result.status.interaction_edges, edges_before);
+  const std::optional<double> crossing = crossingX(result.path, 16.0);
+  ASSERT_TRUE(crossing);
+  EXPECT_GT(*crossing, 24.0);
+  EXPECT_LT(*crossing, 28.0);
+  EXPECT_EQ(result.status.bad_inputs, 0);
+
+  // Later frames never bring the edges back.
+  const FrameResult later = planner.processFrame(approachFrames().back());
+  EXPECT_TRUE(later.path.pushes.empty());
+  for (const graph::InteractionEdge& edge : planner.graph().interactionEdges()) {
+    EXPECT_FALSE(edge.alive && edge.object_id == box);
+  }
+  // A later estimate that calls it pushable does not either.
+  update.pushable = true;
+  update.affordance = 0.3;
+  EXPECT_TRUE(planner.applyAffordance(update).path.pushes.empty());
+}
+
+TEST(InteractionPlanner, AffordanceChangesTheFrictionAndReplansAtOnce)
+{
+  Planner planner{PlannerSettings{}};
+  const FrameResult pushed = runFrames(planner, standingFrames());
+  const std::int64_t box = objectNear(pushed, kDoorwayBox);
+  ASSERT_EQ(pushed.path.pushes.size(), 1U);
+  const double cost_before = pushed.path.pushes.front().plan.cost;
+
+  AffordanceUpdate update;
+  update.object_id = box;
+  update.affordance = 0.8;
+  update.push_force_n = 500.0;  // mu wins over the force when both are given
+  const FrameResult heavier = planner.applyAffordance(update);
+  EXPECT_DOUBLE_EQ(planner.objectPhysics(box).ground_friction, 0.8);
+  EXPECT_DOUBLE_EQ(planner.objectPhysics(box).mass_kg, interaction::ObjectPhysics{}.mass_kg);
+  ASSERT_EQ(heavier.path.pushes.size(), 1U);
+  EXPECT_DOUBLE_EQ(heavier.path.pushes.front().affordance, 0.8);
+  EXPECT_GT(heavier.path.pushes.front().plan.cost, cost_before);
+  EXPECT_NEAR(heavier.path.pushes.front().plan.expected_force_n,
+              2.0 * pushed.path.pushes.front().plan.expected_force_n, 1e-6);
+
+  // Only a force: mu = force / (mass g).
+  update.affordance = 0.0;
+  update.push_force_n = 39.24;
+  const FrameResult lighter = planner.applyAffordance(update);
+  EXPECT_NEAR(planner.objectPhysics(box).ground_friction, 39.24 / (20.0 * 9.81), 1e-12);
+  ASSERT_EQ(lighter.path.pushes.size(), 1U);
+  EXPECT_LT(lighter.path.pushes.front().plan.cost, cost_before);
+  EXPECT_EQ(lighter.status.bad_inputs, 0);
+}
+
+TEST(InteractionPlanner, BadAffordanceIsCountedAndChangesNothing)
+{
+  Planner planner{PlannerSettings{}};
+  const FrameResult pushed = runFrames(planner, standingFrames());
+  const std::int64_t box = objectNear(pushed, kDoorwayBox);
+  ASSERT_EQ(pushed.path.pushes.size(), 1U);
+
+  AffordanceUpdate unknown;
+  unknown.object_id = 9999;
+  unknown.pushable = false;
+  const FrameResult unknown_result = planner.applyAffordance(unknown);
+  EXPECT_EQ(unknown_result.status.bad_inputs, pushed.status.bad_inputs + 1);
+  EXPECT_NE(unknown_result.status.message.find("9999"), std::string::npos) << unknown_result.status.message;
+  EXPECT_NE(unknown_result.status.message.find("no such object"), std::string::npos);
+  EXPECT_EQ(unknown_result.path.pushes.size(), 1U);
+
+  for (const auto& [force, mu] : {std::pair<double, double>{kNaN, 0.5}, std::pair<double, double>{50.0, kNaN},
+                                  std::pair<double, double>{std::numeric_limits<double>::infinity(), 0.0}}) {
+    AffordanceUpdate bad;
+    bad.object_id = box;
+    bad.pushable = false;  // must not be acted on either
+    bad.push_force_n = force;
+    bad.affordance = mu;
+    const FrameResult result = planner.applyAffordance(bad);
+    EXPECT_NE(result.status.message.find("finite"), std::string::npos) << result.status.message;
+    EXPECT_EQ(result.path.pushes.size(), 1U);
+    EXPECT_DOUBLE_EQ(planner.objectPhysics(box).ground_friction,
+                     interaction::ObjectPhysics{}.ground_friction);
+  }
+  EXPECT_EQ(planner.badInputs(), pushed.status.bad_inputs + 4);
+}
+
+TEST(InteractionPlanner, FarModeNeverPushes)
+{
+  PlannerSettings settings;
+  settings.interaction_enabled = false;
+  Planner planner{settings};
+  const FrameResult result = runFrames(planner, standingFrames());
+  ASSERT_TRUE(result.path.valid);
+  EXPECT_TRUE(result.path.pushes.empty());
+  EXPECT_EQ(result.status.interaction_edges, 0);
+  EXPECT_EQ(result.status.timings.interaction_ms >= 0.0, true);
+  for (const graph::Vertex& vertex : planner.graph().vertexSlots()) {
+    EXPECT_FALSE(vertex.alive && vertex.kind == graph::VertexKind::TopologicalWaypoint);
+  }
+  // Ids are tracked all the same (the daemon's polygon ids).
+  EXPECT_GT(objectNear(result, kDoorwayBox), 0);
+}
+
+TEST(InteractionPlanner, ObjectKeepsItsIdWhileTheVehicleDrivesTwoMetres)
+{
+  FrameAssembler assembler{InputSettings{}};
+  const std::vector<FrameInput> frames =
+      testing::feedAll(testing::recordSimulation(demoRoom(), 3.0, 1.0), assembler);
+  ASSERT_GE(frames.size(), 10U);
+  Planner planner{PlannerSettings{}};
+  ASSERT_TRUE(planner.setGoal(Goal{3, kGoal}));
+  std::int64_t doorway_id = 0;
+  std::int64_t heavy_id = 0;
+  int frames_seen = 0;
+  geometry::Point first_position = geometry::Point::Zero();
+  geometry::Point last_position = geometry::Point::Zero();
+  for (std::size_t index = 0; index < frames.size(); ++index) {
+    const FrameResult result = planner.processFrame(frames[index]);
+    const geometry::Point position = frames[index].motion.vehicle_at_end.translation().head<2>();
+    if (index == 0) {
+      first_position = position;
+    }
+    last_position = position;
+    const std::int64_t doorway = objectNear(result, kDoorwayBox);
+    const std::int64_t heavy = objectNear(result, geometry::Point(12.0, 10.0));
+    ASSERT_GT(doorway, 0) << "frame " << index;
+    ASSERT_GT(heavy, 0) << "frame " << index;
+    if (index == 0) {
+      doorway_id = doorway;
+      heavy_id = heavy;
+    }
+    EXPECT_EQ(doorway, doorway_id) << "frame " << index;
+    EXPECT_EQ(heavy, heavy_id) << "frame " << index;
+    EXPECT_NE(doorway, heavy);
+    ++frames_seen;
+    for (const PathPush& push : result.path.pushes) {
+      EXPECT_EQ(push.object_id, doorway_id);
+    }
+  }
+  EXPECT_GE(frames_seen, 10);
+  EXPECT_GE((last_position - first_position).norm(), 2.0);
+  // Moving closer does not make a new plan every frame: the cache keeps the plans of an unmoved object
+  // and replans only when much more of its surroundings came into view.
+  EXPECT_LT(planner.interactionPlans(doorway_id), frames.size() / 2);
+}
+
+TEST(InteractionPlanner, FrameBudgetSharesObjectsRoundRobin)
+{
+  PlannerSettings settings;
+  settings.interaction.loop.frame_budget_ms = 1e-9;  // one object per frame
+  Planner planner{settings};
+  ASSERT_TRUE(planner.setGoal(Goal{3, kGoal}));
+  const FrameResult first = planner.processFrame(standingFrames()[0]);
+  std::vector<std::int64_t> ids;
+  for (const std::int64_t id : first.polygon_ids) {
+    if (id > 0) {
+      ids.push_back(id);
+    }
+  }
+  ASSERT_GE(ids.size(), 2U);
+  std::size_t planned = 0;
+  for (const std::int64_t id : ids) {
+    planned += planner.interactionPlans(id) > 0 ? 1U : 0U;
+  }
+  EXPECT_EQ(planned, 1U);
+  for (std::size_t frame = 1; frame < ids.size(); ++frame) {
+    planner.processFrame(standingFrames()[frame % standingFrames().size()]);
+  }
+  for (const std::int64_t id : ids) {
+    EXPECT_EQ(planner.interactionPlans(id), 1U) << "object " << id;
+  }
+}
+
+}  // namespace
+}  // namespace ifar::planner
