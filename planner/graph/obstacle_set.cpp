@@ -175,25 +175,41 @@ void ObstacleSet::buildIndex(double bucket_size)
   }
 }
 
-bool ObstacleSet::edgeBlocks(const Edge& edge, const Point& from, const Point& to) const
+ObstacleSet::Segment::Segment(const Point& from_point, const Point& to_point)
+    : from(from_point), to(to_point), direction(to_point - from_point)
+{
+  // Boxes apart by more than this margin (far above the orientation tolerance) decide nothing.
+  const double margin =
+      1e-7 * (1.0 + std::abs(from.x()) + std::abs(from.y()) + std::abs(to.x()) + std::abs(to.y()));
+  box_low = Point(std::min(from.x(), to.x()) - margin, std::min(from.y(), to.y()) - margin);
+  box_high = Point(std::max(from.x(), to.x()) + margin, std::max(from.y(), to.y()) + margin);
+  tolerance_scale = kRelativeTolerance * (std::abs(direction.x()) + std::abs(direction.y()));
+}
+
+bool ObstacleSet::edgeBlocks(const Edge& edge, const Segment& segment) const
 {
   const Point& p = edge.start;
   const Point& q = edge.end;
-  // Boxes apart (with a margin far above the orientation tolerance): nothing to decide.
-  const double margin =
-      1e-7 * (1.0 + std::abs(from.x()) + std::abs(from.y()) + std::abs(to.x()) + std::abs(to.y()));
-  if (std::max(p.x(), q.x()) < std::min(from.x(), to.x()) - margin ||
-      std::min(p.x(), q.x()) > std::max(from.x(), to.x()) + margin ||
-      std::max(p.y(), q.y()) < std::min(from.y(), to.y()) - margin ||
-      std::min(p.y(), q.y()) > std::max(from.y(), to.y()) + margin) {
+  if (std::max(p.x(), q.x()) < segment.box_low.x() || std::min(p.x(), q.x()) > segment.box_high.x() ||
+      std::max(p.y(), q.y()) < segment.box_low.y() || std::min(p.y(), q.y()) > segment.box_high.y()) {
     return false;
   }
-  const int side_p = side(from, to, p);
-  const int side_q = side(from, to, q);
+  const Point& from = segment.from;
+  const Point& to = segment.to;
+  const Vector& direction = segment.direction;
+  // side(from, to, p) and side(from, to, q) with the per-test part of the tolerance precomputed (same
+  // operations in the same order, so the same decisions).
+  const auto sideOf = [&](const Point& point) {
+    const Vector offset = point - from;
+    const double value = direction.x() * offset.y() - direction.y() * offset.x();
+    const double tolerance = segment.tolerance_scale * (std::abs(offset.x()) + std::abs(offset.y()));
+    return value > tolerance ? 1 : (value < -tolerance ? -1 : 0);
+  };
+  const int side_p = sideOf(p);
+  const int side_q = sideOf(q);
   if (side_p * side_q > 0) {
     return false;
   }
-  const Vector direction = to - from;
   if (side_p * side_q < 0) {
     const int side_from = side(p, q, from);
     const int side_to = side(p, q, to);
@@ -231,7 +247,7 @@ bool ObstacleSet::edgeBlocks(const Edge& edge, const Point& from, const Point& t
 
 bool ObstacleSet::visible(const Point& from, const Point& to) const
 {
-  return from.allFinite() && to.allFinite() && findBlocker(from, to) == kNoEdge;
+  return from.allFinite() && to.allFinite() && findBlocker(Segment(from, to)) == kNoEdge;
 }
 
 bool ObstacleSet::visible(const Point& from, const Point& to, BlockerCache& cache) const
@@ -239,12 +255,13 @@ bool ObstacleSet::visible(const Point& from, const Point& to, BlockerCache& cach
   if (!from.allFinite() || !to.allFinite()) {
     return false;  // nothing sensible to say about a line through infinity
   }
+  const Segment segment(from, to);
   for (std::size_t slot = 0; slot < cache.count; ++slot) {
-    if (edgeBlocks(edges_[cache.edges[slot]], from, to)) {
+    if (edgeBlocks(edges_[cache.edges[slot]], segment)) {
       return false;
     }
   }
-  const std::uint32_t blocker = findBlocker(from, to);
+  const std::uint32_t blocker = findBlocker(segment);
   if (blocker == kNoEdge) {
     return true;
   }
@@ -254,12 +271,54 @@ bool ObstacleSet::visible(const Point& from, const Point& to, BlockerCache& cach
   return false;
 }
 
-std::uint32_t ObstacleSet::findBlocker(const Point& from, const Point& to) const
+bool ObstacleSet::visibleFrom(const Point& to, SectorBlockerCache& cache) const
+{
+  const Point& from = cache.origin;
+  if (!from.allFinite() || !to.allFinite()) {
+    return false;
+  }
+  const Segment segment(from, to);
+  // Sector from a pseudo-angle in [0, 4) that grows monotonically with the direction's angle (no trig).
+  const double dx = segment.direction.x();
+  const double dy = segment.direction.y();
+  const double size = std::abs(dx) + std::abs(dy);
+  if (size == 0.0) {
+    return findBlocker(segment) == kNoEdge;
+  }
+  const double ratio = dy / size;
+  const double pseudo_angle = dx >= 0.0 ? (dy >= 0.0 ? ratio : 4.0 + ratio) : 2.0 - ratio;
+  const std::size_t sector = std::min(
+      SectorBlockerCache::kSectors - 1,
+      static_cast<std::size_t>(pseudo_angle * (static_cast<double>(SectorBlockerCache::kSectors) / 4.0)));
+  std::uint32_t& remembered = cache.edges[sector];
+  if (remembered != SectorBlockerCache::kEmpty && edgeBlocks(edges_[remembered], segment)) {
+    return false;
+  }
+  BlockerCache& recent = cache.recent;
+  for (std::size_t slot = 0; slot < recent.count; ++slot) {
+    if (edgeBlocks(edges_[recent.edges[slot]], segment)) {
+      remembered = recent.edges[slot];
+      return false;
+    }
+  }
+  const std::uint32_t blocker = findBlocker(segment);
+  if (blocker == kNoEdge) {
+    return true;
+  }
+  remembered = blocker;
+  recent.edges[recent.next_slot] = blocker;
+  recent.next_slot = (recent.next_slot + 1) % BlockerCache::kSize;
+  recent.count = std::min(recent.count + 1, BlockerCache::kSize);
+  return false;
+}
+
+std::uint32_t ObstacleSet::findBlocker(const Segment& segment) const
 {
   if (columns_ == 0) {
     return kNoEdge;
   }
-  const Vector direction = to - from;
+  const Point& from = segment.from;
+  const Vector& direction = segment.direction;
   if (direction.x() == 0.0 && direction.y() == 0.0) {
     return kNoEdge;
   }
@@ -317,7 +376,7 @@ std::uint32_t ObstacleSet::findBlocker(const Point& from, const Point& to) const
     const std::size_t bucket =
         static_cast<std::size_t>(row) * static_cast<std::size_t>(columns_) + static_cast<std::size_t>(column);
     for (std::uint32_t slot = bucket_offsets_[bucket]; slot < bucket_offsets_[bucket + 1]; ++slot) {
-      if (edgeBlocks(edges_[bucket_edges_[slot]], from, to)) {
+      if (edgeBlocks(edges_[bucket_edges_[slot]], segment)) {
         return bucket_edges_[slot];
       }
     }

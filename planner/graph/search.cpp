@@ -8,6 +8,59 @@ namespace ifar::graph {
 namespace {
 
 constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
+// Vertices per cell of the grid that orders the robot's links (see AStarSearch::run), on average.
+constexpr double kVerticesPerCell = 6.0;
+
+/// A 4-ary min-heap on `priority` over a vector: half the levels of a binary heap, and the four children
+/// of a node share a cache line.
+template <typename Entry>
+void pushQuaternary(std::vector<Entry>& heap, const Entry& entry)
+{
+  std::size_t index = heap.size();
+  heap.push_back(entry);
+  while (index > 0) {
+    const std::size_t parent = (index - 1) / 4;
+    if (!(entry.priority < heap[parent].priority)) {
+      break;
+    }
+    heap[index] = heap[parent];
+    index = parent;
+  }
+  heap[index] = entry;
+}
+
+template <typename Entry>
+Entry popQuaternary(std::vector<Entry>& heap)
+{
+  const Entry top = heap.front();
+  const Entry last = heap.back();
+  heap.pop_back();
+  const std::size_t size = heap.size();
+  if (size == 0) {
+    return top;
+  }
+  std::size_t index = 0;
+  while (true) {
+    const std::size_t first = 4 * index + 1;
+    if (first >= size) {
+      break;
+    }
+    std::size_t best = first;
+    const std::size_t end = std::min(first + 4, size);
+    for (std::size_t child = first + 1; child < end; ++child) {
+      if (heap[child].priority < heap[best].priority) {
+        best = child;
+      }
+    }
+    if (!(heap[best].priority < last.priority)) {
+      break;
+    }
+    heap[index] = heap[best];
+    index = best;
+  }
+  heap[index] = last;
+  return top;
+}
 
 }  // namespace
 
@@ -46,6 +99,7 @@ SearchGraph SearchGraph::fromDvGraph(const DvGraph& graph)
     result.next_.push_back(vertex.next);
     result.kinds_.push_back(vertex.kind);
   }
+  result.buildVertexGrid();
   // Interaction edges grouped by their tail vertex.
   std::vector<std::vector<std::uint32_t>> outgoing(result.ids_.size());
   const auto& interactions = graph.interactionEdges();
@@ -78,6 +132,53 @@ SearchGraph SearchGraph::fromDvGraph(const DvGraph& graph)
     result.interaction_plans_.push_back(edge.push_plan);
   }
   return result;
+}
+
+void SearchGraph::buildVertexGrid()
+{
+  cell_offsets_.clear();
+  cell_vertices_.clear();
+  cell_columns_ = cell_rows_ = 0;
+  geometry::Point low = geometry::Point::Constant(std::numeric_limits<double>::infinity());
+  geometry::Point high = -low;
+  for (const geometry::Point& position : positions_) {
+    if (position.allFinite()) {
+      low = low.cwiseMin(position);
+      high = high.cwiseMax(position);
+    }
+  }
+  if (!(low.x() <= high.x())) {
+    return;  // no vertex with finite coordinates: nothing to attach
+  }
+  const geometry::Point extent = (high - low).cwiseMax(geometry::Point(1e-9, 1e-9));
+  const double cells_wanted = std::max(1.0, static_cast<double>(positions_.size()) / kVerticesPerCell);
+  cell_size_ = std::max(std::sqrt(extent.x() * extent.y() / cells_wanted), extent.maxCoeff() / 512.0);
+  cell_origin_ = low;
+  cell_columns_ = static_cast<int>(std::floor(extent.x() / cell_size_)) + 1;
+  cell_rows_ = static_cast<int>(std::floor(extent.y() / cell_size_)) + 1;
+  const auto cellOf = [&](const geometry::Point& position) -> std::size_t {
+    if (!position.allFinite()) {
+      return 0;  // never visible from anywhere; any cell will do
+    }
+    const geometry::Point relative = (position - cell_origin_) / cell_size_;
+    const int column = std::clamp(static_cast<int>(std::floor(relative.x())), 0, cell_columns_ - 1);
+    const int row = std::clamp(static_cast<int>(std::floor(relative.y())), 0, cell_rows_ - 1);
+    return static_cast<std::size_t>(row) * static_cast<std::size_t>(cell_columns_) +
+           static_cast<std::size_t>(column);
+  };
+  // Counting sort: vertices grouped by cell, index order inside a cell.
+  cell_offsets_.assign(static_cast<std::size_t>(cell_columns_) * static_cast<std::size_t>(cell_rows_) + 1, 0);
+  for (const geometry::Point& position : positions_) {
+    ++cell_offsets_[cellOf(position) + 1];
+  }
+  for (std::size_t cell = 1; cell < cell_offsets_.size(); ++cell) {
+    cell_offsets_[cell] += cell_offsets_[cell - 1];
+  }
+  std::vector<std::uint32_t> fill(cell_offsets_.begin(), cell_offsets_.end() - 1);
+  cell_vertices_.resize(positions_.size());
+  for (std::uint32_t vertex = 0; vertex < positions_.size(); ++vertex) {
+    cell_vertices_[fill[cellOf(positions_[vertex])]++] = vertex;
+  }
 }
 
 SearchResult AStarSearch::run(const SearchGraph& graph, const ObstacleSet& obstacles,
@@ -121,86 +222,164 @@ SearchResult AStarSearch::run(const SearchGraph& graph, const ObstacleSet& obsta
   const std::size_t count = graph.size();
   const std::uint32_t start_index = static_cast<std::uint32_t>(count);
   const std::uint32_t goal_index = start_index + 1;
-  if (scratch.cost_so_far_.size() < count + 2) {
-    scratch.cost_so_far_.resize(count + 2);
+  if (scratch.states_.size() < count + 2) {
+    scratch.states_.resize(count + 2);
     scratch.parent_.resize(count + 2);
-    scratch.seen_stamp_.resize(count + 2, 0);
-    scratch.closed_stamp_.resize(count + 2, 0);
   }
   if (++scratch.generation_ == 0) {  // wrapped: clear the stamps once every 4 billion searches
-    std::fill(scratch.seen_stamp_.begin(), scratch.seen_stamp_.end(), 0);
-    std::fill(scratch.closed_stamp_.begin(), scratch.closed_stamp_.end(), 0);
+    std::fill(scratch.states_.begin(), scratch.states_.end(), SearchScratch::VertexState{});
+    std::fill(scratch.cell_seen_stamp_.begin(), scratch.cell_seen_stamp_.end(), 0);
+    std::fill(scratch.cell_done_stamp_.begin(), scratch.cell_done_stamp_.end(), 0);
     scratch.generation_ = 1;
   }
   const std::uint32_t generation = scratch.generation_;
 
-  // Attach the robot to every vertex it sees (tangent at corners); the goal is attached lazily below.
-  scratch.start_links_.clear();
-  BlockerCache start_cache;
-  BlockerCache goal_cache;
-  for (std::uint32_t vertex = 0; vertex < count; ++vertex) {
+  const auto later = [](const SearchScratch::QueueEntry& a, const SearchScratch::QueueEntry& b) {
+    return a.priority > b.priority;
+  };
+
+  // The robot's links are attached lazily too. A link to vertex v can only matter once A* reaches the
+  // priority f(v) = |v - start| + h(v). Every point x on the segment from the robot to v has
+  // |x - start| + |x - goal| <= f(v), so the cells of the vertex grid that segment crosses all have a lower
+  // bound of that sum (over the cell's box) of at most f(v). The cells are therefore flooded from the
+  // robot's cell in order of the largest such bound along the way, and a cell's vertices are tested
+  // (tangency, then visibility) before A* expands anything of higher priority. Every link that can
+  // influence the result is in place in time, so the search is the same as with every visible vertex
+  // linked up front, while a short query only looks at the cells around its straight line.
+  const std::size_t cell_count = graph.cell_offsets_.empty() ? 0 : graph.cell_offsets_.size() - 1;
+  if (scratch.cell_key_.size() < cell_count) {
+    scratch.cell_key_.resize(cell_count);
+    scratch.cell_seen_stamp_.resize(cell_count, 0);
+    scratch.cell_done_stamp_.resize(cell_count, 0);
+  }
+  auto& cells = scratch.cell_queue_;
+  cells.clear();
+  const auto cellBound = [&](int column, int row) {
+    const geometry::Point low =
+        graph.cell_origin_ +
+        graph.cell_size_ * geometry::Point(static_cast<double>(column), static_cast<double>(row));
+    const geometry::Point high = low + geometry::Point(graph.cell_size_, graph.cell_size_);
+    const auto distance = [&](const geometry::Point& point) {
+      return (low - point).cwiseMax(point - high).cwiseMax(0.0).norm();
+    };
+    return distance(start) + distance(goal);
+  };
+  const auto offerCell = [&](int column, int row, double reached) {
+    const std::size_t cell = static_cast<std::size_t>(row) * static_cast<std::size_t>(graph.cell_columns_) +
+                             static_cast<std::size_t>(column);
+    if (scratch.cell_done_stamp_[cell] == generation) {
+      return;
+    }
+    const double key = std::max(reached, cellBound(column, row));
+    if (scratch.cell_seen_stamp_[cell] == generation && key >= scratch.cell_key_[cell]) {
+      return;
+    }
+    scratch.cell_seen_stamp_[cell] = generation;
+    scratch.cell_key_[cell] = key;
+    cells.push_back({key, static_cast<std::uint32_t>(cell)});
+    std::push_heap(cells.begin(), cells.end(), later);
+  };
+  if (cell_count > 0) {
+    const geometry::Point relative = (start - graph.cell_origin_) / graph.cell_size_;
+    if (relative.x() >= 0.0 && relative.y() >= 0.0 && relative.x() < graph.cell_columns_ &&
+        relative.y() < graph.cell_rows_) {
+      offerCell(static_cast<int>(relative.x()), static_cast<int>(relative.y()), 0.0);
+    } else {  // outside the grid: the segment to any vertex enters through a border cell
+      for (int column = 0; column < graph.cell_columns_; ++column) {
+        offerCell(column, 0, 0.0);
+        offerCell(column, graph.cell_rows_ - 1, 0.0);
+      }
+      for (int row = 0; row < graph.cell_rows_; ++row) {
+        offerCell(0, row, 0.0);
+        offerCell(graph.cell_columns_ - 1, row, 0.0);
+      }
+    }
+  }
+  SectorBlockerCache start_cache(start);
+  SectorBlockerCache goal_cache(goal);
+  const auto seesStart = [&](std::uint32_t vertex) {
     const geometry::Point& position = graph.positions_[vertex];
     const bool corner = graph.kinds_[vertex] == VertexKind::Corner;
     const LoopCorner geometry{position, graph.previous_[vertex], graph.next_[vertex], 0};
-    if ((!corner || isTangent(geometry, position - start)) &&
-        obstacles.visible(start, position, start_cache)) {
-      scratch.start_links_.emplace_back(vertex, (position - start).norm());
-    }
-  }
-  result.start_links = scratch.start_links_.size();
+    return (!corner || isTangent(geometry, position - start)) && obstacles.visibleFrom(position, start_cache);
+  };
 
   const auto seesGoal = [&](std::uint32_t vertex) {
     const geometry::Point& position = graph.positions_[vertex];
     const bool corner = graph.kinds_[vertex] == VertexKind::Corner;
     const LoopCorner geometry{position, graph.previous_[vertex], graph.next_[vertex], 0};
-    return (!corner || isTangent(geometry, position - goal)) && obstacles.visible(position, goal, goal_cache);
+    return (!corner || isTangent(geometry, position - goal)) && obstacles.visibleFrom(position, goal_cache);
   };
-  const auto heuristic = [&](std::uint32_t vertex) {
-    return vertex == start_index ? (goal - start).norm() : (goal - graph.positions_[vertex]).norm();
-  };
+  const auto heuristic = [&](std::uint32_t vertex) { return (goal - graph.positions_[vertex]).norm(); };
   auto& queue = scratch.queue_;
   queue.clear();
-  const auto later = [](const SearchScratch::QueueEntry& a, const SearchScratch::QueueEntry& b) {
-    return a.priority > b.priority;
-  };
   const auto relax = [&](std::uint32_t from, std::uint32_t to, double cost) {
-    const double candidate = scratch.cost_so_far_[from] + cost;
-    if (scratch.seen_stamp_[to] == generation && candidate >= scratch.cost_so_far_[to]) {
-      return;
+    const double candidate = scratch.states_[from].cost + cost;
+    SearchScratch::VertexState& state = scratch.states_[to];
+    if (state.seen == generation) {
+      if (candidate >= state.cost || state.closed == generation) {
+        return;  // no better, or final (consistent heuristic: closed vertices are final)
+      }
+    } else {
+      state.seen = generation;
+      state.heuristic = to == goal_index ? 0.0 : heuristic(to);
     }
-    if (scratch.closed_stamp_[to] == generation) {
-      return;  // consistent heuristic: closed vertices are final
-    }
-    scratch.seen_stamp_[to] = generation;
-    scratch.cost_so_far_[to] = candidate;
+    state.cost = candidate;
     scratch.parent_[to] = from;
-    queue.push_back({candidate + (to == goal_index ? 0.0 : heuristic(to)), to});
-    std::push_heap(queue.begin(), queue.end(), later);
+    pushQuaternary(queue, SearchScratch::QueueEntry{candidate + state.heuristic, to});
   };
-  scratch.seen_stamp_[start_index] = generation;
-  scratch.cost_so_far_[start_index] = 0.0;
+  // The robot is expanded first; its links arrive from the flood over the vertex grid.
+  scratch.states_[start_index].seen = generation;
+  scratch.states_[start_index].closed = generation;
+  scratch.states_[start_index].cost = 0.0;
   scratch.parent_[start_index] = kNone;
-  queue.push_back({heuristic(start_index), start_index});
+  ++result.expansions;
   bool found = false;
-  while (!queue.empty()) {
-    std::pop_heap(queue.begin(), queue.end(), later);
-    const auto entry = queue.back();
-    queue.pop_back();
+  while (true) {
+    while (!cells.empty() && (queue.empty() || cells.front().priority <= queue.front().priority)) {
+      std::pop_heap(cells.begin(), cells.end(), later);
+      const SearchScratch::QueueEntry cell_entry = cells.back();
+      cells.pop_back();
+      const std::uint32_t cell = cell_entry.vertex;
+      if (scratch.cell_done_stamp_[cell] == generation) {
+        continue;
+      }
+      scratch.cell_done_stamp_[cell] = generation;
+      for (std::uint32_t slot = graph.cell_offsets_[cell]; slot < graph.cell_offsets_[cell + 1]; ++slot) {
+        const std::uint32_t vertex = graph.cell_vertices_[slot];
+        if (seesStart(vertex)) {
+          ++result.start_links;
+          relax(start_index, vertex, (graph.positions_[vertex] - start).norm());
+        }
+      }
+      const int column = static_cast<int>(cell % static_cast<std::uint32_t>(graph.cell_columns_));
+      const int row = static_cast<int>(cell / static_cast<std::uint32_t>(graph.cell_columns_));
+      if (column > 0) {
+        offerCell(column - 1, row, cell_entry.priority);
+      }
+      if (column + 1 < graph.cell_columns_) {
+        offerCell(column + 1, row, cell_entry.priority);
+      }
+      if (row > 0) {
+        offerCell(column, row - 1, cell_entry.priority);
+      }
+      if (row + 1 < graph.cell_rows_) {
+        offerCell(column, row + 1, cell_entry.priority);
+      }
+    }
+    if (queue.empty()) {
+      break;
+    }
+    const SearchScratch::QueueEntry entry = popQuaternary(queue);
     const std::uint32_t vertex = entry.vertex;
-    if (scratch.closed_stamp_[vertex] == generation) {
+    if (scratch.states_[vertex].closed == generation) {
       continue;
     }
-    scratch.closed_stamp_[vertex] = generation;
+    scratch.states_[vertex].closed = generation;
     ++result.expansions;
     if (vertex == goal_index) {
       found = true;
       break;
-    }
-    if (vertex == start_index) {
-      for (const auto& [neighbour, distance] : scratch.start_links_) {
-        relax(start_index, neighbour, distance);
-      }
-      continue;
     }
     for (std::uint32_t arc = graph.offsets_[vertex]; arc < graph.offsets_[vertex + 1]; ++arc) {
       relax(vertex, graph.targets_[arc], graph.costs_[arc]);
@@ -217,7 +396,7 @@ SearchResult AStarSearch::run(const SearchGraph& graph, const ObstacleSet& obsta
     return result;
   }
   result.status = SearchStatus::Found;
-  result.cost = scratch.cost_so_far_[goal_index];
+  result.cost = scratch.states_[goal_index].cost;
   std::vector<std::uint32_t> chain;
   for (std::uint32_t vertex = goal_index; vertex != kNone; vertex = scratch.parent_[vertex]) {
     chain.push_back(vertex);
@@ -238,7 +417,7 @@ SearchResult AStarSearch::run(const SearchGraph& graph, const ObstacleSet& obsta
       const std::uint32_t from = chain[index - 1];
       for (std::uint32_t arc = graph.offsets_[from]; arc < graph.offsets_[from + 1]; ++arc) {
         if (graph.targets_[arc] == vertex && graph.interaction_[arc] != kNoInteraction &&
-            std::abs(scratch.cost_so_far_[from] + graph.costs_[arc] - scratch.cost_so_far_[vertex]) < 1e-9) {
+            std::abs(scratch.states_[from].cost + graph.costs_[arc] - scratch.states_[vertex].cost) < 1e-9) {
           point.interaction = graph.interaction_[arc];
           point.object_id = graph.interaction_objects_[point.interaction];
           point.push_plan = graph.interaction_plans_[point.interaction];

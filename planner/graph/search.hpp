@@ -1,8 +1,9 @@
 #pragma once
 // Global search (paper VII.A): attach the robot and the goal to the graph through visibility, then A*
-// with the Euclidean heuristic. The search reads an immutable SearchGraph snapshot and keeps its state
-// in a SearchScratch the caller owns, so graph updates and searches can run concurrently and repeated
-// searches allocate nothing once the scratch has grown.
+// with the Euclidean heuristic. Both attachments are lazy: a link is tested for visibility only when A*
+// could use it, so a short query on a large map tests few lines. The search reads an immutable SearchGraph
+// snapshot and keeps its state in a SearchScratch the caller owns, so graph updates and searches can run
+// concurrently and repeated searches allocate nothing once the scratch has grown.
 //
 // Unknown space is attemptable: the obstacle set holds only observed obstacles, so attachments and
 // edges that cross unobserved space count as free until perception adds a polygon that blocks them.
@@ -31,6 +32,8 @@ class SearchGraph {
 
  private:
   friend class AStarSearch;
+  void buildVertexGrid();
+
   std::vector<VertexId> ids_;
   std::vector<geometry::Point> positions_;
   std::vector<geometry::Point> previous_;
@@ -42,6 +45,14 @@ class SearchGraph {
   std::vector<std::uint32_t> interaction_;  // interaction edge index or kNoInteraction
   std::vector<std::int64_t> interaction_objects_;
   std::vector<std::uint32_t> interaction_plans_;
+  // Uniform grid over the vertex positions (vertices of cell c: cell_vertices_[cell_offsets_[c] ..
+  // cell_offsets_[c + 1])), for attaching the robot in order of A* priority.
+  geometry::Point cell_origin_ = geometry::Point::Zero();
+  double cell_size_ = 1.0;
+  int cell_columns_ = 0;
+  int cell_rows_ = 0;
+  std::vector<std::uint32_t> cell_offsets_;
+  std::vector<std::uint32_t> cell_vertices_;
 };
 
 enum class SearchStatus {
@@ -73,8 +84,8 @@ struct SearchResult {
   bool start_snapped = false;  // was inside an obstacle, moved to the nearest free point
   bool goal_snapped = false;
   std::size_t expansions = 0;
-  std::size_t start_links = 0;
-  std::size_t goal_links = 0;  // expanded vertices found to see the goal (tested lazily)
+  std::size_t start_links = 0;  // vertices found to see the robot (tested lazily, in priority order)
+  std::size_t goal_links = 0;   // expanded vertices found to see the goal (tested lazily)
 };
 
 /// Search state, reusable across searches of any graph; not shared between threads.
@@ -85,11 +96,19 @@ class SearchScratch {
     double priority;
     std::uint32_t vertex;
   };
-  std::vector<double> cost_so_far_;
+  struct VertexState {  // together: one cache line per visited vertex
+    double cost = 0.0;
+    double heuristic = 0.0;    // distance to the goal, computed when first seen
+    std::uint32_t seen = 0;    // generation in which `cost` and `heuristic` were set
+    std::uint32_t closed = 0;  // generation in which the vertex was expanded
+  };
+  std::vector<VertexState> states_;
   std::vector<std::uint32_t> parent_;
-  std::vector<std::uint32_t> seen_stamp_;
-  std::vector<std::uint32_t> closed_stamp_;
-  std::vector<std::pair<std::uint32_t, double>> start_links_;
+  // The flood over the vertex grid that orders the robot's links (cell index in QueueEntry::vertex).
+  std::vector<QueueEntry> cell_queue_;
+  std::vector<double> cell_key_;
+  std::vector<std::uint32_t> cell_seen_stamp_;
+  std::vector<std::uint32_t> cell_done_stamp_;
   std::vector<QueueEntry> queue_;
   std::uint32_t generation_ = 0;
 };
