@@ -1,8 +1,8 @@
 // ifar-executive: the executive daemon (docs/executive.md). Steps the executive library at 50 Hz on
 // the LCM bus; on exit it publishes a zero command.
 //
-// Obstacle points for the follower have no channel yet; until they do, the follower plans without
-// them and EXEC_STATUS says so.
+// Obstacle points for the follower come from the executive's own decoding of VELODYNE_PACKET
+// (executive/obstacles), so it reacts to a new obstacle within a packet, not a planner frame.
 
 #include <cstdint>
 #include <filesystem>
@@ -22,6 +22,8 @@ int runExecutive(ifar::common::DaemonContext& context, const std::string& vehicl
 {
   // The executive's own file first, so its errors are reported whatever the vehicle file says.
   const ifar::executive::ExecutiveSettings settings = ifar::executive::loadExecutiveSettings(context.config);
+  const ifar::executive::ObstacleSettings obstacles =
+      ifar::executive::loadObstacleSettings(context.config.child("obstacles"));
   // Without --vehicle, vehicle.yaml is taken from beside the executive's config file.
   const std::string vehicle_file =
       vehicle_path.empty()
@@ -31,7 +33,7 @@ int runExecutive(ifar::common::DaemonContext& context, const std::string& vehicl
       ifar::common::loadVehicleSettings(ifar::common::ConfigNode::loadFile(vehicle_file));
 
   ifar::bus::RunLoop loop(context.lcm_url, context.logger);
-  ifar::executive::ExecutiveNode node(loop, settings, vehicle, context.logger);
+  ifar::executive::ExecutiveNode node(loop, settings, obstacles, vehicle, context.logger);
   loop.every(kControlPeriodS, [&node]() { node.cycle(ifar::common::nowMicroseconds()); });
 
   context.logger->info("executive running at {:.0f} Hz", 1.0 / kControlPeriodS);

@@ -2,20 +2,57 @@
 
 #include <utility>
 
+#include <fmt/format.h>
+
+#include "common/time.hpp"
+#include "drivers/velodyne/packet_format.hpp"
+#include "ifar/velodyne_packet_t.hpp"
+
 namespace ifar::executive {
 namespace {
 
 constexpr int kStatusEveryCycles = 5;  // 10 Hz at the 50 Hz control rate
+constexpr std::int64_t kPacketWarningIntervalUs = 5'000'000;
 
 }  // namespace
 
 ExecutiveNode::ExecutiveNode(bus::RunLoop& loop, const ExecutiveSettings& settings,
                              const common::VehicleSettings& vehicle, std::shared_ptr<spdlog::logger> logger)
-    : loop_(loop), logger_(std::move(logger)), executive_(settings, vehicle)
+    : ExecutiveNode(loop, settings, ObstacleSettings{}, vehicle, std::move(logger))
+{
+}
+
+ExecutiveNode::ExecutiveNode(bus::RunLoop& loop, const ExecutiveSettings& settings,
+                             const ObstacleSettings& obstacles, const common::VehicleSettings& vehicle,
+                             std::shared_ptr<spdlog::logger> logger)
+    : loop_(loop),
+      logger_(std::move(logger)),
+      executive_(settings, vehicle),
+      obstacles_(obstacles, vehicle),
+      pushed_object_radius_m_(settings.pushed_object.radius_m),
+      packet_warnings_(kPacketWarningIntervalUs)
 {
   loop_.subscribe<ifar::pose_t>("POSE", [this](const ifar::pose_t& message, std::int64_t receive_utime) {
     inputs_.pose = Stamped<geometry::Pose2>{fromMessage(message), receive_utime};
+    obstacles_.addPose(receive_utime, inputs_.pose->value);
   });
+  loop_.subscribe<ifar::velodyne_packet_t>(
+      obstacles.packet_channel, [this](const ifar::velodyne_packet_t& message, std::int64_t receive_utime) {
+        if (message.port == velodyne::kPositionPort) {
+          return;  // position packets carry no returns (data packets may come from a configured port)
+        }
+        const std::int64_t before = obstacles_.malformedPackets();
+        obstacles_.addPacket(common::ByteView(message.data.data(), message.data.size()), receive_utime);
+        if (obstacles_.malformedPackets() != before &&
+            packet_warnings_.allow(common::monotonicMicroseconds())) {
+          logger_->warn(
+              "{}: malformed lidar packet ({} bytes: {}); {} malformed so far, {} warnings held back",
+              message.utime, message.data.size(),
+              velodyne::toString(
+                  velodyne::inspectPacket(common::ByteView(message.data.data(), message.data.size())).status),
+              obstacles_.malformedPackets(), packet_warnings_.takeSuppressed());
+        }
+      });
   loop_.subscribe<ifar::path_t>(
       "GLOBAL_PATH", [this](const ifar::path_t& message, std::int64_t receive_utime) {
         int malformed = 0;
@@ -42,12 +79,44 @@ ExecutiveNode::ExecutiveNode(bus::RunLoop& loop, const ExecutiveSettings& settin
       });
 }
 
+void ExecutiveNode::updateObstacleInputs(std::int64_t now_us)
+{
+  const std::int64_t newest = obstacles_.newestPacketUtime();
+  if (newest == 0) {
+    return;  // no packet yet: the executive reports "no fresh obstacle points"
+  }
+  // The set as of the newest packet, stamped with it: when the lidar falls silent the executive sees
+  // the last points go stale instead of a fresh empty set.
+  inputs_.obstacles = Stamped<std::vector<geometry::Point>>{obstacles_.points(newest), newest};
+  const std::optional<ObjectObservation> expected = executive_.pushedObjectEstimate();
+  if (!expected) {
+    return;
+  }
+  // Follow the object from its last sighting; the plan's expectation starts the search.
+  geometry::Point near = expected->position;
+  if (inputs_.pushed_object && inputs_.pushed_object->value.object_id == expected->object_id &&
+      now_us - inputs_.pushed_object->utime <=
+          common::secondsToMicroseconds(executive_.settings().stale.obstacles_s)) {
+    near = inputs_.pushed_object->value.position;
+  }
+  if (const std::optional<geometry::Point> centroid =
+          obstacles_.movableCentroid(near, pushed_object_radius_m_, newest)) {
+    inputs_.pushed_object =
+        Stamped<ObjectObservation>{ObjectObservation{expected->object_id, *centroid}, newest};
+  }
+}
+
 Output ExecutiveNode::cycle(std::int64_t now_us)
 {
+  updateObstacleInputs(now_us);
   Output output = executive_.step(now_us, inputs_);
   loop_.publish("VELOCITY_CMD", toVelocityMessage(output, now_us));
   if (output.mode_changed || ++cycles_ % kStatusEveryCycles == 0) {
-    loop_.publish("EXEC_STATUS", toStatusMessage(output, now_us));
+    ifar::exec_status_t status = toStatusMessage(output, now_us);
+    if (obstacles_.malformedPackets() > 0) {
+      status.reason += fmt::format(" [{} malformed lidar packets]", obstacles_.malformedPackets());
+    }
+    loop_.publish("EXEC_STATUS", status);
   }
   if (output.mode_changed) {
     logger_->info("mode {}: {}", modeName(output.status.mode), output.status.reason);

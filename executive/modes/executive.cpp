@@ -5,6 +5,9 @@
 
 #include <fmt/format.h>
 
+#include "common/geometry/segment.hpp"
+#include "executive/follower/arc.hpp"
+
 namespace ifar::executive {
 
 /// What one step() works with; the sub-steps fill in the command and the report.
@@ -53,6 +56,8 @@ Mode Executive::modeOf(Task task)
       return Mode::Push;
     case Task::ReplanWait:
       return Mode::ReplanWait;
+    case Task::BackOff:
+      return Mode::Follow;  // on the way to following; the reason says it is backing off
     case Task::Halted:
       return Mode::Stop;
     case Task::Arrived:
@@ -124,15 +129,31 @@ void Executive::absorbPath(const Inputs& inputs)
       // Only a path planned after the affordance update counts as the replan.
       if (incoming.utime > replan_requested_us_ || incoming.goal_id != goal_id_) {
         adoptPath(incoming);
+        if (task_ == Task::Follow) {
+          // The bumper is still on the object that would not move: back away from it first.
+          task_ = Task::BackOff;
+          backoff_start_.reset();
+        }
+      }
+      return;
+    case Task::BackOff:
+      // Newer paths are taken in, but the backing off goes on.
+      adoptPath(incoming);
+      if (task_ == Task::Follow) {
+        task_ = Task::BackOff;
       }
       return;
     case Task::Approach:
     case Task::Push: {
+      const bool same_goal = incoming.valid && incoming.goal_id == goal_id_;
       const bool still_pushed =
-          incoming.valid && incoming.goal_id == goal_id_ &&
+          same_goal &&
           std::any_of(incoming.push_plans.begin(), incoming.push_plans.end(),
                       [this](const PushPlan& plan) { return plan.object_id == active_plan_.object_id; });
-      if (still_pushed) {
+      // A push under way is finished (through its release) even when the replanned path no longer
+      // needs it (the moved object may already free the passage or be tracked under a new id):
+      // dropping it with the object on the bumper leaves the follower boxed in against it.
+      if (still_pushed || (same_goal && task_ == Task::Push)) {
         // Keep executing the plan in hand; the new path is used once the push is over.
         path_ = incoming;
         return;
@@ -217,6 +238,7 @@ void Executive::stepFollow(Cycle& cycle)
       distance_to(waypoint_index_) <= settings_.push_switch_radius_m) {
     if (const PushPlan* plan = planForWaypoint(waypoint_index_)) {
       active_plan_ = *plan;
+      startObjectPath();
       approach_.begin(active_plan_.contact_pose, cycle.pose, settings_.approach);
       task_ = Task::Approach;
       stepApproach(cycle);
@@ -224,8 +246,21 @@ void Executive::stepFollow(Cycle& cycle)
     }
   }
 
-  const FollowerResult result = follow(cycle.pose, waypoint.position, waypoint_index_ == last,
-                                       cycle.obstacles, settings_.follower, drive_);
+  FollowerResult result = follow(cycle.pose, waypoint.position, waypoint_index_ == last, cycle.obstacles,
+                                 settings_.follower, drive_);
+  const double squeeze_m = std::max(settings_.pushed_object.guard_clearance_m, result.clearance_m / 2.0);
+  if (result.status == FollowerStatus::Blocked && squeeze_m < settings_.follower.clearance_m) {
+    // Hemmed in at about the clearance (along a wall, every arc dips a little below it; turning swings
+    // a corner closer): accept arcs down to half the clearance left, never below the guard's.
+    FollowerSettings squeezed = settings_.follower;
+    squeezed.clearance_m = squeeze_m;
+    FollowerResult retry =
+        follow(cycle.pose, waypoint.position, waypoint_index_ == last, cycle.obstacles, squeezed, drive_);
+    if (retry.status != FollowerStatus::Blocked) {
+      retry.reason += fmt::format(" (squeezing: clearance {:.2f} m)", squeeze_m);
+      result = retry;
+    }
+  }
   cycle.desired = result.command;
   cycle.reason = fmt::format("waypoint {} of {}: {}", waypoint_index_, last, result.reason);
   if (result.status == FollowerStatus::Arrived && waypoint_index_ < last) {
@@ -237,13 +272,20 @@ void Executive::stepApproach(Cycle& cycle)
 {
   cycle.target = active_plan_.contact_pose.position();
   cycle.target_object_id = active_plan_.object_id;
-  const ApproachStep result = approach_.step(cycle.pose, cycle.force_n, cycle.obstacles, settings_.approach,
-                                             settings_.follower, drive_);
+  const common::Span<const geometry::Point> obstacles = objectFreeObstacles(cycle);
+  const ApproachStep result =
+      approach_.step(cycle.pose, cycle.force_n, obstacles, settings_.approach, settings_.follower, drive_);
   if (result.phase != ApproachPhase::Done) {
     cycle.desired = result.command;
     cycle.reason = fmt::format("object {}: {}", active_plan_.object_id, result.reason);
+    if (result.phase != ApproachPhase::ToStandoff) {
+      // Aligning and creeping ignore obstacles (the object must be touched): the guard still stops
+      // them for anything that is not the object.
+      guardCommand(cycle, obstacles);
+    }
     return;
   }
+  push_control_index_ = 0;
   tracker_.begin(active_plan_);
   tactile_.begin(active_plan_, max_push_force_n_);
   task_ = Task::Push;
@@ -253,8 +295,10 @@ void Executive::stepApproach(Cycle& cycle)
 void Executive::stepPush(Cycle& cycle)
 {
   cycle.target_object_id = active_plan_.object_id;
-  const PushStep result = tracker_.step(cycle.pose, cycle.force_n, cycle.obstacles, settings_.pusher,
+  const common::Span<const geometry::Point> obstacles = objectFreeObstacles(cycle);
+  const PushStep result = tracker_.step(cycle.pose, cycle.force_n, obstacles, settings_.pusher,
                                         settings_.approach, settings_.follower, drive_);
+  push_control_index_ = result.control_index;
   cycle.target = result.control_index < active_plan_.controls.size()
                      ? active_plan_.controls[result.control_index].expected_vehicle_pose.position()
                      : cycle.pose.position();
@@ -294,6 +338,127 @@ void Executive::stepPush(Cycle& cycle)
   }
   cycle.desired = result.command;
   cycle.reason = fmt::format("object {}: {}", active_plan_.object_id, result.reason);
+  guardCommand(cycle, obstacles);
+}
+
+void Executive::startObjectPath()
+{
+  object_path_.clear();
+  const std::vector<PushControl>& controls = active_plan_.controls;
+  if (controls.empty()) {
+    // Nothing to learn the object's place from: assume it just ahead of the bumper at contact.
+    const double ahead = settings_.follower.footprint.front_m + settings_.pushed_object.radius_m / 2.0;
+    object_path_.push_back(active_plan_.contact_pose.transform(geometry::Point(ahead, 0.0)));
+    return;
+  }
+  const PushControl& first = controls.front();
+  if (first.kind == PushControlKind::Push) {
+    // The object rides on the bumper during a primitive, so its offset from the vehicle at the end of
+    // the first push is its offset at contact too.
+    const geometry::Point offset =
+        first.expected_vehicle_pose.inverseTransform(first.expected_object_pose.position());
+    object_path_.push_back(active_plan_.contact_pose.transform(offset));
+  } else {
+    object_path_.push_back(first.expected_object_pose.position());  // a contact switch leaves it in place
+  }
+  for (const PushControl& control : controls) {
+    object_path_.push_back(control.expected_object_pose.position());
+  }
+}
+
+std::optional<ObjectObservation> Executive::pushedObjectEstimate() const
+{
+  if ((task_ != Task::Approach && task_ != Task::Push) || object_path_.empty()) {
+    return std::nullopt;
+  }
+  // object_path_[k] is where primitive k starts (before the push: index 0).
+  const std::size_t index = task_ == Task::Push ? std::min(push_control_index_, object_path_.size() - 1) : 0;
+  return ObjectObservation{active_plan_.object_id, object_path_[index]};
+}
+
+common::Span<const geometry::Point> Executive::objectFreeObstacles(const Cycle& cycle)
+{
+  if (!cycle.obstacles_fresh) {
+    return cycle.obstacles;
+  }
+  const double radius = settings_.pushed_object.radius_m;
+  std::optional<geometry::Point> observed;
+  if (cycle.inputs.pushed_object && cycle.inputs.pushed_object->value.object_id == active_plan_.object_id &&
+      fresh(cycle.now_us, cycle.inputs.pushed_object->utime, settings_.stale.obstacles_s)) {
+    observed = cycle.inputs.pushed_object->value.position;
+  }
+  const auto on_object = [this, radius, &observed](const geometry::Point& point) {
+    if (observed && (point - *observed).norm() <= radius) {
+      return true;
+    }
+    if (object_path_.size() == 1) {
+      return (point - object_path_.front()).norm() <= radius;
+    }
+    for (std::size_t index = 1; index < object_path_.size(); ++index) {
+      if (geometry::distanceToSegment(
+              point, geometry::Segment{object_path_[index - 1], object_path_[index]}) <= radius) {
+        return true;
+      }
+    }
+    return false;
+  };
+  object_free_obstacles_.clear();
+  for (const geometry::Point& point : cycle.obstacles) {
+    if (!on_object(point)) {
+      object_free_obstacles_.push_back(point);
+    }
+  }
+  return common::Span<const geometry::Point>(object_free_obstacles_.data(), object_free_obstacles_.size());
+}
+
+void Executive::guardCommand(Cycle& cycle, common::Span<const geometry::Point> obstacles) const
+{
+  const VelocityCommand command = cycle.desired;
+  if (!cycle.obstacles_fresh || command.isZero()) {
+    return;
+  }
+  const Footprint& footprint = settings_.follower.footprint;
+  const double horizon_s = settings_.pushed_object.guard_horizon_s;
+  const double clearance = settings_.pushed_object.guard_clearance_m;
+  const double time_step_s = std::min(settings_.follower.time_step_s, horizon_s);
+  // Points farther than this from the reference point cannot come within the clearance in the horizon.
+  const double reach = footprint.bodyCentre().norm() + footprint.circumradius() +
+                       std::abs(command.linear) * horizon_s + clearance;
+  for (const geometry::Point& point : obstacles) {
+    if ((point - cycle.pose.position()).norm() > reach) {
+      continue;
+    }
+    const double distance_now = footprint.distance(cycle.pose, point);
+    for (double time_s = time_step_s; time_s <= horizon_s + 1e-9; time_s += time_step_s) {
+      const geometry::Pose2 ahead = integrateArc(cycle.pose, command.linear, command.angular, time_s);
+      const double distance = footprint.distance(ahead, point);
+      // Only closing in counts, so the vehicle can always back away from something already near.
+      if (distance < clearance && distance < distance_now) {
+        cycle.desired = {};
+        cycle.reason +=
+            fmt::format(" (stopped: obstacle at ({:.2f}, {:.2f}) in the way)", point.x(), point.y());
+        return;
+      }
+    }
+  }
+}
+
+void Executive::stepBackOff(Cycle& cycle)
+{
+  cycle.target_object_id = active_plan_.object_id;
+  if (!backoff_start_) {
+    backoff_start_ = cycle.pose.position();
+  }
+  const double travelled = (cycle.pose.position() - *backoff_start_).norm();
+  if (travelled >= settings_.pusher.release_m) {
+    task_ = Task::Follow;
+    stepFollow(cycle);
+    return;
+  }
+  cycle.desired = {-settings_.pusher.reverse_speed, 0.0};
+  cycle.reason = fmt::format("backing away from object {} before following the new path: {:.2f} of {:.2f} m",
+                             active_plan_.object_id, travelled, settings_.pusher.release_m);
+  guardCommand(cycle, objectFreeObstacles(cycle));
 }
 
 void Executive::stepReplanWait(Cycle& cycle)
@@ -326,8 +491,8 @@ Output Executive::step(std::int64_t now_us, const Inputs& inputs)
   const std::int32_t stale = staleBits(now_us, inputs);
   absorbPath(inputs);
 
-  const bool active =
-      task_ == Task::Follow || task_ == Task::Approach || task_ == Task::Push || task_ == Task::ReplanWait;
+  const bool active = task_ == Task::Follow || task_ == Task::Approach || task_ == Task::Push ||
+                      task_ == Task::ReplanWait || task_ == Task::BackOff;
   const bool e_stopped = inputs.e_stop && inputs.e_stop->value.engaged;
   const bool pose_finite =
       std::isfinite(cycle.pose.x) && std::isfinite(cycle.pose.y) && std::isfinite(cycle.pose.heading);
@@ -366,6 +531,9 @@ Output Executive::step(std::int64_t now_us, const Inputs& inputs)
       case Task::ReplanWait:
         stepReplanWait(cycle);
         break;
+      case Task::BackOff:
+        stepBackOff(cycle);
+        break;
       case Task::Idle:
       case Task::Halted:
       case Task::Arrived:
@@ -373,7 +541,8 @@ Output Executive::step(std::int64_t now_us, const Inputs& inputs)
         break;
     }
     mode = modeOf(task_);
-    moving = task_ == Task::Follow || task_ == Task::Approach || task_ == Task::Push;
+    moving =
+        task_ == Task::Follow || task_ == Task::Approach || task_ == Task::Push || task_ == Task::BackOff;
     if (!cycle.obstacles_fresh && (task_ == Task::Follow || task_ == Task::Approach)) {
       cycle.reason += " (no fresh obstacle points)";
     }

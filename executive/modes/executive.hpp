@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "common/vehicle.hpp"
 #include "executive/affordance/affordance_event.hpp"
@@ -52,11 +53,16 @@ class Executive {
   Output step(std::int64_t now_us, const Inputs& inputs);
 
   Mode mode() const { return last_mode_; }
+  /// While approaching or pushing: the object's id and where the plan expects its centroid now (world
+  /// frame), for finding its returns (the daemon's pushed_object input). Empty in the other modes.
+  std::optional<ObjectObservation> pushedObjectEstimate() const;
   const ExecutiveSettings& settings() const { return settings_; }
 
  private:
   /// The task the executive pursues; Stop and EStop are overrides on top of it.
-  enum class Task { Idle, Follow, Approach, Push, ReplanWait, Halted, Arrived };
+  /// BackOff: reversing away from an object whose push was given up, before following a new path
+  /// (the follower only plans forward, so with the object on the bumper it would be boxed in).
+  enum class Task { Idle, Follow, Approach, Push, ReplanWait, BackOff, Halted, Arrived };
 
   struct Cycle;  // per-step context
 
@@ -68,10 +74,17 @@ class Executive {
   void stepApproach(Cycle& cycle);
   void stepPush(Cycle& cycle);
   void stepReplanWait(Cycle& cycle);
+  void stepBackOff(Cycle& cycle);
   void startGoal(std::int64_t goal_id);
   const PushPlan* planForWaypoint(std::size_t index) const;
   int pushWaypointIndex(std::int64_t object_id) const;
   static Mode modeOf(Task task);
+  /// The expected centroid path of the active plan's object: at first contact, then after each primitive.
+  void startObjectPath();
+  /// The fresh obstacle points without the returns on the object being approached or pushed.
+  common::Span<const geometry::Point> objectFreeObstacles(const Cycle& cycle);
+  /// Stops `cycle.desired` when it drives the footprint toward a point closer than the guard clearance.
+  void guardCommand(Cycle& cycle, common::Span<const geometry::Point> obstacles) const;
 
   ExecutiveSettings settings_;
   common::VehicleSettings vehicle_;
@@ -88,10 +101,14 @@ class Executive {
   int replans_ = 0;
 
   PushPlan active_plan_;
+  std::vector<geometry::Point> object_path_;            // see startObjectPath()
+  std::size_t push_control_index_ = 0;                  // the tracker's current primitive
+  std::vector<geometry::Point> object_free_obstacles_;  // reused buffer of objectFreeObstacles()
   Approach approach_;
   PushTracker tracker_;
   TactileMonitor tactile_;
   std::int64_t replan_requested_us_ = 0;
+  std::optional<geometry::Point> backoff_start_;  // where BackOff began reversing (set on its first step)
 
   VelocityCommand last_command_;
   std::int64_t last_step_us_ = 0;

@@ -124,6 +124,13 @@ ExecutiveSettings loadExecutiveSettings(const common::ConfigNode& node)
   tactile.min_measured_distance_m = positive(node, "tactile.min_measured_distance_m");
   tactile.cost_threshold = positive(node, "tactile.cost_threshold");
 
+  PushedObjectSettings& pushed_object = settings.pushed_object;
+  pushed_object.radius_m = positive(node, "pushed_object.radius_m");
+  pushed_object.guard_clearance_m = nonNegative(node, "pushed_object.guard_clearance_m");
+  pushed_object.guard_horizon_s = positive(node, "pushed_object.guard_horizon_s");
+
+  // The daemon and the headless runner read this section with loadObstacleSettings.
+  node.acceptAllUnder("obstacles");
   node.rejectUnknownKeys();
   return settings;
 }

@@ -20,6 +20,18 @@ struct StaleThresholds {
   double obstacles_s = 0.5;  ///< older obstacle points are not used (the status says so)
 };
 
+/// While approaching and pushing, the pushed object is no obstacle, but everything else still is.
+struct PushedObjectSettings {
+  /// Returns within this distance of the object's expected centroid path (from its position at first
+  /// contact through every primitive's expected end) or of its observed centroid belong to the object.
+  double radius_m = 0.8;
+  /// Any other return closer than this to the footprint along the command stops the vehicle (creep,
+  /// push, back-off; the collision-free legs keep the follower's clearance). Also the least clearance
+  /// the executive lets a blocked follower squeeze down to.
+  double guard_clearance_m = 0.05;
+  double guard_horizon_s = 0.5;  ///< how far ahead the command is checked, seconds
+};
+
 struct ExecutiveSettings {
   StaleThresholds stale;
   double waypoint_tolerance_m = 0.4;  ///< an intermediate waypoint counts as passed within this
@@ -34,10 +46,12 @@ struct ExecutiveSettings {
   ApproachSettings approach;
   PushTrackerSettings pusher;
   TactileSettings tactile;
+  PushedObjectSettings pushed_object;
 };
 
 /// Reads every key of executive.yaml (all required; numbers must be positive unless noted) and rejects
-/// unknown ones. Throws common::ConfigError naming the key.
+/// unknown ones. Throws common::ConfigError naming the key. The `obstacles:` section belongs to
+/// loadObstacleSettings (executive/obstacles) and is left for it.
 ExecutiveSettings loadExecutiveSettings(const common::ConfigNode& node);
 
 /// The vehicle's outline for the follower: `reference_to_bumper_m` ahead of the pose, the rest of

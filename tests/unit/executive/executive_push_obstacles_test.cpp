@@ -1,0 +1,246 @@
+// Approach and push with obstacle points: the returns on the object being pushed do not stop the
+// vehicle, anything else in the way of a creep or push does.
+
+#include <algorithm>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "executive/modes/executive.hpp"
+#include "tests/unit/executive/simulation.hpp"
+
+namespace ifar::executive {
+namespace {
+
+using geometry::Point;
+using geometry::Pose2;
+
+constexpr std::int64_t kCycleUs = 20'000;  // 50 Hz
+constexpr double kObjectHalfSide = 0.3;    // a 0.6 m box
+const Point kObjectStart(2.25, 0.0);       // its face touches the bumper at the contact pose (1.5, 0)
+
+Waypoint waypoint(double x, WaypointKind kind, std::int64_t object_id = -1, int plan_index = -1)
+{
+  Waypoint result;
+  result.position = Point(x, 0.0);
+  result.kind = kind;
+  result.object_id = object_id;
+  result.push_plan_index = plan_index;
+  return result;
+}
+
+/// Object 9 pushed 0.9 m along +x from the contact pose (1.5, 0): its centroid goes (2.25, 0) -> (3.15, 0).
+Path pushPath()
+{
+  Path path;
+  path.goal_id = 5;
+  path.sequence = 1;
+  path.valid = true;
+  PushPlan plan;
+  plan.object_id = 9;
+  plan.contact_pose = {1.5, 0.0, 0.0};
+  PushControl control;
+  control.linear_velocity = 0.3;
+  control.duration_s = 3.0;
+  control.expected_vehicle_pose = {2.4, 0.0, 0.0};
+  control.expected_object_pose = {3.15, 0.0, 0.0};
+  plan.controls.push_back(control);
+  plan.expected_force_n = 100.0;
+  plan.push_distance_m = 0.9;
+  path.push_plans.push_back(plan);
+  path.waypoints = {waypoint(0.0, WaypointKind::Free), waypoint(0.5, WaypointKind::Topological, 9, 0),
+                    waypoint(3.5, WaypointKind::Push, 9, 0), waypoint(6.0, WaypointKind::Free)};
+  return path;
+}
+
+/// Points every 5 cm on the outline of the box centred at `centre`.
+std::vector<Point> boxReturns(const Point& centre)
+{
+  std::vector<Point> points;
+  for (int step = 0; step <= 12; ++step) {
+    const double along = -kObjectHalfSide + step * 0.05;
+    points.emplace_back(centre.x() - kObjectHalfSide, centre.y() + along);
+    points.emplace_back(centre.x() + kObjectHalfSide, centre.y() + along);
+    points.emplace_back(centre.x() + along, centre.y() - kObjectHalfSide);
+    points.emplace_back(centre.x() + along, centre.y() + kObjectHalfSide);
+  }
+  return points;
+}
+
+class ExecutivePushObstaclesTest : public ::testing::Test {
+ protected:
+  ExecutivePushObstaclesTest() : executive_(settings_, vehicle_) {}
+
+  /// One cycle: the object's returns (the bumper pushes it along +x) plus `others`; 100 N on the
+  /// bumper while pushing.
+  Output cycle(const std::vector<Point>& others, std::optional<double> force_n = std::nullopt)
+  {
+    now_us_ += kCycleUs;
+    if (executive_.mode() == Mode::Push && !force_n) {
+      // The bumper (0.45 m ahead of the pose) pushes the box's near face; backing off leaves it.
+      object_.x() = std::max(object_.x(), pose_.x + 0.45 + kObjectHalfSide);
+    }
+    std::vector<Point> points = boxReturns(object_);
+    points.insert(points.end(), others.begin(), others.end());
+    const bool pushing = executive_.mode() == Mode::Push;
+    Inputs inputs;
+    inputs.pose = Stamped<Pose2>{pose_, now_us_};
+    inputs.path = Stamped<Path>{path_, now_us_};
+    inputs.force =
+        Stamped<ForceReading>{ForceReading{force_n.value_or(pushing ? 100.0 : 0.0), false}, now_us_};
+    inputs.motor = Stamped<MotorReading>{MotorReading{true, false, ""}, now_us_};
+    inputs.obstacles = Stamped<std::vector<Point>>{points, now_us_};
+    const Output output = executive_.step(now_us_, inputs);
+    if (!(force_n && output.command.linear > 0.0)) {  // a stalling force stops forward motion
+      pose_ = testing::drive(pose_, output.command, kCycleUs * 1e-6);
+    }
+    return output;
+  }
+
+  ExecutiveSettings settings_;
+  common::VehicleSettings vehicle_;
+  Executive executive_;
+  Path path_ = pushPath();
+  Pose2 pose_{0.85, 0.0, 0.0};  // in the push lane behind the contact pose: no collision-free leg
+  Point object_ = kObjectStart;
+  std::int64_t now_us_ = 1'000'000'000;
+};
+
+TEST_F(ExecutivePushObstaclesTest, ObjectReturnsDoNotStopApproachOrPush)
+{
+  bool approached = false;
+  bool pushed = false;
+  Output output;
+  for (int index = 0; index < 1500 && output.status.pushes == 0; ++index) {
+    output = cycle({});
+    approached = approached || output.status.mode == Mode::Approach;
+    pushed = pushed || output.status.mode == Mode::Push;
+    ASSERT_EQ(output.status.reason.find("stopped"), std::string::npos)
+        << "cycle " << index << ": " << output.status.reason;
+    if (output.status.mode == Mode::Approach || output.status.mode == Mode::Push) {
+      const std::optional<ObjectObservation> expected = executive_.pushedObjectEstimate();
+      ASSERT_TRUE(expected.has_value());
+      EXPECT_EQ(expected->object_id, 9);
+    }
+  }
+  EXPECT_TRUE(approached);
+  EXPECT_TRUE(pushed);
+  EXPECT_EQ(output.status.pushes, 1);
+  EXPECT_NEAR(object_.x(), 3.15, 0.1);  // pushed as planned
+}
+
+TEST_F(ExecutivePushObstaclesTest, WithoutTheObjectRadiusTheObjectWouldStopTheCreep)
+{
+  // The control for the test above: the same run with the object's returns counted as obstacles.
+  settings_.pushed_object.radius_m = 0.01;
+  executive_ = Executive(settings_, vehicle_);
+  Output output;
+  for (int index = 0; index < 500; ++index) {
+    output = cycle({});
+  }
+  EXPECT_EQ(output.status.mode, Mode::Approach);
+  EXPECT_NE(output.status.reason.find("stopped: obstacle"), std::string::npos) << output.status.reason;
+}
+
+TEST_F(ExecutivePushObstaclesTest, APushUnderWayFinishesWhenTheReplannedPathDropsIt)
+{
+  Output output;
+  for (int index = 0; index < 500 && output.status.mode != Mode::Push; ++index) {
+    output = cycle({});
+  }
+  ASSERT_EQ(output.status.mode, Mode::Push);
+  // The planner replans for the same goal without the push (the moved box no longer blocks it).
+  path_.sequence = 2;
+  path_.utime = now_us_;
+  path_.push_plans.clear();
+  path_.waypoints = {waypoint(2.0, WaypointKind::Free), waypoint(2.5, WaypointKind::Free),
+                     waypoint(6.0, WaypointKind::Free)};
+  std::vector<Mode> modes;
+  for (int index = 0; index < 1500 && output.status.pushes == 0; ++index) {
+    output = cycle({});
+    modes.push_back(output.status.mode);
+  }
+  EXPECT_EQ(output.status.pushes, 1);
+  // Pushing went on to the release, then the new path was followed.
+  const auto first_follow = std::find(modes.begin(), modes.end(), Mode::Follow);
+  EXPECT_TRUE(std::all_of(modes.begin(), first_follow, [](Mode mode) { return mode == Mode::Push; }));
+  EXPECT_NEAR(object_.x(), 3.15, 0.1);
+}
+
+TEST_F(ExecutivePushObstaclesTest, AfterAnUnpushableObjectTheVehicleBacksAwayBeforeFollowing)
+{
+  Output output;
+  for (int index = 0; index < 500 && output.status.mode != Mode::Push; ++index) {
+    output = cycle({});
+  }
+  ASSERT_EQ(output.status.mode, Mode::Push);
+  const double stall_force = 0.95 * vehicle_.maxPushForce();
+  for (int index = 0; index < 500 && output.status.mode != Mode::ReplanWait; ++index) {
+    output = cycle({}, stall_force);
+  }
+  ASSERT_EQ(output.status.mode, Mode::ReplanWait);
+  const Point stalled = pose_.position();
+
+  // The replanned path goes around: straight ahead is the box on the bumper, so the follower alone
+  // would be boxed in. The vehicle reverses release_m first.
+  path_.sequence = 2;
+  path_.utime = now_us_ + kCycleUs;
+  path_.push_plans.clear();
+  path_.waypoints = {waypoint(stalled.x(), WaypointKind::Free), waypoint(6.0, WaypointKind::Free)};
+  path_.waypoints[1].position = Point(stalled.x(), 2.0);
+  output = cycle({}, 0.0);
+  EXPECT_EQ(output.status.mode, Mode::Follow);
+  EXPECT_LT(output.command.linear, 0.0);
+  EXPECT_NE(output.status.reason.find("backing away from object 9"), std::string::npos)
+      << output.status.reason;
+  for (int index = 0; index < 200 && output.command.linear <= 0.0; ++index) {
+    output = cycle({}, 0.0);
+  }
+  EXPECT_NEAR((pose_.position() - stalled).norm(), settings_.pusher.release_m, 0.02);
+  EXPECT_NE(output.status.reason.find("waypoint"), std::string::npos) << output.status.reason;
+}
+
+TEST_F(ExecutivePushObstaclesTest, ApproachEstimateIsTheObjectAtFirstContact)
+{
+  const Output output = cycle({});
+  ASSERT_EQ(output.status.mode, Mode::Approach) << output.status.reason;
+  const std::optional<ObjectObservation> expected = executive_.pushedObjectEstimate();
+  ASSERT_TRUE(expected.has_value());
+  EXPECT_NEAR(expected->position.x(), kObjectStart.x(), 1e-9);
+  EXPECT_NEAR(expected->position.y(), kObjectStart.y(), 1e-9);
+}
+
+TEST_F(ExecutivePushObstaclesTest, SomethingElseBesideTheCreepStopsIt)
+{
+  // A post 2 cm beside the lane, ahead of the bumper and beyond the object's radius: creeping on would
+  // scrape it.
+  const std::vector<Point> post = {Point(1.5, vehicle_.width_m / 2.0 + 0.02)};
+  ASSERT_GT((post[0] - kObjectStart).norm(), settings_.pushed_object.radius_m);
+  Output output;
+  for (int index = 0; index < 500; ++index) {
+    output = cycle(post);
+  }
+  EXPECT_EQ(output.status.mode, Mode::Approach);
+  EXPECT_TRUE(output.command.isZero());
+  EXPECT_NE(output.status.reason.find("stopped: obstacle"), std::string::npos) << output.status.reason;
+  // Stopped with the bumper short of the post (the guard keeps 5 cm).
+  EXPECT_LT(pose_.x + settings_.reference_to_bumper_m, 1.5);
+  EXPECT_GT(pose_.x, 0.9);  // it did creep until the post came close
+}
+
+TEST_F(ExecutivePushObstaclesTest, ObjectIsAnObstacleWhileFollowing)
+{
+  // Far from the topological waypoint the executive follows; the box right ahead blocks the straight arc.
+  pose_ = {-3.0, 0.0, 0.0};
+  object_ = Point(-1.9, 0.0);
+  const Output output = cycle({});
+  EXPECT_EQ(output.status.mode, Mode::Follow);
+  EXPECT_FALSE(executive_.pushedObjectEstimate().has_value());
+  EXPECT_EQ(output.status.reason.find("no fresh obstacle points"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace ifar::executive
