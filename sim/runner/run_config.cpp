@@ -1,0 +1,58 @@
+#include "sim/runner/run_config.hpp"
+
+#include <filesystem>
+
+#include "common/config.hpp"
+#include "planner/daemon/daemon_settings.hpp"
+#include "planner/interaction/interaction_settings.hpp"
+#include "sim/daemon/daemon_settings.hpp"
+
+namespace ifar::runner {
+namespace {
+
+common::ConfigNode loadFrom(const std::string& directory, const std::string& file)
+{
+  return common::ConfigNode::loadFile((std::filesystem::path(directory) / file).string());
+}
+
+/// The keys runDaemon reads for every daemon; the runner has no bus and logs nothing, but the files
+/// stay valid for both.
+void readDaemonKeys(const common::ConfigNode& root)
+{
+  root.optional<std::string>("log_level", "info");
+  root.optional<std::string>("lcm_url", "");
+}
+
+}  // namespace
+
+RunRequest loadRunSettings(const std::string& config_directory)
+{
+  RunRequest request;
+  request.vehicle = common::loadVehicleSettings(loadFrom(config_directory, "vehicle.yaml"));
+
+  const common::ConfigNode planner_root = loadFrom(config_directory, "planner.yaml");
+  readDaemonKeys(planner_root);
+  const planner::PlannerConfig planner_config = planner::loadPlannerConfig(planner_root);
+  request.planner = planner_config.planner;
+  request.planner.vehicle = request.vehicle;
+  request.planner.interaction.pusher = interaction::PusherSettings::fromVehicle(request.vehicle);
+  request.planner_rate_hz = planner_config.daemon.rate_hz;
+  request.path_resend_hz = planner_config.daemon.path_resend_hz;
+
+  const common::ConfigNode executive_root = loadFrom(config_directory, "executive.yaml");
+  readDaemonKeys(executive_root);
+  // The `obstacles:` section first: loadExecutiveSettings leaves it to its own loader (required, as in
+  // the executive daemon).
+  request.obstacles = executive::loadObstacleSettings(executive_root.child("obstacles"));
+  request.executive = executive::loadExecutiveSettings(executive_root);
+  executive_root.rejectUnknownKeys();
+
+  const common::ConfigNode sim_root = loadFrom(config_directory, "sim.yaml");
+  readDaemonKeys(sim_root);
+  request.simulator = sim::loadSimDaemonSettings(sim_root).simulator;
+  sim_root.acceptAllUnder("bus");  // the CAN bus: the runner connects nothing
+  sim_root.rejectUnknownKeys();
+  return request;
+}
+
+}  // namespace ifar::runner

@@ -1,0 +1,166 @@
+// ifar-run WORLD --goal X,Y: the headless runner. Simulator, planner and executive in one process on
+// simulated time, deterministic and faster than real time. Progress goes to stderr about once per
+// simulated second; the summary to stdout (with --json as one JSON object on the last line).
+// Exit code 0 when the vehicle arrived, 1 when it did not, 2 on bad input (world, goal, config).
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "common/config.hpp"
+#include "sim/generators/generators.hpp"
+#include "sim/runner/run_config.hpp"
+#include "sim/runner/run_picture.hpp"
+#include "sim/runner/scenario_runner.hpp"
+#include "sim/runner/summary_json.hpp"
+#include "sim/simulator/builtin_worlds.hpp"
+#include "sim/world/world_file.hpp"
+
+namespace {
+
+constexpr int kExitArrived = 0;
+constexpr int kExitNotArrived = 1;
+constexpr int kExitBadInput = 2;
+
+/// "X,Y" as a point; nullopt when it is not two numbers separated by a comma.
+std::optional<ifar::geometry::Point> parseGoal(const std::string& text)
+{
+  const std::size_t comma = text.find(',');
+  if (comma == std::string::npos) {
+    return std::nullopt;
+  }
+  const std::string x_text = text.substr(0, comma);
+  const std::string y_text = text.substr(comma + 1);
+  char* end = nullptr;
+  const double x = std::strtod(x_text.c_str(), &end);
+  if (x_text.empty() || *end != '\0') {
+    return std::nullopt;
+  }
+  const double y = std::strtod(y_text.c_str(), &end);
+  if (y_text.empty() || *end != '\0') {
+    return std::nullopt;
+  }
+  return ifar::geometry::Point(x, y);
+}
+
+/// A world file, else a builtin world or a generator kind of that name. The error names the input.
+ifar::sim::WorldResult loadWorld(const std::string& name, std::uint64_t seed)
+{
+  if (!std::filesystem::exists(name)) {
+    ifar::sim::World builtin;
+    if (ifar::sim::builtinWorldByName(name, builtin)) {
+      return ifar::sim::WorldResult::success(std::move(builtin));
+    }
+    if (const auto kind = ifar::sim::parseWorldKind(name)) {
+      return ifar::sim::generateWorld(*kind, seed);
+    }
+  }
+  return ifar::sim::loadWorldFile(name);
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+  CLI::App app{
+      "Headless runner: simulator, planner and executive in one process on simulated time (deterministic, "
+      "faster than real time).\nExit code 0 when the vehicle arrived, 1 when it did not, 2 on bad input."};
+  std::string world_name;
+  std::string goal_text;
+  double max_time_s = 300.0;
+  bool no_interaction = false;
+  bool json = false;
+  std::string png_path;
+  std::string config_dir = "config";
+  app.add_option("world", world_name,
+                 "World file (YAML, docs/worlds.md), or a builtin (room, push_light, push_heavy, tunnel) or "
+                 "generated kind (room, room_objects, office, tunnel, demo_room) when no such file exists")
+      ->required();
+  app.add_option("--goal", goal_text, "Goal as X,Y in metres (default: the world's first goal)");
+  app.add_option("--max-time", max_time_s, "Simulated seconds before the run counts as failed")
+      ->capture_default_str();
+  app.add_flag("--no-interaction", no_interaction, "FAR mode: plan without interaction edges (never push)");
+  app.add_flag("--json", json, "Print the summary as one JSON object on the last line of stdout");
+  app.add_option("--png", png_path, "Write a picture of the world, trajectory and final object poses");
+  app.add_option("--config-dir", config_dir,
+                 "Directory with vehicle.yaml, planner.yaml, executive.yaml and sim.yaml")
+      ->capture_default_str();
+  CLI11_PARSE(app, argc, argv);
+
+  ifar::runner::RunRequest request;
+  try {
+    request = ifar::runner::loadRunSettings(config_dir);
+  } catch (const ifar::common::ConfigError& error) {
+    std::cerr << "error: " << error.what() << "\n";
+    return kExitBadInput;
+  }
+  if (!(std::isfinite(max_time_s) && max_time_s > 0.0)) {
+    std::cerr << "error: --max-time: must be a positive number of seconds, got " << max_time_s << "\n";
+    return kExitBadInput;
+  }
+  request.max_sim_time_s = max_time_s;
+  request.planner.interaction_enabled = !no_interaction;
+
+  ifar::sim::WorldResult loaded = loadWorld(world_name, request.simulator.seed);
+  if (!loaded.ok()) {
+    std::cerr << "error: world: " << loaded.error() << "\n";
+    return kExitBadInput;
+  }
+  request.world = std::move(loaded.world());
+
+  if (goal_text.empty()) {
+    if (request.world.goals.empty()) {
+      std::cerr << "error: --goal: world '" << request.world.name << "' has no goal; give --goal X,Y\n";
+      return kExitBadInput;
+    }
+    request.goal = request.world.goals.front().position;
+  } else {
+    const auto goal = parseGoal(goal_text);
+    if (!goal) {
+      std::cerr << "error: --goal: expected X,Y in metres, got '" << goal_text << "'\n";
+      return kExitBadInput;
+    }
+    if (!goal->allFinite()) {
+      std::cerr << "error: --goal: coordinates must be finite numbers, got '" << goal_text << "'\n";
+      return kExitBadInput;
+    }
+    request.goal = *goal;
+  }
+
+  std::cerr << "world '" << request.world.name << "' from " << request.world.source << ", goal ("
+            << request.goal.x() << ", " << request.goal.y() << "), "
+            << (request.planner.interaction_enabled ? "interaction on" : "FAR mode (no interaction)") << "\n";
+  const ifar::runner::RunSummary summary =
+      ifar::runner::runScenario(request, [](const std::string& line) { std::cerr << line << "\n"; });
+  if (summary.reason.rfind("bad request: ", 0) == 0) {
+    std::cerr << "error: " << summary.reason << "\n";
+    return kExitBadInput;
+  }
+
+  if (!png_path.empty()) {
+    const std::string error =
+        ifar::runner::writeRunPicture(request.world, request.vehicle, request.goal, summary, png_path);
+    if (!error.empty()) {
+      std::cerr << "error: --png: " << error << "\n";
+    } else {
+      std::cerr << "picture written to " << png_path << "\n";
+    }
+  }
+  if (json) {
+    std::cout << ifar::runner::summaryJson(summary) << std::endl;
+  } else {
+    const std::string outcome = summary.arrived ? "arrived" : "not arrived: " + summary.reason;
+    std::printf(
+        "%s\ndistance %.2f m, simulated time %.1f s (wall %.1f s), pushes %d, replans %d, "
+        "affordance updates %d, %.2f m from the goal\n",
+        outcome.c_str(), summary.distance_m, summary.sim_time_s, summary.wall_time_s, summary.pushes,
+        summary.replans, summary.affordance_updates, summary.goal_distance_m);
+  }
+  return summary.arrived ? kExitArrived : kExitNotArrived;
+}

@@ -1,0 +1,63 @@
+#pragma once
+// The headless runner: simulator, planner and executive stepped in lock-step in one process, on
+// simulated time only (no clocks, no threads, no LCM), so a run is deterministic and as fast as the
+// machine allows. Benchmarks and system tests use it; the multi-process demo wires the same libraries
+// over LCM.
+//
+// Per physics step the simulator's packets and pose estimate go to the planner's FrameAssembler and the
+// executive's LocalObstacles; at planner_rate_hz the latest completed revolution is one planner frame
+// (as the planner daemon does); at control_rate_hz the executive steps on the latest values, its
+// command drives the simulated vehicle and an affordance finding goes to the planner at once.
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "common/geometry/point.hpp"
+#include "common/geometry/pose2.hpp"
+#include "common/vehicle.hpp"
+#include "executive/modes/executive_settings.hpp"
+#include "executive/obstacles/local_obstacles.hpp"
+#include "planner/core/planner.hpp"
+#include "sim/simulator/simulator.hpp"
+#include "sim/world/world.hpp"
+
+namespace ifar::runner {
+
+struct RunRequest {
+  sim::World world;  // goal comes separately
+  geometry::Point goal = geometry::Point::Zero();
+  common::VehicleSettings vehicle;
+  sim::SimulatorSettings simulator;
+  planner::PlannerSettings planner;  // planner.interaction_enabled = false gives FAR mode
+  executive::ExecutiveSettings executive;
+  executive::ObstacleSettings obstacles;
+  double planner_rate_hz = 2.5;  // graph updates per simulated second
+  double path_resend_hz = 10.0;  // the last path reaches the executive again this often (as GLOBAL_PATH does)
+  double control_rate_hz = 50.0;
+  double max_sim_time_s = 300.0;
+};
+
+struct RunSummary {
+  bool arrived = false;
+  std::string reason;       // why it ended: "arrived", "timeout", "stopped: <executive reason>", ...
+  double distance_m = 0.0;  // travelled by the vehicle (ground truth)
+  double sim_time_s = 0.0;
+  double wall_time_s = 0.0;
+  int pushes = 0;
+  int replans = 0;
+  int affordance_updates = 0;
+  double goal_distance_m = 0.0;                // final ground-truth distance to the goal
+  std::vector<geometry::Pose2> trajectory;     // ground truth, one per control cycle
+  std::vector<geometry::Pose2> final_objects;  // ground truth object poses at the end, world-file order
+};
+
+/// Deterministic: the same request gives the same summary (except wall_time_s). `progress` (may be empty)
+/// is called about once per simulated second with a one-line status. A request that cannot run (goal or
+/// rates not finite and positive, a world the simulator refuses) ends at once with arrived false and the
+/// reason "bad request: ...". The planner's wall-clock budgets (push search time_budget_s, interaction
+/// frame_budget_ms) are lifted for the run (the expansion limit still holds), since a budget in wall time
+/// would make the outcome depend on the machine's load.
+RunSummary runScenario(const RunRequest& request, const std::function<void(const std::string&)>& progress);
+
+}  // namespace ifar::runner

@@ -1,0 +1,18 @@
+#pragma once
+// A run summary as one line of JSON, the last line `ifar run --json` prints:
+// {"arrived":true,"reason":"arrived","distance_m":23.41,"time_s":41.2,"pushes":1,"replans":0,
+//  "affordance_updates":0,"goal_distance_m":0.42,"wall_time_s":12.3}
+
+#include <string>
+
+#include "sim/runner/scenario_runner.hpp"
+
+namespace ifar::runner {
+
+/// One JSON object on one line (no trailing newline); the trajectory is left out.
+std::string summaryJson(const RunSummary& summary);
+
+/// `text` as a JSON string literal, quotes included (control characters escaped).
+std::string jsonString(const std::string& text);
+
+}  // namespace ifar::runner

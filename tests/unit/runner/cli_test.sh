@@ -1,0 +1,60 @@
+#!/bin/sh
+# ifar-run's exit codes: 2 and one error line naming the input and the problem on bad input; 0 with the
+# JSON summary as the last line when the vehicle arrives (a small builtin room), 1 when it does not.
+set -u
+config="$IFAR_SOURCE_DIR/config"
+room="$IFAR_SOURCE_DIR/config/worlds/room.yaml"
+failures=0
+
+expect_bad_input() {
+  description="$1"; needle="$2"; shift 2
+  output=$("$@" 2>&1 >/dev/null)
+  code=$?
+  if [ "$code" -ne 2 ]; then
+    echo "FAIL $description: exit code $code, expected 2 ($output)"; failures=$((failures + 1)); return
+  fi
+  case "$output" in
+    *"$needle"*) echo "ok   $description: $output" ;;
+    *) echo "FAIL $description: message lacks '$needle': $output"; failures=$((failures + 1)) ;;
+  esac
+}
+
+expect_bad_input "missing world file" "/nonexistent/world.yaml" \
+  ifar-run /nonexistent/world.yaml --config-dir "$config"
+expect_bad_input "NaN goal" "--goal: coordinates must be finite" \
+  ifar-run "$room" --goal nan,5 --config-dir "$config"
+expect_bad_input "malformed goal" "--goal: expected X,Y" \
+  ifar-run "$room" --goal 3 --config-dir "$config"
+expect_bad_input "missing config directory" "/nonexistent/config/vehicle.yaml" \
+  ifar-run "$room" --config-dir /nonexistent/config
+expect_bad_input "non-positive max time" "--max-time" \
+  ifar-run "$room" --max-time 0 --config-dir "$config"
+
+# --help works and names the command's options.
+if ! ifar-run --help | grep -q -- "--no-interaction"; then
+  echo "FAIL --help does not list --no-interaction"; failures=$((failures + 1))
+fi
+# A short run that arrives: exit 0, the last stdout line is the JSON summary, the picture is written.
+picture="${IFAR_BINARY_DIR:-/tmp}/runner_cli_test.png"
+rm -f "$picture"
+output=$(ifar-run push_light --goal 8,6 --json --png "$picture" --config-dir "$config" 2>/dev/null)
+code=$?
+last=$(printf '%s\n' "$output" | tail -n 1)
+case "$code:$last" in
+  '0:{"arrived":true,"reason":"arrived",'*) echo "ok   arrives: $last" ;;
+  *) echo "FAIL arrives: exit code $code, last line: $last"; failures=$((failures + 1)) ;;
+esac
+if [ ! -s "$picture" ]; then
+  echo "FAIL --png wrote no picture at $picture"; failures=$((failures + 1))
+fi
+rm -f "$picture"
+
+# The same goal with one simulated second: not arrived, exit 1.
+output=$(ifar-run push_light --goal 8,6 --json --max-time 1 --config-dir "$config" 2>/dev/null)
+code=$?
+last=$(printf '%s\n' "$output" | tail -n 1)
+case "$code:$last" in
+  '1:{"arrived":false,"reason":"timeout after 1 s'*) echo "ok   times out: $last" ;;
+  *) echo "FAIL times out: exit code $code, last line: $last"; failures=$((failures + 1)) ;;
+esac
+exit "$failures"

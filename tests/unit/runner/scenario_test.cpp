@@ -1,0 +1,197 @@
+// Whole runs of the headless runner on the shipped config: arrival on a free path, determinism, pushing
+// the light box of the demo room, adapting to a box too heavy to push, and FAR mode going round.
+// Each run takes tens of simulated seconds (label "system").
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "sim/runner/run_config.hpp"
+#include "sim/runner/scenario_runner.hpp"
+#include "sim/runner/summary_json.hpp"
+#include "sim/simulator/builtin_worlds.hpp"
+#include "sim/world/world_file.hpp"
+
+namespace ifar::runner {
+namespace {
+
+const std::string kSourceDir = IFAR_SOURCE_DIR;
+// The demo room's goal is behind the light box in the west doorway (x 7.3..8.7 at y = 16): about 22 m
+// straight through it; the east opening (x 24..28) makes any path round it longer than 40 m.
+const geometry::Point kDemoGoal(8.0, 26.0);
+constexpr double kThroughDoorwayLimitM = 30.0;
+
+RunRequest requestFor(const sim::World& world, const geometry::Point& goal, double max_time_s)
+{
+  RunRequest request = loadRunSettings(kSourceDir + "/config");
+  request.world = world;
+  request.goal = goal;
+  request.max_sim_time_s = max_time_s;
+  return request;
+}
+
+sim::World worldFile(const std::string& path)
+{
+  const sim::WorldResult loaded = sim::loadWorldFile(path);
+  if (!loaded.ok()) {
+    ADD_FAILURE() << loaded.error();
+    return {};
+  }
+  return loaded.world();
+}
+
+RunSummary runAndLog(const RunRequest& request)
+{
+  RunSummary summary =
+      runScenario(request, [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); });
+  std::printf("%s\n", summaryJson(summary).c_str());
+  return summary;
+}
+
+bool passesEastOpening(const RunSummary& summary)
+{
+  return std::any_of(summary.trajectory.begin(), summary.trajectory.end(), [](const geometry::Pose2& pose) {
+    return pose.x > 23.0 && pose.y > 15.0 && pose.y < 17.0;
+  });
+}
+
+TEST(RunnerScenario, RoomArrivesAlongNearlyStraightPath)
+{
+  const sim::World world = worldFile(kSourceDir + "/config/worlds/room.yaml");
+  ASSERT_FALSE(world.goals.empty());
+  const geometry::Point goal = world.goals.front().position;
+  const RunSummary summary = runAndLog(requestFor(world, goal, 120.0));
+  EXPECT_TRUE(summary.arrived) << summary.reason;
+  EXPECT_EQ(summary.reason, "arrived");
+  const double straight = (goal - world.start.position()).norm();
+  EXPECT_LE(summary.distance_m, 1.3 * straight);
+  EXPECT_LE(summary.goal_distance_m, 0.5);
+  EXPECT_EQ(summary.pushes, 0);
+  EXPECT_EQ(summary.affordance_updates, 0);
+  EXPECT_FALSE(summary.trajectory.empty());
+}
+
+TEST(RunnerScenario, SameRequestSameSummary)
+{
+  // The demo room's first 32 s: following, interaction planning, approach and the push of the light box
+  // (the push is over at about 30 s), so the planner's lifted wall-clock budgets are exercised too.
+  const RunRequest request =
+      requestFor(worldFile(kSourceDir + "/config/worlds/demo_room.yaml"), kDemoGoal, 32.0);
+  const RunSummary first = runScenario(request, {});
+  const RunSummary second = runScenario(request, {});
+  EXPECT_EQ(first.arrived, second.arrived);
+  EXPECT_EQ(first.reason, second.reason);
+  EXPECT_EQ(first.distance_m, second.distance_m);
+  EXPECT_EQ(first.sim_time_s, second.sim_time_s);
+  EXPECT_EQ(first.pushes, second.pushes);
+  EXPECT_EQ(first.replans, second.replans);
+  EXPECT_EQ(first.affordance_updates, second.affordance_updates);
+  EXPECT_EQ(first.goal_distance_m, second.goal_distance_m);
+  ASSERT_EQ(first.trajectory.size(), second.trajectory.size());
+  for (std::size_t index = 0; index < first.trajectory.size(); ++index) {
+    ASSERT_EQ(first.trajectory[index].x, second.trajectory[index].x) << index;
+    ASSERT_EQ(first.trajectory[index].y, second.trajectory[index].y) << index;
+    ASSERT_EQ(first.trajectory[index].heading, second.trajectory[index].heading) << index;
+  }
+  EXPECT_EQ(first.pushes, 1);  // it did push
+  ASSERT_EQ(first.final_objects.size(), second.final_objects.size());
+  for (std::size_t index = 0; index < first.final_objects.size(); ++index) {
+    EXPECT_EQ(first.final_objects[index].x, second.final_objects[index].x) << index;
+    EXPECT_EQ(first.final_objects[index].y, second.final_objects[index].y) << index;
+  }
+}
+
+TEST(RunnerScenario, DemoRoomPushesTheLightBoxAndArrives)
+{
+  const RunSummary summary =
+      runAndLog(requestFor(worldFile(kSourceDir + "/config/worlds/demo_room.yaml"), kDemoGoal, 150.0));
+  EXPECT_TRUE(summary.arrived) << summary.reason;
+  EXPECT_GE(summary.pushes, 1);
+  EXPECT_LT(summary.distance_m, kThroughDoorwayLimitM);
+  EXPECT_FALSE(passesEastOpening(summary));
+}
+
+TEST(RunnerScenario, HeavyBoxIsFoundUnpushableAndAvoided)
+{
+  // The demo room with the doorway box at 2000 kg: it looks the same to the planner, so it is planned
+  // as pushable; the push stalls, the executive reports it unpushable and the vehicle goes east.
+  const RunSummary summary = runAndLog(requestFor(
+      worldFile(kSourceDir + "/tests/unit/runner/worlds/demo_room_heavy_box.yaml"), kDemoGoal, 240.0));
+  EXPECT_TRUE(summary.arrived) << summary.reason;
+  EXPECT_GE(summary.affordance_updates, 1);
+  EXPECT_GE(summary.replans, 1);
+  EXPECT_EQ(summary.pushes, 0);
+  EXPECT_TRUE(passesEastOpening(summary));
+}
+
+TEST(RunnerScenario, FarModeGoesRoundWithoutPushing)
+{
+  RunRequest request = requestFor(worldFile(kSourceDir + "/config/worlds/demo_room.yaml"), kDemoGoal, 240.0);
+  request.planner.interaction_enabled = false;
+  const RunSummary summary = runAndLog(request);
+  EXPECT_TRUE(summary.arrived) << summary.reason;
+  EXPECT_EQ(summary.pushes, 0);
+  EXPECT_EQ(summary.affordance_updates, 0);
+  EXPECT_GT(summary.distance_m, kThroughDoorwayLimitM);  // longer than through the pushed doorway
+  EXPECT_TRUE(passesEastOpening(summary));
+}
+
+TEST(RunnerScenario, BadRequestsEndAtOnce)
+{
+  RunRequest request = requestFor(sim::builtinRoom(), geometry::Point(std::nan(""), 1.0), 10.0);
+  RunSummary summary = runScenario(request, {});
+  EXPECT_FALSE(summary.arrived);
+  EXPECT_EQ(summary.reason, "bad request: goal is not finite");
+  EXPECT_EQ(summary.sim_time_s, 0.0);
+
+  request.goal = geometry::Point(5.0, 5.0);
+  request.control_rate_hz = 0.0;
+  summary = runScenario(request, {});
+  EXPECT_EQ(summary.reason, "bad request: control_rate_hz must be a positive number");
+
+  // A world the simulator refuses: an object whose outline is a line.
+  request = requestFor(sim::builtinPushRoom(15.0), geometry::Point(8.0, 6.0), 10.0);
+  request.world.objects.front().outline = {geometry::Point(0.0, 0.0), geometry::Point(0.5, 0.0)};
+  summary = runScenario(request, {});
+  EXPECT_FALSE(summary.arrived);
+  EXPECT_EQ(summary.reason.rfind("bad request: ", 0), 0U) << summary.reason;
+}
+
+TEST(RunnerScenario, GoalOutsideTheWorldEndsWithTheExecutivesStop)
+{
+  // The planner finds no path to a goal far outside the closed room; the executive halts and says why.
+  const RunSummary summary =
+      runScenario(requestFor(sim::builtinRoom(), geometry::Point(50.0, 50.0), 60.0), {});
+  EXPECT_FALSE(summary.arrived);
+  EXPECT_EQ(summary.reason.rfind("stopped: ", 0), 0U) << summary.reason;
+  EXPECT_NE(summary.reason.find("no path"), std::string::npos) << summary.reason;
+  EXPECT_LT(summary.sim_time_s, 10.0);  // three seconds after the stop, not the time limit
+  EXPECT_LT(summary.distance_m, 0.1);
+}
+
+TEST(RunnerScenario, ProgressOncePerSimulatedSecondAndTimeout)
+{
+  const sim::World world = sim::builtinRoom();
+  std::vector<std::string> lines;
+  const RunSummary summary = runScenario(requestFor(world, geometry::Point(10.0, 6.0), 3.0),
+                                         [&lines](const std::string& line) { lines.push_back(line); });
+  EXPECT_FALSE(summary.arrived);
+  EXPECT_EQ(summary.reason.rfind("timeout after 3 s of simulated time", 0), 0U) << summary.reason;
+  EXPECT_DOUBLE_EQ(summary.sim_time_s, 3.0);
+  ASSERT_EQ(lines.size(), 3U);
+  EXPECT_EQ(lines[0].rfind("t=1.0s pos=(", 0), 0U) << lines[0];
+  EXPECT_EQ(lines[2].rfind("t=3.0s pos=(", 0), 0U) << lines[2];
+  EXPECT_NE(lines[2].find("mode=follow"), std::string::npos) << lines[2];
+  // One pose per control cycle (50 Hz): at 0.02 s, 0.04 s, ... 3.0 s.
+  EXPECT_EQ(summary.trajectory.size(), 150U);
+  EXPECT_GT(summary.distance_m, 0.5);
+  EXPECT_NEAR(summary.goal_distance_m,
+              (geometry::Point(10.0, 6.0) - summary.trajectory.back().position()).norm(), 0.05);
+}
+
+}  // namespace
+}  // namespace ifar::runner

@@ -1,0 +1,44 @@
+// The --json summary line: exact text for a known summary, escaping, and no NaN in JSON.
+
+#include "sim/runner/summary_json.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include <gtest/gtest.h>
+
+namespace ifar::runner {
+namespace {
+
+TEST(RunnerSummaryJson, ExactLine)
+{
+  RunSummary summary;
+  summary.arrived = true;
+  summary.reason = "arrived";
+  summary.distance_m = 23.4567;
+  summary.sim_time_s = 41.2;
+  summary.wall_time_s = 12.5;
+  summary.pushes = 1;
+  summary.replans = 2;
+  summary.affordance_updates = 3;
+  summary.goal_distance_m = 0.42;
+  summary.trajectory = {geometry::Pose2{1.0, 2.0, 0.0}};
+  EXPECT_EQ(summaryJson(summary),
+            "{\"arrived\":true,\"reason\":\"arrived\",\"distance_m\":23.457,\"time_s\":41.200,\"pushes\":1,"
+            "\"replans\":2,\"affordance_updates\":3,\"goal_distance_m\":0.420,\"wall_time_s\":12.500}");
+}
+
+TEST(RunnerSummaryJson, ReasonIsEscapedAndNonFiniteIsNull)
+{
+  RunSummary summary;
+  summary.reason = "stopped: \"path\"\\\n\x01";
+  summary.distance_m = std::numeric_limits<double>::quiet_NaN();
+  const std::string line = summaryJson(summary);
+  EXPECT_NE(line.find("\"reason\":\"stopped: \\\"path\\\"\\\\\\n\\u0001\""), std::string::npos) << line;
+  EXPECT_NE(line.find("\"distance_m\":null"), std::string::npos) << line;
+  EXPECT_NE(line.find("\"arrived\":false"), std::string::npos) << line;
+  EXPECT_EQ(line.find('\n'), std::string::npos);
+}
+
+}  // namespace
+}  // namespace ifar::runner
