@@ -6,6 +6,24 @@
 #include "common/geometry/polygon.hpp"
 
 namespace ifar::bench {
+namespace {
+
+/// True when the polygon is an axis-aligned rectangle (4 vertices, every edge parallel to an axis).
+bool isAxisAlignedRectangle(const geometry::Polygon& polygon)
+{
+  if (polygon.size() != 4) {
+    return false;
+  }
+  for (std::size_t index = 0; index < 4; ++index) {
+    const geometry::Point edge = polygon[(index + 1) % 4] - polygon[index];
+    if (edge.x() != 0.0 && edge.y() != 0.0) {
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
 
 grid_map::GridMap rasterizeStaticObstacles(const sim::World& world, double resolution)
 {
@@ -31,6 +49,20 @@ grid_map::GridMap rasterizeStaticObstacles(const sim::World& world, double resol
     const int y_begin = std::max(0, static_cast<int>(std::floor(grid_low.y())));
     const int x_end = std::min(width - 1, static_cast<int>(std::floor(grid_high.x())));
     const int y_end = std::min(height - 1, static_cast<int>(std::floor(grid_high.y())));
+    if (isAxisAlignedRectangle(obstacle.outline)) {
+      // Rectangles (walls, rock): a cell is blocked when its square, shrunk as below, overlaps the
+      // rectangle, which is an interval test per axis; the same answer as the general test, far faster.
+      const double tolerance = 1e-6;  // the shrink, in cell units
+      for (int y = y_begin; y <= y_end; ++y) {
+        for (int x = x_begin; x <= x_end; ++x) {
+          if (x + 1 - tolerance > grid_low.x() && x + tolerance < grid_high.x() &&
+              y + 1 - tolerance > grid_low.y() && y + tolerance < grid_high.y()) {
+            map.set(x, y, grid_map::Cell::Blocked);
+          }
+        }
+      }
+      continue;
+    }
     for (int y = y_begin; y <= y_end; ++y) {
       for (int x = x_begin; x <= x_end; ++x) {
         if (map.at(x, y) == grid_map::Cell::Blocked) {

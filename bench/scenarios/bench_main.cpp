@@ -1,0 +1,467 @@
+// ifar bench: the scenario suite of issue 8. Per kind (room, room_objects, office, willow, tunnel) it builds
+// the worlds, selects the tasks, runs every planner on them (Tables I and II, planned paths) and, through the
+// headless runner, FAR mode and ours in closed loop (Tables II and III, driven). Writes every row as a JSON
+// line, the tables as Markdown and the PNG plots. Exit status: 0 all rows present and no planner error; 2 a
+// planner errored; 3 rows are missing (a kind gave fewer tasks than asked).
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <ctime>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "bench/baselines/sampling_planners.hpp"
+#include "bench/scenarios/plots.hpp"
+#include "bench/scenarios/result_row.hpp"
+#include "bench/scenarios/scenario_kind.hpp"
+#include "bench/scenarios/scenario_maps.hpp"
+#include "bench/scenarios/scenario_worlds.hpp"
+#include "bench/scenarios/search_suite.hpp"
+#include "bench/scenarios/system_runs.hpp"
+#include "bench/scenarios/tables.hpp"
+#include "bench/scenarios/task_selection.hpp"
+#include "common/config.hpp"
+#include "common/vehicle.hpp"
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+namespace scenarios = ifar::scenarios;
+
+std::vector<std::string> splitList(const std::string& text)
+{
+  std::vector<std::string> items;
+  std::stringstream stream(text);
+  std::string item;
+  while (std::getline(stream, item, ',')) {
+    if (!item.empty()) {
+      items.push_back(item);
+    }
+  }
+  return items;
+}
+
+std::string firstLineStartingWith(const std::string& path, const std::string& prefix)
+{
+  std::ifstream file(path);
+  std::string line;
+  while (std::getline(file, line)) {
+    if (line.rfind(prefix, 0) == 0) {
+      return line;
+    }
+  }
+  return "";
+}
+
+std::string machineDescription()
+{
+  std::string model = firstLineStartingWith("/proc/cpuinfo", "model name");
+  const auto colon = model.find(':');
+  model = colon == std::string::npos ? "unknown CPU" : model.substr(colon + 2);
+  int processors = 0;
+  std::ifstream cpuinfo("/proc/cpuinfo");
+  std::string line;
+  while (std::getline(cpuinfo, line)) {
+    processors += line.rfind("processor", 0) == 0 ? 1 : 0;
+  }
+  std::ifstream loadavg("/proc/loadavg");
+  double load = NAN;
+  loadavg >> load;
+  std::ostringstream text;
+  text << model << ", " << processors << " cores, load average " << load << " at the start";
+  return text.str();
+}
+
+std::string utcNow()
+{
+  const std::time_t now = std::time(nullptr);
+  std::tm parts{};
+  gmtime_r(&now, &parts);
+  char text[32];
+  std::strftime(text, sizeof(text), "%Y-%m-%d %H:%M UTC", &parts);
+  return text;
+}
+
+scenarios::ResultRow systemRow(scenarios::ScenarioKind kind, const std::string& world,
+                               const scenarios::Task& task, const std::string& planner,
+                               const scenarios::SystemRun& run)
+{
+  scenarios::ResultRow row;
+  row.table = "system";
+  row.planner = planner;
+  row.kind = scenarios::kindName(kind);
+  row.world = world;
+  row.task = task.id;
+  row.optimal = task.optimal;
+  row.success = run.ran && run.arrived && task.reachable_with_pushing;
+  row.length = run.ran ? run.distance_m : NAN;
+  row.ms = run.ran ? 1000.0 * run.wall_time_s : NAN;
+  row.sim_time_s = run.sim_time_s;
+  row.pushes = run.pushes;
+  if (!run.ran) {
+    row.status = "runner_unavailable";
+    row.reason = run.reason;
+  } else if (run.reason.rfind("runner threw", 0) == 0) {
+    row.status = "error";
+    row.reason = run.reason;
+  } else if (!task.reachable_with_pushing) {
+    row.status = "unreachable";
+    row.reason = "unreachable even with pushing (runner: " + run.reason + ")";
+  } else {
+    row.status = run.arrived ? "arrived" : "failed";
+    row.reason = run.arrived ? "" : run.reason;
+  }
+  return row;
+}
+
+scenarios::ResultRow skippedRow(scenarios::ScenarioKind kind, const std::string& world,
+                                const scenarios::Task& task, const std::string& planner)
+{
+  scenarios::ResultRow row;
+  row.table = "system";
+  row.planner = planner;
+  row.kind = scenarios::kindName(kind);
+  row.world = world;
+  row.task = task.id;
+  row.optimal = task.optimal;
+  row.length = NAN;
+  row.ms = NAN;
+  row.status = "skipped";
+  row.reason = "not run: the suite's --system-budget was spent";
+  return row;
+}
+
+/// One closed-loop run to do after the search part: a task of a world, with FAR mode and ours.
+struct SystemJob {
+  scenarios::ScenarioKind kind;
+  std::size_t world;  // index into the kept worlds
+  scenarios::Task task;
+};
+
+struct KeptWorld {
+  std::string name;
+  ifar::sim::World world;
+};
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+  CLI::App app{
+      "The issue 8 scenario suite: worlds and tasks per kind, Table I (search time: grid A*, RRT*,\n"
+      "BIT*, FAR mode, ours), Table II (SPL) and Table III (system level, headless runner)."};
+  std::string kind_list = "room,room_objects,office,willow,tunnel";
+  int tasks = 10;
+  std::uint64_t seed = 1;
+  std::string planner_list = "grid_astar,rrt_star,bit_star,far,ours";
+  ifar::baselines::SamplingSettings sampling;
+  const char* shared = std::getenv("IFAR_SHARED_DATA");
+  std::string willow = std::string(shared != nullptr ? shared : "../shared/data") + "/maps/willow-full.yaml";
+  std::string config_dir = "config";
+  std::string jsonl_path = "bench/results/latest.jsonl";
+  std::string tables_path = "bench/results/tables.md";
+  std::string plot_dir = "bench/results";
+  bool no_plots = false;
+  bool no_system = false;
+  bool smoke = false;
+  std::string system_kind_list = "office,tunnel,room_objects,willow,room";
+  int system_tasks = 3;
+  double sim_base_s = 60.0;
+  double sim_per_metre_s = 2.0;
+  double max_sim_time = 900.0;
+  double system_budget_minutes = 0.0;
+  std::string commit = "unknown";
+  app.add_option("--kinds", kind_list, "comma-separated: room,room_objects,office,willow,tunnel")
+      ->capture_default_str();
+  app.add_option("--tasks", tasks, "tasks per kind")->check(CLI::PositiveNumber)->capture_default_str();
+  app.add_option("--seed", seed, "seed of worlds, tasks and OMPL")->capture_default_str();
+  app.add_option("--planners", planner_list, "comma-separated: grid_astar,rrt_star,bit_star,far,ours")
+      ->capture_default_str();
+  app.add_option("--time-cap", sampling.time_cap_s, "RRT*/BIT* CPU cap per query (s)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app.add_option("--factor", sampling.optimum_factor, "RRT*/BIT* stop within this factor of the optimum")
+      ->check(CLI::Range(1.0, 100.0))
+      ->capture_default_str();
+  app.add_option("--willow", willow, "Willow Garage map_server .yaml (absent: the willow kind is skipped)")
+      ->capture_default_str();
+  app.add_option("--config", config_dir, "folder with vehicle.yaml and the runner's configs")
+      ->capture_default_str();
+  app.add_option("--out", jsonl_path, "JSON lines, one per row")->capture_default_str();
+  app.add_option("--tables", tables_path, "Markdown tables")->capture_default_str();
+  app.add_option("--plots", plot_dir, "folder for the PNG plots")->capture_default_str();
+  app.add_flag("--no-plots", no_plots, "write no PNGs");
+  app.add_flag("--no-system", no_system, "skip the headless-runner runs (Table II driven, Table III)");
+  app.add_option("--system-kinds", system_kind_list, "kinds driven in the runner, in this order")
+      ->capture_default_str();
+  app.add_option("--system-tasks", system_tasks, "the first N tasks of each kind are driven")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  app.add_option("--sim-base", sim_base_s, "simulated seconds per run: base ...")->capture_default_str();
+  app.add_option("--sim-per-metre", sim_per_metre_s, "... plus this per metre of the optimum")
+      ->capture_default_str();
+  app.add_option("--max-sim-time", max_sim_time, "... at most this (s)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app.add_option(
+         "--system-budget", system_budget_minutes,
+         "wall minutes for the whole suite; runner runs that would start later are recorded as skipped "
+         "(0: no limit)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  app.add_option("--commit", commit, "commit named in the tables' header")->capture_default_str();
+  app.add_flag("--smoke", smoke,
+               "CI subset: one task per kind, 0.3 s sampling cap; the runner drives the room task only, 60 s "
+               "simulated");
+  CLI11_PARSE(app, argc, argv);
+  if (smoke) {
+    tasks = 1;
+    sampling.time_cap_s = std::min(sampling.time_cap_s, 0.3);
+    system_kind_list = "room";
+    system_tasks = 1;
+    max_sim_time = std::min(max_sim_time, 60.0);
+  }
+
+  std::vector<scenarios::ScenarioKind> kinds;
+  std::vector<scenarios::ScenarioKind> system_kinds;
+  for (auto [list, target] : {std::pair{&kind_list, &kinds}, std::pair{&system_kind_list, &system_kinds}}) {
+    for (const std::string& name : splitList(*list)) {
+      const auto kind = scenarios::parseKind(name);
+      if (!kind) {
+        std::cerr << "ifar bench: unknown kind '" << name
+                  << "' (known: room, room_objects, office, willow, tunnel)\n";
+        return 1;
+      }
+      target->push_back(*kind);
+    }
+  }
+  scenarios::SearchSuiteSettings search_settings;
+  search_settings.planners = splitList(planner_list);
+  search_settings.sampling = sampling;
+  for (const std::string& planner : search_settings.planners) {
+    if (std::find(scenarios::searchPlanners().begin(), scenarios::searchPlanners().end(), planner) ==
+        scenarios::searchPlanners().end()) {
+      std::cerr << "ifar bench: --planners: unknown planner '" << planner << "'\n";
+      return 1;
+    }
+  }
+
+  ifar::common::VehicleSettings vehicle;
+  const std::string vehicle_path = config_dir + "/vehicle.yaml";
+  if (std::ifstream(vehicle_path).good()) {
+    try {
+      vehicle = ifar::common::loadVehicleSettings(ifar::common::ConfigNode::loadFile(vehicle_path));
+    } catch (const std::exception& error) {
+      std::cerr << "ifar bench: " << error.what() << "\n";
+      return 1;
+    }
+  } else {
+    std::cerr << "ifar bench: " << vehicle_path << " not found, using the default vehicle\n";
+  }
+  scenarios::MapSettings map_settings;
+  map_settings.vehicle = vehicle;
+  map_settings.inflation_m = 0.5 * vehicle.width_m;
+  map_settings.interaction.pusher = ifar::interaction::PusherSettings::fromVehicle(vehicle);
+
+  ifar::baselines::seedSamplingPlanners(seed);
+  const std::string machine = machineDescription();
+  const Clock::time_point began = Clock::now();
+  std::vector<scenarios::ResultRow> rows;
+  std::vector<std::string> notes;
+  bool missing = false;
+  std::vector<KeptWorld> kept;  // worlds the runner drives in
+  std::vector<SystemJob> jobs;
+  std::map<scenarios::ScenarioKind, std::size_t> plotted_world;  // kind -> kept world of its path plot
+  std::map<std::size_t, std::vector<scenarios::PathPair>> planned_pairs;  // kept world -> planned paths
+
+  // Part 1: Tables I and II (planned), every kind and planner.
+  for (const scenarios::ScenarioKind kind : kinds) {
+    const std::string kind_name = scenarios::kindName(kind);
+    const scenarios::WorldSetResult worlds = scenarios::scenarioWorlds(kind, {seed, tasks, willow});
+    if (!worlds.ok()) {
+      std::cerr << "ifar bench: " << kind_name << ": " << worlds.error << "\n";
+      notes.push_back(kind_name + ": no worlds: " + worlds.error);
+      missing = true;
+      continue;
+    }
+    for (const std::string& note : worlds.notes) {
+      notes.push_back(kind_name + ": " + note);
+    }
+    int carry = 0;
+    int driven = 0;
+    for (std::size_t index = 0; index < worlds.worlds.size(); ++index) {
+      const scenarios::ScenarioWorld& world = worlds.worlds[index];
+      const int quota = world.task_quota + carry;
+      const Clock::time_point world_began = Clock::now();
+      const scenarios::ScenarioMaps maps = scenarios::buildScenarioMaps(world.world, map_settings);
+      scenarios::TaskSelectionSettings selection;
+      selection.count = quota;
+      selection.seed = seed * 1000003ULL + index;
+      selection.min_optimal = scenarios::minimumOptimalLength(kind);
+      const std::vector<scenarios::Task> world_tasks = scenarios::selectTasks(world.world, maps, selection);
+      carry = quota - static_cast<int>(world_tasks.size());
+      if (carry > 0) {
+        notes.push_back(kind_name + ": " + world.name + " gave " + std::to_string(world_tasks.size()) +
+                        " of " + std::to_string(quota) + " tasks with optimum > " +
+                        std::to_string(static_cast<int>(selection.min_optimal)) + " m" +
+                        (index + 1 < worlds.worlds.size() ? "; the rest come from the next world" : ""));
+      }
+      std::cerr << kind_name << " " << world.name << ": " << maps.far.map.graph.vertexCount()
+                << " vertices (FAR), " << maps.ours.map.graph.interactionEdgeCount()
+                << " interaction edges from " << maps.interaction.splitting << "/" << maps.interaction.objects
+                << " objects (" << maps.interaction.milliseconds << " ms); maps in " << maps.build_seconds
+                << " s; " << world_tasks.size() << " tasks\n";
+      scenarios::PlannedPaths planned;
+      const std::vector<scenarios::ResultRow> search_rows =
+          scenarios::runSearchSuite(kind, world.name, maps, world_tasks, search_settings, &planned);
+      rows.insert(rows.end(), search_rows.begin(), search_rows.end());
+
+      const bool drive =
+          !no_system && std::find(system_kinds.begin(), system_kinds.end(), kind) != system_kinds.end();
+      const bool plot = !no_plots && plotted_world.count(kind) == 0 && !world_tasks.empty();
+      if ((drive && driven < system_tasks) || plot) {
+        kept.push_back({world.name, world.world});
+      }
+      if (plot) {
+        plotted_world[kind] = kept.size() - 1;
+        for (std::size_t task_index = 0; task_index < world_tasks.size(); ++task_index) {
+          planned_pairs[kept.size() - 1].push_back({planned.far[task_index], planned.ours[task_index],
+                                                    world_tasks[task_index].start,
+                                                    world_tasks[task_index].goal});
+        }
+      }
+      for (const scenarios::Task& task : world_tasks) {
+        if (drive && driven < system_tasks) {
+          jobs.push_back({kind, kept.size() - 1, task});
+          ++driven;
+        }
+      }
+      std::cerr << "  " << world.name << " done in "
+                << std::chrono::duration<double>(Clock::now() - world_began).count() << " s\n";
+    }
+    if (carry > 0) {
+      missing = true;
+      notes.push_back(kind_name + ": " + std::to_string(carry) + " of " + std::to_string(tasks) +
+                      " tasks missing: no more start/goal pairs with optimum > " +
+                      std::to_string(static_cast<int>(scenarios::minimumOptimalLength(kind))) + " m");
+    }
+  }
+  const double search_seconds = std::chrono::duration<double>(Clock::now() - began).count();
+
+  // Part 2: Tables II (driven) and III through the headless runner, kinds in --system-kinds order.
+  std::stable_sort(jobs.begin(), jobs.end(), [&system_kinds](const SystemJob& a, const SystemJob& b) {
+    return std::find(system_kinds.begin(), system_kinds.end(), a.kind) <
+           std::find(system_kinds.begin(), system_kinds.end(), b.kind);
+  });
+  std::map<std::size_t, std::vector<scenarios::PathPair>> driven_pairs;  // kept world -> trajectories
+  int skipped = 0;
+  for (const SystemJob& job : jobs) {
+    const KeptWorld& world = kept[job.world];
+    scenarios::PathPair pair{{}, {}, job.task.start, job.task.goal};
+    for (const std::string planner : {"far", "ours"}) {
+      const double used_minutes = std::chrono::duration<double>(Clock::now() - began).count() / 60.0;
+      if (system_budget_minutes > 0.0 && used_minutes > system_budget_minutes &&
+          scenarios::systemRunnerAvailable()) {
+        rows.push_back(skippedRow(job.kind, world.name, job.task, planner));
+        ++skipped;
+        continue;
+      }
+      scenarios::SystemRunSettings system_settings;
+      system_settings.config_dir = config_dir;
+      system_settings.max_sim_time_s =
+          std::min(max_sim_time, sim_base_s + sim_per_metre_s * job.task.optimal);
+      const scenarios::SystemRun run =
+          scenarios::runSystem(world.world, job.task, planner == std::string("ours"), system_settings);
+      rows.push_back(systemRow(job.kind, world.name, job.task, planner, run));
+      std::vector<ifar::geometry::Point>& line = planner == std::string("ours") ? pair.ours : pair.far;
+      for (const ifar::geometry::Pose2& pose : run.trajectory) {
+        line.push_back(pose.position());
+      }
+      std::cerr << scenarios::kindName(job.kind) << " " << world.name << " " << job.task.id << " " << planner
+                << ": " << rows.back().status << " " << rows.back().reason << " (" << run.distance_m << " m, "
+                << run.sim_time_s << " s simulated, " << run.wall_time_s << " s wall)\n";
+    }
+    if (!pair.far.empty() || !pair.ours.empty()) {
+      driven_pairs[job.world].push_back(pair);
+    }
+  }
+  if (skipped > 0) {
+    notes.push_back(std::to_string(skipped) + " runner runs skipped: --system-budget " +
+                    std::to_string(static_cast<int>(system_budget_minutes)) + " min spent");
+  }
+  const double wall_seconds = std::chrono::duration<double>(Clock::now() - began).count();
+
+  std::ofstream jsonl(jsonl_path);
+  if (!jsonl) {
+    std::cerr << "ifar bench: cannot write " << jsonl_path << "\n";
+    return 1;
+  }
+  bool planner_error = false;
+  for (const scenarios::ResultRow& row : rows) {
+    jsonl << scenarios::toJsonLine(row) << "\n";
+    planner_error = planner_error || row.status == "error";
+  }
+  std::ostringstream command;
+  for (int index = 0; index < argc; ++index) {
+    command << (index > 0 ? " " : "") << argv[index];
+  }
+  std::ostringstream tables_text;
+  tables_text << "Machine: " << machine << ". Commit: " << commit << ". Date: " << utcNow()
+              << ". Wall time: " << static_cast<int>(std::lround(wall_seconds)) << " s (search part "
+              << static_cast<int>(std::lround(search_seconds)) << " s).\n"
+              << "Command: `" << command.str() << "`\n\n"
+              << scenarios::tableOneSearchTime(rows) << "\n"
+              << scenarios::tableTwoSpl(rows) << "\n"
+              << scenarios::tableThreeSystem(rows) << "\n"
+              << "Targets (issue 8):\n\n"
+              << scenarios::targetCheck(rows);
+  if (!notes.empty()) {
+    tables_text << "\nNotes:\n\n";
+    for (const std::string& note : notes) {
+      tables_text << "- " << note << "\n";
+    }
+  }
+  std::ofstream tables_file(tables_path);
+  tables_file << tables_text.str();
+  std::cout << tables_text.str();
+  if (!no_plots) {
+    std::vector<std::string> errors;
+    errors.push_back(scenarios::writeTimeVsGraphSizePlot(rows, plot_dir + "/search_time_vs_graph_size.png"));
+    for (const auto& [kind, world_index] : plotted_world) {
+      const KeptWorld& world = kept[world_index];
+      const std::string kind_name = scenarios::kindName(kind);
+      errors.push_back(scenarios::writePathPlot(
+          world.world, planned_pairs[world_index],
+          kind_name + " (" + world.name + "): planned paths, FAR mode blue, ours green",
+          plot_dir + "/paths_" + kind_name + ".png"));
+    }
+    for (const auto& [world_index, pairs] : driven_pairs) {
+      const KeptWorld& world = kept[world_index];
+      errors.push_back(scenarios::writePathPlot(
+          world.world, pairs,
+          world.name + ": driven trajectories (headless runner), FAR mode blue, ours green",
+          plot_dir + "/trajectories_" + world.name + ".png"));
+    }
+    for (const std::string& error : errors) {
+      if (!error.empty()) {
+        std::cerr << "ifar bench: " << error << "\n";
+      }
+    }
+  }
+  if (planner_error) {
+    std::cerr << "ifar bench: a planner reported an error (status \"error\" in " << jsonl_path << ")\n";
+    return 2;
+  }
+  if (missing) {
+    std::cerr << "ifar bench: rows are missing (see the notes)\n";
+    return 3;
+  }
+  return 0;
+}

@@ -1,0 +1,34 @@
+#pragma once
+// One row of the evaluation: a planner on one task, as the JSON line written to
+// bench/results/latest.jsonl, and SPL (Anderson et al. 2018).
+
+#include <string>
+
+namespace ifar::scenarios {
+
+struct ResultRow {
+  std::string table;    // "search" (Tables I and II, planned paths) or "system" (Tables II and III, runner)
+  std::string planner;  // grid_astar, rrt_star, bit_star, far, ours
+  std::string kind;     // room, room_objects, office, tunnel
+  std::string world;    // e.g. "tunnel-1"
+  std::string task;     // e.g. "t3"
+  bool success = false;
+  double length = 0.0;          // planned path (search) or travelled distance (system), metres; NaN when none
+  double optimal = 0.0;         // ground truth, metres
+  double ms = 0.0;              // search: planner-thread CPU ms; system: wall ms of the run; NaN when not run
+  std::string status;           // solved, no_path, timeout, error, unreachable, runner_unavailable, ...
+  std::string reason;           // why it failed; empty on success
+  double graph_vertices = 0.0;  // size of the map the planner searched (DV-graph vertices; grid: cells)
+  double sim_time_s = 0.0;      // system rows: simulated time to the end of the run
+  int pushes = 0;               // system rows: pushes executed
+};
+
+/// Success weighted by path length for one episode: success x optimal / max(length, optimal); 0 for a
+/// failure, an unknown length or a non-positive optimum.
+double successWeightedByPathLength(bool success, double optimal, double length);
+
+/// The row as one JSON object on one line (no trailing newline). Keys in a fixed order; non-finite
+/// numbers are written as null; strings escaped per RFC 8259.
+std::string toJsonLine(const ResultRow& row);
+
+}  // namespace ifar::scenarios

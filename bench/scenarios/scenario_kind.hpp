@@ -1,0 +1,23 @@
+#pragma once
+// The paper's four kinds of scenario (Tables I-III) and what each demands of its tasks, plus the Willow
+// Garage office plan as a kind of its own: at 58 m x 47 m it has no start/goal pair whose optimum
+// exceeds the office threshold of 80 m (the longest found is about 72 m), so it runs with 40 m.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace ifar::scenarios {
+
+enum class ScenarioKind { Room, RoomObjects, Office, Willow, Tunnel };
+
+/// "room", "room_objects", "office", "willow", "tunnel".
+std::string kindName(ScenarioKind kind);
+std::optional<ScenarioKind> parseKind(const std::string& text);
+const std::vector<ScenarioKind>& allKinds();
+
+/// A task's optimal length must exceed this (paper: 15 m in the 32 m room, 80 m in the large places;
+/// 40 m in the Willow plan, see above).
+double minimumOptimalLength(ScenarioKind kind);
+
+}  // namespace ifar::scenarios

@@ -1,0 +1,160 @@
+#include "bench/scenarios/search_suite.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <exception>
+
+#include "bench/baselines/cpu_clock.hpp"
+#include "bench/baselines/grid_astar.hpp"
+
+namespace ifar::scenarios {
+namespace {
+
+constexpr auto kBlocked = grid_map::UnknownPolicy::AsBlocked;
+
+std::string statusName(baselines::BaselineStatus status)
+{
+  switch (status) {
+    case baselines::BaselineStatus::Solved:
+      return "solved";
+    case baselines::BaselineStatus::NoPath:
+      return "no_path";
+    case baselines::BaselineStatus::Timeout:
+      return "timeout";
+    case baselines::BaselineStatus::InvalidStart:
+      return "invalid_start";
+    case baselines::BaselineStatus::InvalidGoal:
+      return "invalid_goal";
+    case baselines::BaselineStatus::Error:
+      return "error";
+  }
+  return "error";
+}
+
+std::vector<geometry::Point> positions(const graph::SearchResult& result)
+{
+  std::vector<geometry::Point> points;
+  for (const graph::PathPoint& point : result.path) {
+    points.push_back(point.position);
+  }
+  return points;
+}
+
+ResultRow graphRow(const graph::SearchResult& result, double milliseconds, const PlanningGraph& planning)
+{
+  ResultRow row;
+  const bool found = result.status == graph::SearchStatus::Found;
+  row.success = found;
+  row.length = found ? result.length : NAN;
+  row.ms = milliseconds;
+  row.status = found ? "solved" : "no_path";
+  if (!found) {
+    row.reason = std::string("search: ") + graph::toString(result.status);
+  }
+  row.graph_vertices = static_cast<double>(planning.map.graph.vertexCount());
+  return row;
+}
+
+}  // namespace
+
+const std::vector<std::string>& searchPlanners()
+{
+  static const std::vector<std::string> planners{"grid_astar", "rrt_star", "bit_star", "far", "ours"};
+  return planners;
+}
+
+std::vector<ResultRow> runSearchSuite(ScenarioKind kind, const std::string& world_name,
+                                      const ScenarioMaps& maps, const std::vector<Task>& tasks,
+                                      const SearchSuiteSettings& settings, PlannedPaths* paths)
+{
+  std::vector<ResultRow> rows;
+  baselines::GridAStar grid_search(maps.planning_grid, kBlocked);
+  graph::SearchScratch scratch;
+  // One untimed run of each deterministic search first, so the first timed query does not pay for cold
+  // caches and first-touch page faults.
+  if (!tasks.empty()) {
+    grid_search.findPath(tasks.front().start, tasks.front().goal);
+    graph::findPath(maps.far.search, maps.far.map.obstacles, tasks.front().start, tasks.front().goal,
+                    scratch);
+    graph::findPath(maps.ours.search, maps.ours.map.obstacles, tasks.front().start, tasks.front().goal,
+                    scratch);
+  }
+  const double grid_cells = static_cast<double>(maps.planning_grid.width()) * maps.planning_grid.height();
+  for (const Task& task : tasks) {
+    // FAR mode's exact length on the planners' map: the sampling planners' target (within the factor of
+    // the best path that map allows) and proof that no path exists when it finds none.
+    const graph::SearchResult far_reference =
+        graph::findPath(maps.far.search, maps.far.map.obstacles, task.start, task.goal, scratch);
+    const bool far_found = far_reference.status == graph::SearchStatus::Found;
+    if (paths != nullptr) {
+      paths->far.push_back(positions(far_reference));
+      paths->ours.push_back(positions(
+          graph::findPath(maps.ours.search, maps.ours.map.obstacles, task.start, task.goal, scratch)));
+    }
+    for (const std::string& planner : settings.planners) {
+      ResultRow row;
+      try {
+        if (planner == "grid_astar") {
+          const double began = baselines::threadCpuMilliseconds();
+          const baselines::BaselineResult result = grid_search.findPath(task.start, task.goal);
+          row.ms = baselines::threadCpuMilliseconds() - began;
+          row.success = result.solved();
+          row.length = result.solved() ? result.length : NAN;
+          row.status = statusName(result.status);
+          row.reason = result.solved() ? "" : (result.reason.empty() ? row.status : result.reason);
+          row.graph_vertices = grid_cells;
+        } else if (planner == "rrt_star" || planner == "bit_star") {
+          row.graph_vertices = static_cast<double>(maps.far.map.obstacles.edgeCount());
+          if (!far_found) {
+            // Sampling cannot find what the exact search proved absent; running to the cap says nothing.
+            row.status = "no_path";
+            row.ms = NAN;
+            row.reason =
+                "not run: no collision-free path on this map (movable objects as obstacles), "
+                "proved by the exact visibility search";
+          } else {
+            const auto algorithm = planner == "rrt_star" ? baselines::SamplingAlgorithm::RrtStar
+                                                         : baselines::SamplingAlgorithm::BitStar;
+            const baselines::BaselineResult result =
+                baselines::planSampling(algorithm, maps.far.map.obstacles, task.start, task.goal,
+                                        far_reference.length, settings.sampling);
+            row.ms = result.milliseconds;
+            row.success = result.solved();
+            row.length = std::isfinite(result.length) && result.length > 0.0 ? result.length : NAN;
+            row.status = statusName(result.status);
+            row.reason = result.solved() ? "" : (result.reason.empty() ? row.status : result.reason);
+          }
+        } else if (planner == "far" || planner == "ours") {
+          const PlanningGraph& planning = planner == "far" ? maps.far : maps.ours;
+          const double began = baselines::threadCpuMilliseconds();
+          const graph::SearchResult result =
+              graph::findPath(planning.search, planning.map.obstacles, task.start, task.goal, scratch);
+          row = graphRow(result, baselines::threadCpuMilliseconds() - began, planning);
+        } else {
+          row.status = "error";
+          row.reason = "unknown planner '" + planner + "'";
+        }
+      } catch (const std::exception& error) {
+        row = ResultRow{};
+        row.status = "error";
+        row.reason = std::string("planner threw: ") + error.what();
+        row.ms = NAN;
+      }
+      row.table = "search";
+      row.planner = planner;
+      row.kind = kindName(kind);
+      row.world = world_name;
+      row.task = task.id;
+      row.optimal = task.optimal;
+      if (!task.reachable_with_pushing) {
+        row.success = false;
+        row.status = "unreachable";
+        row.reason = "unreachable even with pushing: objects too heavy for the vehicle close every route";
+      }
+      rows.push_back(row);
+    }
+  }
+  return rows;
+}
+
+}  // namespace ifar::scenarios

@@ -1,0 +1,39 @@
+#pragma once
+// Tables I and II (planned paths): every planner on every task of one world, on the same map, in one
+// process. Grid A* on the inflated grid, RRT* and BIT* (OMPL, exact segment checks) on the inflated
+// polygons until within `optimum_factor` of the optimum on that map or the CPU cap, FAR mode (the
+// DV-graph search without interaction edges) and ours (with them). Times are planner-thread CPU time.
+//
+// A task that is unreachable even with pushing is a failure for every planner (status "unreachable").
+// A baseline that fails, times out or throws is a recorded failure with its reason, never dropped.
+
+#include <string>
+#include <vector>
+
+#include "bench/baselines/sampling_planners.hpp"
+#include "bench/scenarios/result_row.hpp"
+#include "bench/scenarios/scenario_kind.hpp"
+#include "bench/scenarios/scenario_maps.hpp"
+#include "bench/scenarios/task_selection.hpp"
+
+namespace ifar::scenarios {
+
+/// grid_astar, rrt_star, bit_star, far, ours.
+const std::vector<std::string>& searchPlanners();
+
+struct SearchSuiteSettings {
+  std::vector<std::string> planners = searchPlanners();
+  baselines::SamplingSettings sampling;
+};
+
+/// The planned path of FAR mode and ours per task, for the trajectory plots.
+struct PlannedPaths {
+  std::vector<std::vector<geometry::Point>> far;
+  std::vector<std::vector<geometry::Point>> ours;
+};
+
+std::vector<ResultRow> runSearchSuite(ScenarioKind kind, const std::string& world_name,
+                                      const ScenarioMaps& maps, const std::vector<Task>& tasks,
+                                      const SearchSuiteSettings& settings, PlannedPaths* paths = nullptr);
+
+}  // namespace ifar::scenarios

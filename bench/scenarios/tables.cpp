@@ -1,0 +1,282 @@
+#include "bench/scenarios/tables.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "bench/scenarios/scenario_kind.hpp"
+#include "bench/scenarios/search_suite.hpp"
+
+namespace ifar::scenarios {
+namespace {
+
+/// `value` with `digits` decimals; "-" when not finite.
+std::string fixed(double value, int digits)
+{
+  if (!std::isfinite(value)) {
+    return "-";
+  }
+  char text[64];
+  std::snprintf(text, sizeof(text), "%.*f", digits, value);
+  return text;
+}
+
+/// Milliseconds with about three significant digits.
+std::string milliseconds(double value)
+{
+  if (!std::isfinite(value)) {
+    return "-";
+  }
+  if (value >= 100.0) {
+    return fixed(value, 0);
+  }
+  if (value >= 1.0) {
+    return fixed(value, 2);
+  }
+  if (value >= 0.01) {
+    return fixed(value, 3);
+  }
+  return fixed(value, 4);
+}
+
+std::vector<const ResultRow*> select(const std::vector<ResultRow>& rows, const std::string& table,
+                                     const std::string& planner, const std::string& kind)
+{
+  std::vector<const ResultRow*> selected;
+  for (const ResultRow& row : rows) {
+    // Runner runs skipped for the time budget are left out (the notes count them), not scored as failures.
+    if (row.table == table && row.planner == planner && row.kind == kind && row.status != "skipped") {
+      selected.push_back(&row);
+    }
+  }
+  return selected;
+}
+
+int successes(const std::vector<const ResultRow*>& rows)
+{
+  return static_cast<int>(
+      std::count_if(rows.begin(), rows.end(), [](const ResultRow* row) { return row->success; }));
+}
+
+double medianMs(const std::vector<const ResultRow*>& rows)
+{
+  std::vector<double> times;
+  for (const ResultRow* row : rows) {
+    if (row->success && std::isfinite(row->ms)) {
+      times.push_back(row->ms);
+    }
+  }
+  return nearestRankPercentile(times, 50.0);
+}
+
+double meanSpl(const std::vector<const ResultRow*>& rows)
+{
+  if (rows.empty()) {
+    return NAN;
+  }
+  double sum = 0.0;
+  for (const ResultRow* row : rows) {
+    sum += successWeightedByPathLength(row->success, row->optimal, row->length);
+  }
+  return sum / static_cast<double>(rows.size());
+}
+
+double meanOptimal(const std::vector<ResultRow>& rows, const std::string& kind)
+{
+  double sum = 0.0;
+  int count = 0;
+  for (const ResultRow& row : rows) {
+    if (row.table == "search" && row.kind == kind && row.planner == "ours") {
+      sum += row.optimal;
+      ++count;
+    }
+  }
+  return count > 0 ? sum / count : NAN;
+}
+
+bool anyRunnerRows(const std::vector<ResultRow>& rows)
+{
+  return std::any_of(rows.begin(), rows.end(), [](const ResultRow& row) {
+    return row.table == "system" && row.status != "runner_unavailable";
+  });
+}
+
+std::string header(const std::string& first)
+{
+  std::string line = "| " + first + " |";
+  std::string rule = "|---|";
+  for (const ScenarioKind kind : allKinds()) {
+    line += " " + kindName(kind) + " |";
+    rule += "---|";
+  }
+  return line + "\n" + rule + "\n";
+}
+
+}  // namespace
+
+double nearestRankPercentile(std::vector<double> values, double p)
+{
+  if (values.empty()) {
+    return NAN;
+  }
+  std::sort(values.begin(), values.end());
+  const double rank = std::ceil(p / 100.0 * static_cast<double>(values.size()));
+  const std::size_t index = static_cast<std::size_t>(std::max(1.0, rank)) - 1;
+  return values[std::min(index, values.size() - 1)];
+}
+
+std::string tableOneSearchTime(const std::vector<ResultRow>& rows)
+{
+  std::string text =
+      "Table I: search time per query, planner-thread CPU ms, median / p99 over the successful "
+      "queries (successes / tasks).\n\n";
+  text += header("planner");
+  text += "| optimal length, mean (m) |";
+  for (const ScenarioKind kind : allKinds()) {
+    text += " " + fixed(meanOptimal(rows, kindName(kind)), 1) + " |";
+  }
+  text += "\n";
+  for (const std::string& planner : searchPlanners()) {
+    text += "| " + planner + " |";
+    for (const ScenarioKind kind : allKinds()) {
+      const auto selected = select(rows, "search", planner, kindName(kind));
+      std::vector<double> times;
+      for (const ResultRow* row : selected) {
+        if (row->success && std::isfinite(row->ms)) {
+          times.push_back(row->ms);
+        }
+      }
+      text += " " + milliseconds(nearestRankPercentile(times, 50.0)) + " / " +
+              milliseconds(nearestRankPercentile(times, 99.0)) + " (" + std::to_string(successes(selected)) +
+              "/" + std::to_string(selected.size()) + ") |";
+    }
+    text += "\n";
+  }
+  return text;
+}
+
+std::string tableTwoSpl(const std::vector<ResultRow>& rows)
+{
+  std::string text =
+      "Table II: SPL = mean over tasks of success x optimal / max(length, optimal). Planned: the "
+      "path each planner returns (movable objects are obstacles unless the planner pushes). "
+      "Driven: the distance the vehicle travelled in the headless runner.\n\n";
+  text += header("planner");
+  for (const std::string& planner : searchPlanners()) {
+    text += "| " + planner + " (planned) |";
+    for (const ScenarioKind kind : allKinds()) {
+      const auto selected = select(rows, "search", planner, kindName(kind));
+      text += " " + fixed(meanSpl(selected), 3) + " (" + std::to_string(successes(selected)) + "/" +
+              std::to_string(selected.size()) + ") |";
+    }
+    text += "\n";
+  }
+  const bool runner = anyRunnerRows(rows);
+  for (const std::string planner : {"far", "ours"}) {
+    text += "| " + planner + " (driven) |";
+    for (const ScenarioKind kind : allKinds()) {
+      const auto selected = select(rows, "system", planner, kindName(kind));
+      if (!runner) {
+        text += " runner unavailable |";
+      } else if (selected.empty()) {
+        text += " not run |";
+      } else {
+        text += " " + fixed(meanSpl(selected), 3) + " (" + std::to_string(successes(selected)) + "/" +
+                std::to_string(selected.size()) + ") |";
+      }
+    }
+    text += "\n";
+  }
+  return text;
+}
+
+std::string tableThreeSystem(const std::vector<ResultRow>& rows)
+{
+  const std::vector<std::string> kinds{"office", "willow", "tunnel"};
+  std::string text =
+      "Table III: system level, headless runner: travel distance and simulated time summed over "
+      "the tasks, success.\n\n| planner |";
+  std::string rule = "|---|";
+  for (const std::string& kind : kinds) {
+    text += " " + kind + " distance (m) | " + kind + " time (s) | " + kind + " success |";
+    rule += "---|---|---|";
+  }
+  text += "\n" + rule + "\n";
+  const bool runner = anyRunnerRows(rows);
+  for (const std::string planner : {"far", "ours"}) {
+    text += "| " + planner + " |";
+    for (const std::string& kind : kinds) {
+      const auto selected = select(rows, "system", planner, kind);
+      if (!runner) {
+        text += " runner unavailable | - | - |";
+        continue;
+      }
+      double distance = 0.0;
+      double time = 0.0;
+      for (const ResultRow* row : selected) {
+        distance += std::isfinite(row->length) ? row->length : 0.0;
+        time += row->sim_time_s;
+      }
+      text += " " + fixed(distance, 1) + " | " + fixed(time, 1) + " | " +
+              std::to_string(successes(selected)) + "/" + std::to_string(selected.size()) + " |";
+    }
+    text += "\n";
+  }
+  return text;
+}
+
+std::string targetCheck(const std::vector<ResultRow>& rows)
+{
+  std::string text = "| target | measured | verdict |\n|---|---|---|\n";
+  const auto ratio_line = [&](const std::string& baseline, const std::string& kind) {
+    const double ours = medianMs(select(rows, "search", "ours", kind));
+    const double other = medianMs(select(rows, "search", baseline, kind));
+    const double ratio = other / ours;
+    text += "| ours >= 10x faster than " + baseline + " (" + kind + ", median) | " +
+            (std::isfinite(ratio) ? fixed(ratio, 1) + "x" : std::string("-")) + " (" + milliseconds(other) +
+            " vs " + milliseconds(ours) + " ms) | " +
+            (!std::isfinite(ratio) ? "not measured"
+             : ratio >= 10.0       ? "met"
+                                   : "missed") +
+            " |\n";
+  };
+  for (const std::string kind : {"office", "willow", "tunnel"}) {
+    ratio_line("grid_astar", kind);
+    ratio_line("bit_star", kind);
+  }
+  const bool runner = anyRunnerRows(rows);
+  const std::string spl_source = runner ? "system" : "search";
+  const auto spl_line = [&](const std::string& kind, double target) {
+    const auto selected = select(rows, spl_source, "ours", kind);
+    const double spl = meanSpl(selected);
+    text += "| SPL " + kind + " >= " + fixed(target, 2) + " (" +
+            (runner ? "driven" : "planned, runner unavailable") + ") | " + fixed(spl, 3) + ", success " +
+            std::to_string(successes(selected)) + "/" + std::to_string(selected.size()) + " | " +
+            (!std::isfinite(spl) ? "not measured"
+             : spl >= target     ? "met"
+                                 : "missed by " + fixed(target - spl, 3)) +
+            " |\n";
+  };
+  spl_line("room_objects", 0.80);
+  spl_line("office", 0.90);
+  spl_line("willow", 0.90);
+  spl_line("tunnel", 0.97);
+  if (runner) {
+    double far_distance = 0.0;
+    double ours_distance = 0.0;
+    for (const ResultRow* row : select(rows, "system", "far", "office")) {
+      far_distance += std::isfinite(row->length) ? row->length : 0.0;
+    }
+    for (const ResultRow* row : select(rows, "system", "ours", "office")) {
+      ours_distance += std::isfinite(row->length) ? row->length : 0.0;
+    }
+    const double shorter = 1.0 - ours_distance / far_distance;
+    text += "| ours travels >= 40% less than FAR mode (office) | " + fixed(100.0 * shorter, 1) + "%" + " | " +
+            (shorter >= 0.4 ? "met" : "missed") + " |\n";
+  } else {
+    text += "| ours travels >= 40% less than FAR mode (office) | runner unavailable | not measured |\n";
+  }
+  return text;
+}
+
+}  // namespace ifar::scenarios

@@ -1,0 +1,22 @@
+#pragma once
+// The paper's three tables as Markdown from the result rows, plus the issue 8 targets checked against
+// them. Percentiles are nearest-rank over the successful queries (the paper averages successful searches
+// only); every cell says how many of the tasks succeeded.
+
+#include <string>
+#include <vector>
+
+#include "bench/scenarios/result_row.hpp"
+
+namespace ifar::scenarios {
+
+/// Nearest-rank percentile (p in 0..100) of unsorted values; NaN when empty.
+double nearestRankPercentile(std::vector<double> values, double p);
+
+std::string tableOneSearchTime(const std::vector<ResultRow>& rows);
+std::string tableTwoSpl(const std::vector<ResultRow>& rows);
+std::string tableThreeSystem(const std::vector<ResultRow>& rows);
+/// The issue's targets with the measured value and whether it is met (or by how much it is missed).
+std::string targetCheck(const std::vector<ResultRow>& rows);
+
+}  // namespace ifar::scenarios

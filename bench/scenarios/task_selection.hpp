@@ -1,0 +1,41 @@
+#pragma once
+// The tasks of one world: start and goal in free space (the vehicle fits there: clear of the inflated
+// static obstacles and of every movable object), connected for the vehicle once the movable objects are
+// removed (so only objects can stand in the way), whose ground-truth optimal length exceeds the kind's
+// threshold. The world's own start -> goal comes first when it qualifies, then seeded random pairs.
+// Deterministic: the same world, maps and settings give the same tasks on every platform.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "bench/scenarios/scenario_maps.hpp"
+#include "common/geometry/point.hpp"
+#include "sim/world/world.hpp"
+
+namespace ifar::scenarios {
+
+struct Task {
+  std::string id;  // "t0", "t1", ... within the world
+  geometry::Point start = geometry::Point::Zero();
+  double start_heading = 0.0;  // along the first leg of the optimal path
+  geometry::Point goal = geometry::Point::Zero();
+  double optimal = 0.0;                // exact, zero inflation, movable objects removed
+  bool reachable_with_pushing = true;  // false: only objects too heavy to push leave no route
+  bool from_world = false;             // the world's own start -> goal
+};
+
+struct TaskSelectionSettings {
+  int count = 10;
+  std::uint64_t seed = 1;
+  double min_optimal = 15.0;  // strictly longer than this
+  double min_clearance_m =
+      0.6;  // start/goal this far from static obstacles and objects (vehicle half diagonal)
+  int max_attempts = 20000;
+  bool include_world_task = true;
+};
+
+std::vector<Task> selectTasks(const sim::World& world, const ScenarioMaps& maps,
+                              const TaskSelectionSettings& settings);
+
+}  // namespace ifar::scenarios

@@ -1,0 +1,102 @@
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "bench/scenarios/result_row.hpp"
+#include "bench/scenarios/tables.hpp"
+
+namespace ifar::scenarios {
+namespace {
+
+TEST(Spl, FailureScoresZero)
+{
+  EXPECT_EQ(successWeightedByPathLength(false, 10.0, 10.0), 0.0);
+}
+
+TEST(Spl, OptimalPathScoresOne)
+{
+  EXPECT_DOUBLE_EQ(successWeightedByPathLength(true, 10.0, 10.0), 1.0);
+}
+
+TEST(Spl, TwiceTheOptimumScoresHalf)
+{
+  EXPECT_DOUBLE_EQ(successWeightedByPathLength(true, 40.0, 80.0), 0.5);
+}
+
+TEST(Spl, ShorterThanOptimumIsCappedAtOne)
+{
+  // max(travelled, optimal) in the denominator: a path shorter than the optimum (e.g. a cut corner of
+  // the raster) cannot score above 1.
+  EXPECT_DOUBLE_EQ(successWeightedByPathLength(true, 10.0, 9.5), 1.0);
+}
+
+TEST(Spl, UnknownLengthOrOptimumScoresZero)
+{
+  EXPECT_EQ(successWeightedByPathLength(true, 10.0, NAN), 0.0);
+  EXPECT_EQ(successWeightedByPathLength(true, 0.0, 5.0), 0.0);
+  EXPECT_EQ(successWeightedByPathLength(true, NAN, 5.0), 0.0);
+}
+
+ResultRow searchRow()
+{
+  ResultRow row;
+  row.table = "search";
+  row.planner = "ours";
+  row.kind = "office";
+  row.world = "office2x-3+4";
+  row.task = "t2";
+  row.success = true;
+  row.length = 95.25;
+  row.optimal = 90.5;
+  row.ms = 0.125;
+  row.status = "solved";
+  row.graph_vertices = 304;
+  return row;
+}
+
+TEST(JsonLine, SearchRowHasEveryKeyInOrder)
+{
+  EXPECT_EQ(
+      toJsonLine(searchRow()),
+      "{\"table\": \"search\", \"planner\": \"ours\", \"kind\": \"office\", \"world\": \"office2x-3+4\", "
+      "\"task\": \"t2\", \"success\": true, \"length\": 95.25, \"optimal\": 90.5, \"ms\": 0.125, "
+      "\"status\": \"solved\", \"reason\": \"\", \"graph_vertices\": 304}");
+}
+
+TEST(JsonLine, FailureWritesNullLengthAndEscapedReason)
+{
+  ResultRow row = searchRow();
+  row.success = false;
+  row.length = NAN;
+  row.ms = NAN;
+  row.status = "timeout";
+  row.reason = "cap \"5 s\"\nreached\\";
+  EXPECT_EQ(
+      toJsonLine(row),
+      "{\"table\": \"search\", \"planner\": \"ours\", \"kind\": \"office\", \"world\": \"office2x-3+4\", "
+      "\"task\": \"t2\", \"success\": false, \"length\": null, \"optimal\": 90.5, \"ms\": null, "
+      "\"status\": \"timeout\", \"reason\": \"cap \\\"5 s\\\"\\nreached\\\\\", \"graph_vertices\": 304}");
+}
+
+TEST(JsonLine, SystemRowAddsSimulatedTimeAndPushes)
+{
+  ResultRow row = searchRow();
+  row.table = "system";
+  row.sim_time_s = 120.5;
+  row.pushes = 2;
+  const std::string line = toJsonLine(row);
+  EXPECT_NE(line.find(", \"sim_time_s\": 120.5, \"pushes\": 2}"), std::string::npos) << line;
+  EXPECT_EQ(line.find('\n'), std::string::npos);
+}
+
+TEST(Percentile, NearestRank)
+{
+  const std::vector<double> values{5.0, 1.0, 4.0, 2.0, 3.0};
+  EXPECT_EQ(nearestRankPercentile(values, 50.0), 3.0);
+  EXPECT_EQ(nearestRankPercentile(values, 99.0), 5.0);
+  EXPECT_EQ(nearestRankPercentile(values, 0.0), 1.0);
+  EXPECT_TRUE(std::isnan(nearestRankPercentile({}, 50.0)));
+}
+
+}  // namespace
+}  // namespace ifar::scenarios
