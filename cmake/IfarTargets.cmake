@@ -46,11 +46,12 @@ function(ifar_executable)
   target_link_libraries(${ARG_NAME} PRIVATE ${ARG_DEPENDS})
 endfunction()
 
-# ifar_gtest(NAME name SOURCES ... [DEPENDS targets...] [LABELS ...] [TIMEOUT s])
-# One executable per component's tests, discovered test by test so ctest -j runs them in parallel.
+# ifar_gtest(NAME name SOURCES ... [DEPENDS targets...] [LABELS ...] [TIMEOUT s] [RUN_SERIAL])
+# One executable per component's tests, discovered test by test so ctest -j runs them in parallel
+# (RUN_SERIAL: each of its tests runs alone, for real-time multi-process tests).
 # Tests find shared data through IFAR_SHARED_DATA (../shared/data beside the checkout).
 function(ifar_gtest)
-  cmake_parse_arguments(ARG "" "NAME;TIMEOUT" "SOURCES;DEPENDS;LABELS" ${ARGN})
+  cmake_parse_arguments(ARG "RUN_SERIAL" "NAME;TIMEOUT" "SOURCES;DEPENDS;LABELS" ${ARGN})
   if(NOT ARG_TIMEOUT)
     set(ARG_TIMEOUT 120)
   endif()
@@ -65,7 +66,11 @@ function(ifar_gtest)
     IFAR_SOURCE_DIR="${CMAKE_SOURCE_DIR}" IFAR_BINARY_DIR="${CMAKE_BINARY_DIR}"
     IFAR_SHARED_DATA="${IFAR_SHARED_DATA}")
   include(GoogleTest)
-  gtest_discover_tests(${ARG_NAME} PROPERTIES LABELS "${ARG_LABELS}" TIMEOUT ${ARG_TIMEOUT}
+  set(serial FALSE)
+  if(ARG_RUN_SERIAL)
+    set(serial TRUE)
+  endif()
+  gtest_discover_tests(${ARG_NAME} PROPERTIES LABELS "${ARG_LABELS}" TIMEOUT ${ARG_TIMEOUT} RUN_SERIAL ${serial}
                        DISCOVERY_TIMEOUT 60)
 endfunction()
 

@@ -1,10 +1,25 @@
 #include "tools/launch/launch_config.hpp"
 
 #include <set>
+#include <utility>
 
 namespace ifar::launch {
 
-LaunchSpec loadLaunchSpec(const common::ConfigNode& root)
+namespace {
+
+std::string expanded(const common::ConfigNode& node, const std::string& key, const std::string& text,
+                     const VariableLookup& lookup)
+{
+  Expansion expansion = expandVariables(text, lookup);
+  if (!expansion.error.empty()) {
+    node.fail(key, expansion.error);
+  }
+  return std::move(expansion.text);
+}
+
+}  // namespace
+
+LaunchSpec loadLaunchSpec(const common::ConfigNode& root, const VariableLookup& lookup)
 {
   LaunchSpec spec;
   spec.stop_timeout_s = root.optional<double>("stop_timeout_s", spec.stop_timeout_s);
@@ -23,6 +38,9 @@ LaunchSpec loadLaunchSpec(const common::ConfigNode& root)
       node.fail("name", "'" + process.name + "' is empty or used twice");
     }
     process.command = node.required<std::vector<std::string>>("command");
+    for (std::string& argument : process.command) {
+      argument = expanded(node, "command", argument, lookup);
+    }
     if (process.command.empty() || process.command.front().empty()) {
       node.fail("command", "must name a program");
     }
@@ -33,7 +51,7 @@ LaunchSpec loadLaunchSpec(const common::ConfigNode& root)
     if (node.has("environment")) {
       const auto environment = node.child("environment");
       for (const auto& key : environment.keys()) {
-        process.environment[key] = environment.required<std::string>(key);
+        process.environment[key] = expanded(environment, key, environment.required<std::string>(key), lookup);
       }
     }
     spec.processes.push_back(std::move(process));

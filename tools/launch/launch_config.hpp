@@ -10,12 +10,15 @@
 //       respawn_delay_s: 0.5     # wait before restarting, doubled per quick crash up to 8 s
 //       required: false          # true: when it exits for good, stop everything
 //       environment: {SPDLOG_LEVEL: debug}
+//
+// Command arguments and environment values may use ${NAME} and ${NAME:-fallback} (variables.hpp).
 
 #include <map>
 #include <string>
 #include <vector>
 
 #include "common/config.hpp"
+#include "tools/launch/variables.hpp"
 
 namespace ifar::launch {
 
@@ -34,7 +37,8 @@ struct LaunchSpec {
   std::vector<ProcessSpec> processes;
 };
 
-/// Reads and validates a launch file (strict: unknown keys, empty commands, duplicate names are errors).
-LaunchSpec loadLaunchSpec(const common::ConfigNode& root);
+/// Reads and validates a launch file (strict: unknown keys, empty commands, duplicate names and unset
+/// variables are errors), expanding variables with `lookup`.
+LaunchSpec loadLaunchSpec(const common::ConfigNode& root, const VariableLookup& lookup = environmentVariable);
 
 }  // namespace ifar::launch

@@ -1,17 +1,48 @@
 // ifar goal X Y: sends a navigation goal on GOAL (a few times, so a lossy link or a late subscriber still
-// gets it; the planner treats repeats of one goal_id as one goal).
+// gets it; the planner treats repeats of one goal_id as one goal). With --wait it keeps resending the goal
+// once a second (a respawned planner learns it again) and watches EXEC_STATUS until the executive reports
+// the goal reached (exit 0) or the wait runs out (exit 1): the demo and the system tests end on this.
 
-#include <chrono>
 #include <cmath>
 #include <iostream>
-#include <thread>
+#include <string>
 
+#include <spdlog/sinks/null_sink.h>
+#include <spdlog/spdlog.h>
 #include <CLI/CLI.hpp>
-#include <lcm/lcm-cpp.hpp>
 
 #include "common/bus/run_loop.hpp"
 #include "common/time.hpp"
+#include "ifar/exec_status_t.hpp"
 #include "ifar/goal_t.hpp"
+
+namespace {
+
+const char* modeName(std::int8_t mode)
+{
+  switch (mode) {
+    case ifar::exec_status_t::MODE_IDLE:
+      return "idle";
+    case ifar::exec_status_t::MODE_FOLLOW:
+      return "follow";
+    case ifar::exec_status_t::MODE_APPROACH:
+      return "approach";
+    case ifar::exec_status_t::MODE_PUSH:
+      return "push";
+    case ifar::exec_status_t::MODE_REPLAN_WAIT:
+      return "replan-wait";
+    case ifar::exec_status_t::MODE_STOP:
+      return "stop";
+    case ifar::exec_status_t::MODE_E_STOP:
+      return "e-stop";
+    case ifar::exec_status_t::MODE_ARRIVED:
+      return "arrived";
+    default:
+      return "unknown";
+  }
+}
+
+}  // namespace
 
 int main(int argc, char** argv)
 {
@@ -21,34 +52,94 @@ int main(int argc, char** argv)
   std::int64_t goal_id = 0;
   bool cancel = false;
   int repeats = 3;
+  double wait_s = 0.0;
   std::string url;
   app.add_option("x", x, "goal x in metres, world frame")->required();
   app.add_option("y", y, "goal y in metres, world frame")->required();
   app.add_option("--id", goal_id, "goal id (default: the current time in seconds)");
   app.add_flag("--cancel", cancel, "cancel the goal with this id instead");
   app.add_option("--repeats", repeats, "how many times to send it, 0.2 s apart")->capture_default_str();
+  app.add_option("--wait", wait_s,
+                 "then wait up to this many seconds for EXEC_STATUS to report the goal reached, resending "
+                 "the goal every second; exit 1 if it is not reached");
   app.add_option("--lcm-url", url, "LCM URL (default: LCM_DEFAULT_URL or LCM's default)");
   CLI11_PARSE(app, argc, argv);
-  if (!std::isfinite(x) || !std::isfinite(y)) {
-    std::cerr << "ifar-goal: error: the goal must be finite numbers" << std::endl;
+  if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(wait_s) || wait_s < 0.0) {
+    std::cerr << "ifar-goal: error: the goal and --wait must be finite numbers, --wait not negative"
+              << std::endl;
     return 2;
   }
-  lcm::LCM bus(ifar::bus::resolveLcmUrl(url));
-  if (!bus.good()) {
-    std::cerr << "ifar-goal: error: cannot start LCM" << std::endl;
+
+  auto logger = std::make_shared<spdlog::logger>("goal", std::make_shared<spdlog::sinks::null_sink_mt>());
+  std::unique_ptr<ifar::bus::RunLoop> loop;
+  try {
+    loop = std::make_unique<ifar::bus::RunLoop>(ifar::bus::resolveLcmUrl(url), logger);
+  } catch (const std::exception& error) {
+    std::cerr << "ifar-goal: error: " << error.what() << std::endl;
     return 1;
   }
+
   ifar::goal_t goal;
   goal.utime = ifar::common::nowMicroseconds();
   goal.goal_id = goal_id != 0 ? goal_id : goal.utime / ifar::common::kMicrosecondsPerSecond;
   goal.x = x;
   goal.y = y;
   goal.cancel = cancel;
-  for (int index = 0; index < std::max(1, repeats); ++index) {
-    bus.publish("GOAL", &goal);
-    std::this_thread::sleep_for(std::chrono::milliseconds(200));
-  }
+  const auto send = [&] {
+    goal.utime = ifar::common::nowMicroseconds();
+    loop->publish("GOAL", goal);
+  };
+
+  int sent = 1;
+  send();
+  const int burst = std::max(1, repeats);
+  loop->every(0.2, [&] {
+    if (sent < burst) {
+      send();
+      ++sent;
+    }
+  });
   std::cout << (cancel ? "cancelled goal " : "sent goal ") << goal.goal_id << " (" << x << ", " << y << ")"
             << std::endl;
-  return 0;
+
+  const bool waiting = wait_s > 0.0 && !cancel;
+  bool arrived = false;
+  ifar::exec_status_t last_status;
+  bool have_status = false;
+  if (waiting) {
+    loop->every(1.0, send);
+    loop->subscribe<ifar::exec_status_t>("EXEC_STATUS", [&](const ifar::exec_status_t& status, std::int64_t) {
+      if (status.goal_id != goal.goal_id) {
+        return;
+      }
+      last_status = status;
+      have_status = true;
+      if (status.mode == ifar::exec_status_t::MODE_ARRIVED) {
+        arrived = true;
+        loop->stop();
+      }
+    });
+  }
+  const double run_s = waiting ? wait_s : 0.2 * burst;
+  const std::int64_t deadline = ifar::common::monotonicMicroseconds() +
+                                static_cast<std::int64_t>(run_s * ifar::common::kMicrosecondsPerSecond);
+  while (!loop->stopping() && ifar::common::monotonicMicroseconds() < deadline) {
+    loop->spinOnce(50);
+  }
+  if (!waiting) {
+    return 0;
+  }
+  if (arrived) {
+    std::cout << "goal " << goal.goal_id << " reached (" << last_status.pushes << " pushes, "
+              << last_status.replans << " replans)" << std::endl;
+    return 0;
+  }
+  std::cout << "goal " << goal.goal_id << " not reached within " << wait_s << " s";
+  if (have_status) {
+    std::cout << "; executive: " << modeName(last_status.mode) << ", " << last_status.reason;
+  } else {
+    std::cout << "; no EXEC_STATUS for this goal";
+  }
+  std::cout << std::endl;
+  return 1;
 }

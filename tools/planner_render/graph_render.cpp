@@ -8,6 +8,9 @@
 
 #include <lcm/lcm-cpp.hpp>
 
+#include "ifar/pose_t.hpp"
+#include "ifar/world_state_t.hpp"
+
 namespace ifar::planner_render {
 
 namespace {
@@ -38,7 +41,7 @@ geometry::Polygon outline(const polygon_t& polygon)
 }  // namespace
 
 render::Canvas renderGraph(const dv_graph_t& graph, const std::optional<path_t>& path,
-                           const RenderOptions& options)
+                           const RenderOptions& options, const RunOverlay& run)
 {
   Extent extent;
   for (const polygon_t& polygon : graph.polygons) {
@@ -52,6 +55,19 @@ render::Canvas renderGraph(const dv_graph_t& graph, const std::optional<path_t>&
   if (path) {
     for (const waypoint_t& waypoint : path->waypoints) {
       extent.add(waypoint.x, waypoint.y);
+    }
+  }
+  for (const geometry::Point& point : run.trajectory) {
+    extent.add(point.x(), point.y());
+  }
+  for (const auto& plan : run.push_plans) {
+    for (const geometry::Point& point : plan) {
+      extent.add(point.x(), point.y());
+    }
+  }
+  for (const auto& [id, track] : run.object_tracks) {
+    for (const geometry::Point& point : track) {
+      extent.add(point.x(), point.y());
     }
   }
   if (extent.empty()) {
@@ -102,17 +118,70 @@ render::Canvas renderGraph(const dv_graph_t& graph, const std::optional<path_t>&
     canvas.drawCircle(points.front(), 0.15, render::ShapeStyle{colors::kPath, colors::kVertex, 1});
     canvas.drawCircle(points.back(), 0.15, render::ShapeStyle{std::nullopt, colors::kPath, 3});
   }
-  canvas.drawLegend({{"background", colors::kBackground},
-                     {"movable", colors::kMovable},
-                     {"visibility edge", colors::kVisibilityEdge},
-                     {"interaction edge", colors::kInteractionEdge},
-                     {"path", colors::kPath}});
+  std::vector<render::LegendEntry> legend = {{"background", colors::kBackground},
+                                             {"movable", colors::kMovable},
+                                             {"visibility edge", colors::kVisibilityEdge},
+                                             {"interaction edge", colors::kInteractionEdge},
+                                             {"path", colors::kPath}};
+  for (const auto& plan : run.push_plans) {
+    canvas.drawPolyline(plan, colors::kPushPlan, 2);
+    if (!plan.empty()) {
+      canvas.drawCircle(plan.front(), 0.12, render::ShapeStyle{colors::kPushPlan, std::nullopt, 1});
+    }
+  }
+  for (const auto& [id, track] : run.object_tracks) {
+    canvas.drawPolyline(track, colors::kObjectTrack, 2);
+  }
+  if (!run.trajectory.empty()) {
+    canvas.drawPolyline(run.trajectory, colors::kTrajectory, 2);
+  }
+  if (!run.push_plans.empty()) {
+    legend.push_back({"push plan", colors::kPushPlan});
+  }
+  if (!run.object_tracks.empty()) {
+    legend.push_back({"object track", colors::kObjectTrack});
+  }
+  if (!run.trajectory.empty()) {
+    legend.push_back({"trajectory", colors::kTrajectory});
+  }
+  canvas.drawLegend(legend);
   return canvas;
 }
 
-LastMessages readLastMessages(const std::string& log_path, const std::string& graph_channel,
-                              const std::string& path_channel)
+namespace {
+
+/// Adds `point` to `points` unless it is within `spacing_m` of the last one (keeps pictures light).
+void appendSpaced(std::vector<geometry::Point>& points, const geometry::Point& point, double spacing_m)
 {
+  if (point.allFinite() && (points.empty() || (points.back() - point).norm() >= spacing_m)) {
+    points.push_back(point);
+  }
+}
+
+std::vector<geometry::Point> planPoints(const push_plan_t& plan)
+{
+  std::vector<geometry::Point> points = {geometry::Point(plan.contact_x, plan.contact_y)};
+  for (const push_control_t& control : plan.controls) {
+    points.emplace_back(control.vehicle_x, control.vehicle_y);
+  }
+  return points;
+}
+
+/// A push plan is drawn once: plans that start at the same contact point for the same object are one.
+bool samePlan(const std::vector<geometry::Point>& first, const std::vector<geometry::Point>& second)
+{
+  return !first.empty() && !second.empty() && (first.front() - second.front()).norm() < 0.05 &&
+         (first.back() - second.back()).norm() < 0.05;
+}
+
+}  // namespace
+
+LastMessages readLastMessages(const std::string& log_path, const std::string& graph_channel,
+                              const std::string& path_channel, const std::string& pose_channel,
+                              const std::string& truth_channel)
+{
+  constexpr double kSpacingM = 0.05;
+  std::map<std::int64_t, geometry::Point> object_starts;
   LastMessages last;
   lcm::LogFile log(log_path, "r");
   if (!log.good()) {
@@ -132,7 +201,40 @@ LastMessages readLastMessages(const std::string& log_path, const std::string& gr
       if (path.decode(event->data, 0, event->datalen) < 0) {
         ++last.undecodable;
       } else {
+        for (const push_plan_t& plan : path.push_plans) {
+          std::vector<geometry::Point> points = planPoints(plan);
+          const bool known = std::any_of(last.run.push_plans.begin(), last.run.push_plans.end(),
+                                         [&](const auto& drawn) { return samePlan(drawn, points); });
+          if (!known) {
+            last.run.push_plans.push_back(std::move(points));
+          }
+        }
         last.path = std::move(path);
+      }
+    } else if (event->channel == pose_channel) {
+      pose_t pose{};
+      if (pose.decode(event->data, 0, event->datalen) < 0) {
+        ++last.undecodable;
+      } else {
+        appendSpaced(last.run.trajectory, geometry::Point(pose.position[0], pose.position[1]), kSpacingM);
+      }
+    } else if (event->channel == truth_channel) {
+      world_state_t truth{};
+      if (truth.decode(event->data, 0, event->datalen) < 0) {
+        ++last.undecodable;
+        continue;
+      }
+      for (const object_state_t& object : truth.objects) {
+        const geometry::Point position(object.x, object.y);
+        const auto start = object_starts.emplace(object.id, position).first;
+        // Objects that never moved have no track worth drawing.
+        if ((position - start->second).norm() >= kSpacingM || last.run.object_tracks.count(object.id) != 0) {
+          auto& track = last.run.object_tracks[object.id];
+          if (track.empty()) {
+            track.push_back(start->second);
+          }
+          appendSpaced(track, position, kSpacingM);
+        }
       }
     }
   }

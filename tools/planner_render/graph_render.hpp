@@ -1,10 +1,15 @@
 #pragma once
 // Pictures of the planner's output: the last DV_GRAPH and GLOBAL_PATH of an LCM log drawn as a PNG.
 // Background polygons red, movable ones green, visibility edges grey, interaction edges orange, graph
-// vertices black, the path blue with its start and goal marked.
+// vertices black, the path blue with its start and goal marked. Over it, what happened in the run: the
+// vehicle's trajectory (POSE) black, every push plan the planner sent (its vehicle poses) magenta, and the
+// objects' ground-truth tracks (SIM_GROUND_TRUTH, simulated runs only) dark green.
 
+#include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "ifar/dv_graph_t.hpp"
 #include "ifar/path_t.hpp"
@@ -24,21 +29,33 @@ constexpr render::Color kVisibilityEdge{150, 150, 150};
 constexpr render::Color kInteractionEdge{240, 150, 20};
 constexpr render::Color kVertex{0, 0, 0};
 constexpr render::Color kPath{30, 80, 230};
+constexpr render::Color kTrajectory{20, 20, 20};
+constexpr render::Color kPushPlan{200, 40, 200};
+constexpr render::Color kObjectTrack{0, 110, 40};
 }  // namespace colors
 
-/// Draws the graph (and the path when given) on a canvas sized to their extent plus the margin.
+/// What a run did, drawn over the graph; every part may be empty.
+struct RunOverlay {
+  std::vector<geometry::Point> trajectory;               ///< vehicle positions in time order
+  std::vector<std::vector<geometry::Point>> push_plans;  ///< contact pose then each control's end pose
+  std::map<std::int64_t, std::vector<geometry::Point>> object_tracks;  ///< per object id, only if it moved
+};
+
+/// Draws the graph (and the path and the run when given) on a canvas sized to their extent plus the margin.
 render::Canvas renderGraph(const dv_graph_t& graph, const std::optional<path_t>& path,
-                           const RenderOptions& options);
+                           const RenderOptions& options, const RunOverlay& run = {});
 
 struct LastMessages {
   std::optional<dv_graph_t> graph;
   std::optional<path_t> path;
+  RunOverlay run;  ///< trajectory from the POSE channel, push plans from every path, object tracks
   std::size_t undecodable = 0;  // events on the channels that did not decode (skipped)
   std::string error;            // the log could not be opened; empty otherwise
 };
 
-/// The last message on each channel of an LCM log file.
+/// The last graph and path of an LCM log file, and the run overlay from its other channels.
 LastMessages readLastMessages(const std::string& log_path, const std::string& graph_channel,
-                              const std::string& path_channel);
+                              const std::string& path_channel, const std::string& pose_channel = "POSE",
+                              const std::string& truth_channel = "SIM_GROUND_TRUTH");
 
 }  // namespace ifar::planner_render

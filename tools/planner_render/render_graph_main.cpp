@@ -1,4 +1,5 @@
-// ifar-render-graph (`ifar render-graph`): the last DV_GRAPH and GLOBAL_PATH of an LCM log as a PNG.
+// ifar-render-graph (`ifar render-graph`): the last DV_GRAPH and GLOBAL_PATH of an LCM log as a PNG, with
+// the run drawn over it (trajectory, push plans, object tracks).
 
 #include <iostream>
 #include <string>
@@ -11,24 +12,31 @@ int main(int argc, char** argv)
 {
   CLI::App app{
       "Draws the last DV_GRAPH and GLOBAL_PATH of an LCM log as a PNG: background polygons red, "
-      "movable green, graph edges, path blue"};
+      "movable green, graph edges, path blue; with the vehicle's trajectory (POSE) black, the push plans "
+      "magenta and the objects' tracks (SIM_GROUND_TRUTH, when simulated) dark green"};
   std::string log_path;
   std::string output = "graph.png";
   std::string graph_channel = "DV_GRAPH";
   std::string path_channel = "GLOBAL_PATH";
+  std::string pose_channel = "POSE";
+  std::string truth_channel = "SIM_GROUND_TRUTH";
   ifar::planner_render::RenderOptions options;
   app.add_option("log", log_path, "LCM log file")->required();
   app.add_option("-o,--output", output, "PNG to write")->capture_default_str();
   app.add_option("--graph-channel", graph_channel, "channel of the dv_graph_t messages")
       ->capture_default_str();
   app.add_option("--path-channel", path_channel, "channel of the path_t messages")->capture_default_str();
+  app.add_option("--pose-channel", pose_channel, "channel of the pose_t messages (trajectory)")
+      ->capture_default_str();
+  app.add_option("--truth-channel", truth_channel, "channel of the simulator's world_state_t (object tracks)")
+      ->capture_default_str();
   app.add_option("--resolution", options.metres_per_pixel, "metres per pixel")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   CLI11_PARSE(app, argc, argv);
 
-  const ifar::planner_render::LastMessages last =
-      ifar::planner_render::readLastMessages(log_path, graph_channel, path_channel);
+  const ifar::planner_render::LastMessages last = ifar::planner_render::readLastMessages(
+      log_path, graph_channel, path_channel, pose_channel, truth_channel);
   if (!last.error.empty()) {
     std::cerr << "error: " << last.error << "\n";
     return 1;
@@ -41,7 +49,8 @@ int main(int argc, char** argv)
     std::cerr << "error: " << log_path << ": no decodable message on channel " << graph_channel << "\n";
     return 1;
   }
-  const ifar::render::Canvas canvas = ifar::planner_render::renderGraph(*last.graph, last.path, options);
+  const ifar::render::Canvas canvas =
+      ifar::planner_render::renderGraph(*last.graph, last.path, options, last.run);
   const std::string error = canvas.writePng(output);
   if (!error.empty()) {
     std::cerr << "error: " << error << "\n";
@@ -51,6 +60,7 @@ int main(int argc, char** argv)
             << " vertices, " << last.graph->num_edges << " edges, path "
             << (last.path && last.path->valid ? std::to_string(last.path->num_waypoints) + " waypoints"
                                               : "none")
-            << "\n";
+            << ", trajectory " << last.run.trajectory.size() << " points, " << last.run.push_plans.size()
+            << " push plans, " << last.run.object_tracks.size() << " moved objects\n";
   return 0;
 }
