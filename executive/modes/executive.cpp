@@ -246,13 +246,18 @@ void Executive::stepFollow(Cycle& cycle)
     }
   }
 
-  FollowerResult result = follow(cycle.pose, waypoint.position, waypoint_index_ == last, cycle.obstacles,
-                                 settings_.follower, drive_);
+  // The follower stops at its target: at the goal that must be within the arrival tolerance, or the
+  // vehicle would halt between the two tolerances and never arrive.
+  FollowerSettings follower = settings_.follower;
+  follower.goal_tolerance_m =
+      waypoint_index_ == last ? settings_.goal_tolerance_m : settings_.waypoint_tolerance_m;
+  FollowerResult result =
+      follow(cycle.pose, waypoint.position, waypoint_index_ == last, cycle.obstacles, follower, drive_);
   const double squeeze_m = std::max(settings_.pushed_object.guard_clearance_m, result.clearance_m / 2.0);
   if (result.status == FollowerStatus::Blocked && squeeze_m < settings_.follower.clearance_m) {
     // Hemmed in at about the clearance (along a wall, every arc dips a little below it; turning swings
     // a corner closer): accept arcs down to half the clearance left, never below the guard's.
-    FollowerSettings squeezed = settings_.follower;
+    FollowerSettings squeezed = follower;
     squeezed.clearance_m = squeeze_m;
     FollowerResult retry =
         follow(cycle.pose, waypoint.position, waypoint_index_ == last, cycle.obstacles, squeezed, drive_);

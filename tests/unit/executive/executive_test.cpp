@@ -134,6 +134,23 @@ TEST_F(ExecutiveTest, FollowsPathThenArrives)
   EXPECT_NEAR(pose_.x, 3.0, settings_.goal_tolerance_m);
 }
 
+TEST_F(ExecutiveTest, StoppingBetweenTheWaypointAndGoalTolerancesIsNotArrival)
+{
+  // Closer to the goal than an intermediate waypoint needs, farther than arrival needs: drive on.
+  ASSERT_GT(settings_.waypoint_tolerance_m, settings_.goal_tolerance_m);
+  settings_.follower.goal_tolerance_m = settings_.waypoint_tolerance_m;  // as loadExecutiveSettings sets it
+  Executive executive(settings_, vehicle_);
+  pose_ = Pose2{3.0 - 0.5 * (settings_.waypoint_tolerance_m + settings_.goal_tolerance_m), 0.0, 0.0};
+  Output output;
+  for (int cycle = 0; cycle < 500 && output.status.mode != Mode::Arrived; ++cycle) {
+    now_us_ += kCycleUs;
+    output = executive.step(now_us_, freshInputs(now_us_, straightPath()));
+    pose_ = testing::drive(pose_, output.command, kCycleUs * 1e-6);
+  }
+  EXPECT_EQ(output.status.mode, Mode::Arrived) << output.status.reason;
+  EXPECT_LE(std::abs(pose_.x - 3.0), settings_.goal_tolerance_m);
+}
+
 TEST_F(ExecutiveTest, AccelerationIsLimited)
 {
   run(1, straightPath());
