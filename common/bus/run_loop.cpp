@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <stdexcept>
 
+#include "common/signals.hpp"
 #include "common/time.hpp"
 
 namespace ifar::bus {
@@ -79,6 +80,7 @@ RunLoop::RunLoop(const std::string& url, std::shared_ptr<spdlog::logger> logger)
 bool RunLoop::blockTerminationSignals()
 {
   const sigset_t signals = terminationSignals();
+  common::restoreDefaultActions(signals);
   return pthread_sigmask(SIG_BLOCK, &signals, nullptr) == 0;
 }
 

@@ -13,6 +13,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "common/signals.hpp"
 #include "common/time.hpp"
 
 namespace ifar::launch {
@@ -66,6 +67,7 @@ Supervisor::Supervisor(LaunchSpec spec, std::string program_directory, std::ostr
   }
   name_width_ = std::max<std::size_t>(name_width_, 6);
   const sigset_t signals = handledSignals();
+  common::restoreDefaultActions(signals);
   sigprocmask(SIG_BLOCK, &signals, nullptr);
   signal_fd_ = signalfd(-1, &signals, SFD_NONBLOCK | SFD_CLOEXEC);
   if (signal_fd_ < 0) {
@@ -120,6 +122,7 @@ void Supervisor::start(Child& child)
     // the pipe, then the program.
     setpgid(0, 0);
     const sigset_t signals = handledSignals();
+    common::restoreDefaultActions(signals);
     sigprocmask(SIG_UNBLOCK, &signals, nullptr);
     dup2(pipe_fds[1], STDOUT_FILENO);
     dup2(pipe_fds[1], STDERR_FILENO);

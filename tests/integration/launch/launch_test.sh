@@ -18,8 +18,9 @@ processes:
   - name: stubborn
     command: [bash, -c, 'trap "" INT; echo ignoring INT; while true; do sleep 0.1; done']
 YAML
+# Started with SIGINT ignored, as a shell starts background jobs: the children must still get it.
 status=0
-ifar launch "$work/respawn.yaml" --duration 1.5 --no-colour > "$work/out" 2>&1 || status=$?
+(trap '' INT; exec ifar launch "$work/respawn.yaml" --duration 1.5 --no-colour) > "$work/out" 2>&1 || status=$?
 [ $status = 0 ] || fail "respawn launch exited $status"
 grep -q '^ticker   | tick 1$' "$work/out" || fail "ticker output is not prefixed"
 grep -q '^crasher  | crashing$' "$work/out" || fail "crasher output is not prefixed"
