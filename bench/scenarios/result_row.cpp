@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "common/json_text.hpp"
+
 namespace ifar::scenarios {
 namespace {
 
@@ -15,39 +17,6 @@ std::string number(double value)
   char text[64];
   std::snprintf(text, sizeof(text), "%.6g", value);
   return text;
-}
-
-std::string quoted(const std::string& text)
-{
-  std::string out = "\"";
-  for (const char character : text) {
-    switch (character) {
-      case '"':
-        out += "\\\"";
-        break;
-      case '\\':
-        out += "\\\\";
-        break;
-      case '\n':
-        out += "\\n";
-        break;
-      case '\r':
-        out += "\\r";
-        break;
-      case '\t':
-        out += "\\t";
-        break;
-      default:
-        if (static_cast<unsigned char>(character) < 0x20) {
-          char escaped[8];
-          std::snprintf(escaped, sizeof(escaped), "\\u%04x", static_cast<unsigned>(character));
-          out += escaped;
-        } else {
-          out += character;
-        }
-    }
-  }
-  return out + "\"";
 }
 
 }  // namespace
@@ -63,17 +32,17 @@ double successWeightedByPathLength(bool success, double optimal, double length)
 std::string toJsonLine(const ResultRow& row)
 {
   std::string line = "{";
-  line += "\"table\": " + quoted(row.table);
-  line += ", \"planner\": " + quoted(row.planner);
-  line += ", \"kind\": " + quoted(row.kind);
-  line += ", \"world\": " + quoted(row.world);
-  line += ", \"task\": " + quoted(row.task);
+  line += "\"table\": " + common::jsonString(row.table);
+  line += ", \"planner\": " + common::jsonString(row.planner);
+  line += ", \"kind\": " + common::jsonString(row.kind);
+  line += ", \"world\": " + common::jsonString(row.world);
+  line += ", \"task\": " + common::jsonString(row.task);
   line += std::string(", \"success\": ") + (row.success ? "true" : "false");
   line += ", \"length\": " + number(row.length);
   line += ", \"optimal\": " + number(row.optimal);
   line += ", \"ms\": " + number(row.ms);
-  line += ", \"status\": " + quoted(row.status);
-  line += ", \"reason\": " + quoted(row.reason);
+  line += ", \"status\": " + common::jsonString(row.status);
+  line += ", \"reason\": " + common::jsonString(row.reason);
   line += ", \"graph_vertices\": " + number(row.graph_vertices);
   if (row.table == "system") {
     line += ", \"sim_time_s\": " + number(row.sim_time_s);

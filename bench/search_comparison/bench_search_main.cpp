@@ -20,6 +20,7 @@
 #include "bench/search_comparison/query_set.hpp"
 #include "bench/search_comparison/world_raster.hpp"
 #include "common/grid_map/readers.hpp"
+#include "common/json_text.hpp"
 #include "planner/graph/prior_map.hpp"
 #include "planner/graph/search.hpp"
 #include "sim/generators/generators.hpp"
@@ -51,18 +52,6 @@ std::string number(double value)
   char text[64];
   std::snprintf(text, sizeof(text), "%.6f", value);
   return text;
-}
-
-std::string jsonString(const std::string& text)
-{
-  std::string quoted = "\"";
-  for (const char character : text) {
-    if (character == '"' || character == '\\') {
-      quoted += '\\';
-    }
-    quoted += character;
-  }
-  return quoted + "\"";
 }
 
 std::string baseName(const std::string& path)
@@ -316,14 +305,15 @@ int main(int argc, char** argv)
       }
       planner_error = planner_error || row.status == "error";
       if (json) {
-        std::cout << "{\"planner\": " << jsonString(row.planner) << ", \"world\": " << jsonString(world_name)
-                  << ", \"task\": " << jsonString(row.task)
+        std::cout << "{\"planner\": " << ifar::common::jsonString(row.planner)
+                  << ", \"world\": " << ifar::common::jsonString(world_name)
+                  << ", \"task\": " << ifar::common::jsonString(row.task)
                   << ", \"success\": " << (row.success ? "true" : "false")
                   << ", \"length\": " << number(row.length) << ", \"optimal\": " << number(row.optimal)
                   << ", \"ms\": " << number(row.milliseconds)
                   << ", \"wall_ms\": " << number(row.wall_milliseconds)
-                  << ", \"status\": " << jsonString(row.status) << ", \"reason\": " << jsonString(row.reason)
-                  << "}\n";
+                  << ", \"status\": " << ifar::common::jsonString(row.status)
+                  << ", \"reason\": " << ifar::common::jsonString(row.reason) << "}\n";
       } else {
         std::printf("%-6s %-10s %-7s length %10s optimal %10s %10.3f ms %s\n", row.task.c_str(),
                     row.planner.c_str(), row.success ? "ok" : row.status.c_str(), number(row.length).c_str(),

@@ -12,7 +12,4 @@ namespace ifar::runner {
 /// One JSON object on one line (no trailing newline); the trajectory is left out.
 std::string summaryJson(const RunSummary& summary);
 
-/// `text` as a JSON string literal, quotes included (control characters escaped).
-std::string jsonString(const std::string& text);
-
 }  // namespace ifar::runner

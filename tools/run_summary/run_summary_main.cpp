@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 #include <lcm/lcm-cpp.hpp>
 
+#include "common/json_text.hpp"
 #include "ifar/affordance_t.hpp"
 #include "ifar/exec_status_t.hpp"
 #include "ifar/path_t.hpp"
@@ -43,18 +44,6 @@ template <typename Message>
 bool decode(const lcm::LogEvent& event, Message& message)
 {
   return message.decode(event.data, 0, static_cast<int>(event.datalen)) == static_cast<int>(event.datalen);
-}
-
-std::string jsonEscape(const std::string& text)
-{
-  std::string out;
-  for (const char character : text) {
-    if (character == '"' || character == '\\') {
-      out += '\\';
-    }
-    out += (static_cast<unsigned char>(character) < 0x20) ? ' ' : character;
-  }
-  return out;
 }
 
 }  // namespace
@@ -131,10 +120,10 @@ int main(int argc, char** argv)
     std::printf(
         "{\"arrived\": %s, \"distance_m\": %.3f, \"time_s\": %.2f, \"remaining_m\": %.3f, \"final_x\": %.3f, "
         "\"final_y\": %.3f, \"pushes\": %d, \"replans\": %d, \"affordance_updates\": %d, \"paths\": %d, "
-        "\"source\": \"%s\", \"last_reason\": \"%s\", \"log\": \"%s\"}\n",
+        "\"source\": \"%s\", \"last_reason\": %s, \"log\": %s}\n",
         arrived ? "true" : "false", track.distance_m, seconds, remaining, track.x, track.y, pushes, replans,
         affordance_updates, paths, truth.has_position ? "SIM_GROUND_TRUTH" : "POSE",
-        jsonEscape(reason).c_str(), jsonEscape(path).c_str());
+        ifar::common::jsonString(reason).c_str(), ifar::common::jsonString(path).c_str());
   } else {
     std::printf("arrived:            %s (%.2f m from the goal (%.2f, %.2f))\n", arrived ? "yes" : "no",
                 remaining, goal_x, goal_y);
