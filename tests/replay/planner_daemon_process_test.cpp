@@ -18,8 +18,8 @@
 #include "ifar/path_t.hpp"
 #include "ifar/planner_status_t.hpp"
 #include "sim/simulator/builtin_worlds.hpp"
-#include "tests/replay/child_process.hpp"
 #include "tests/replay/feed_publisher.hpp"
+#include "tests/support/child_process.hpp"
 #include "tests/unit/planner_core/simulated_feed.hpp"
 
 namespace ifar::planner {
@@ -54,9 +54,9 @@ TEST(PlannerDaemonProcess, PublishesPathGraphAndStatusForSimulatedInput)
 
   const std::string source = IFAR_SOURCE_DIR;
   ASSERT_EQ(chdir(source.c_str()), 0);  // the default config paths are relative to the repository
-  replay_testing::ChildProcess daemon({std::string(IFAR_BINARY_DIR) + "/bin/ifar-planner", "--config",
-                                       "config/planner.yaml", "--lcm-url", kLcmUrl, "--log-dir", "",
-                                       "--log-level", "warn"});
+  test_support::ChildProcess daemon({std::string(IFAR_BINARY_DIR) + "/bin/ifar-planner", "--config",
+                                     "config/planner.yaml", "--lcm-url", kLcmUrl, "--log-dir", "",
+                                     "--log-level", "warn"});
   ASSERT_TRUE(daemon.started());
 
   // Ready when the idle status arrives (2.5 Hz while waiting).

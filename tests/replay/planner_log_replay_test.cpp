@@ -39,8 +39,8 @@
 #include "planner/daemon/daemon_settings.hpp"
 #include "planner/daemon/planner_messages.hpp"
 #include "sim/simulator/builtin_worlds.hpp"
-#include "tests/replay/child_process.hpp"
 #include "tests/replay/feed_publisher.hpp"
+#include "tests/support/child_process.hpp"
 #include "tests/unit/planner_core/simulated_feed.hpp"
 
 namespace ifar::planner {
@@ -254,9 +254,9 @@ std::string recordLiveRun(const std::filesystem::path& directory, const std::str
   if (!bus.good()) {
     return "LCM cannot start on " + std::string(kLcmUrl);
   }
-  replay_testing::ChildProcess logger(
+  test_support::ChildProcess logger(
       {kLogger, std::string("--lcm-url=") + kLcmUrl, "--flush-interval=50", "-f", log_path},
-      (directory / "logger.out").string());
+      test_support::ChildOptions{(directory / "logger.out").string(), "", {}});
   if (!logger.started()) {
     return "lcm-logger did not start";
   }
@@ -278,10 +278,10 @@ std::string recordLiveRun(const std::filesystem::path& directory, const std::str
   bus.subscribe("GLOBAL_PATH", &LiveAnswers::onPath, &answers);
   // config/planner.yaml names config/vehicle.yaml relative to the working directory, as on the vehicle.
   const std::string source = IFAR_SOURCE_DIR;
-  replay_testing::ChildProcess daemon(
+  test_support::ChildProcess daemon(
       {std::string(IFAR_BINARY_DIR) + "/bin/ifar-planner", "--config", "config/planner.yaml", "--lcm-url",
        kLcmUrl, "--log-dir", "", "--log-level", "warn"},
-      (directory / "planner.out").string(), source);
+      test_support::ChildOptions{(directory / "planner.out").string(), source, {}});
   if (!daemon.started()) {
     return "ifar-planner did not start";
   }

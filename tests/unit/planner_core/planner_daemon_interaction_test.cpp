@@ -20,8 +20,8 @@
 #include "ifar/path_t.hpp"
 #include "ifar/planner_status_t.hpp"
 #include "sim/world/world_file.hpp"
-#include "tests/replay/child_process.hpp"
 #include "tests/replay/feed_publisher.hpp"
+#include "tests/support/child_process.hpp"
 #include "tests/unit/planner_core/simulated_feed.hpp"
 
 namespace ifar::planner {
@@ -61,9 +61,9 @@ TEST(PlannerDaemonInteraction, PushPathResendAndAffordance)
   bus.subscribe("PLANNER_STATUS", &Received::onStatus, &received);
 
   ASSERT_EQ(chdir(IFAR_SOURCE_DIR), 0);  // the default config paths are relative to the repository
-  replay_testing::ChildProcess daemon({std::string(IFAR_BINARY_DIR) + "/bin/ifar-planner", "--config",
-                                       "config/planner.yaml", "--lcm-url", kLcmUrl, "--log-dir", "",
-                                       "--log-level", "error"});
+  test_support::ChildProcess daemon({std::string(IFAR_BINARY_DIR) + "/bin/ifar-planner", "--config",
+                                     "config/planner.yaml", "--lcm-url", kLcmUrl, "--log-dir", "",
+                                     "--log-level", "error"});
   ASSERT_TRUE(daemon.started());
   const auto ready = std::chrono::steady_clock::now() + std::chrono::seconds(5);
   while (!received.status && std::chrono::steady_clock::now() < ready) {
@@ -90,7 +90,7 @@ TEST(PlannerDaemonInteraction, PushPathResendAndAffordance)
   EXPECT_GT(pushed.push_plans.front().num_controls, 0);
 
   // Input stopped: once the last revolution is through, no graph updates, yet the same path keeps coming
-  // with fresh stamps at about 10 Hz.
+  // with fresh stamps at about daemon.path_resend_hz (20 Hz in config/planner.yaml).
   const auto settle = std::chrono::steady_clock::now() + std::chrono::milliseconds(800);
   while (std::chrono::steady_clock::now() < settle) {
     bus.handleTimeout(20);
@@ -100,13 +100,13 @@ TEST(PlannerDaemonInteraction, PushPathResendAndAffordance)
   while (std::chrono::steady_clock::now() < quiet_start + std::chrono::milliseconds(1000)) {
     bus.handleTimeout(20);
   }
-  ASSERT_GE(received.paths.size(), 6U);
-  EXPECT_LE(received.paths.size(), 14U);
+  ASSERT_GE(received.paths.size(), 12U);
+  EXPECT_LE(received.paths.size(), 26U);
   for (std::size_t index = 1; index < received.paths.size(); ++index) {
     EXPECT_EQ(received.paths[index].sequence, received.paths.front().sequence);
     EXPECT_EQ(received.paths[index].num_push_plans, 1);
     EXPECT_GT(received.paths[index].utime, received.paths[index - 1].utime);
-    EXPECT_LT(received.paths[index].utime - received.paths[index - 1].utime, 200'000);
+    EXPECT_LT(received.paths[index].utime - received.paths[index - 1].utime, 100'000);
   }
 
   // Bad estimates are counted, a good one replans at once.
