@@ -23,7 +23,7 @@ struct PlannerChannels {
 
 struct DaemonSettings {
   double rate_hz = 2.5;             // graph updates and publications per second (the paper's 2.5 Hz)
-  double path_resend_hz = 10.0;     // the last GLOBAL_PATH is sent again this often (fresh utime)
+  double path_resend_hz = 20.0;     // the last GLOBAL_PATH is sent again this often (fresh utime)
   InputSettings input;              // stale and future limits for packets and poses
   double detector_max_age_s = 1.0;  // detector outlines older than this fall back to reflectivity
   double arrival_radius_m = 0.5;    // the vehicle this close to the goal has arrived

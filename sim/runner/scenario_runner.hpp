@@ -33,7 +33,7 @@ struct RunRequest {
   executive::ExecutiveSettings executive;
   executive::ObstacleSettings obstacles;
   double planner_rate_hz = 2.5;  // graph updates per simulated second
-  double path_resend_hz = 10.0;  // the last path reaches the executive again this often (as GLOBAL_PATH does)
+  double path_resend_hz = 20.0;  // the last path reaches the executive again this often (as GLOBAL_PATH does)
   double control_rate_hz = 50.0;
   double max_sim_time_s = 300.0;
 };

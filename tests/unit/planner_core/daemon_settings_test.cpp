@@ -24,7 +24,7 @@ TEST(PlannerDaemonConfig, ShippedFileLoadsAndPassesRejectUnknownKeys)
   EXPECT_EQ(config.daemon.vehicle_config, "config/vehicle.yaml");
   EXPECT_DOUBLE_EQ(config.planner.perception.cell_size_m, 0.15);
   EXPECT_EQ(config.planner.graph.votes, 10);
-  EXPECT_DOUBLE_EQ(config.daemon.path_resend_hz, 10.0);
+  EXPECT_DOUBLE_EQ(config.daemon.path_resend_hz, 20.0);
   EXPECT_TRUE(config.planner.interaction_enabled);
   EXPECT_DOUBLE_EQ(config.planner.interaction.loop.frame_budget_ms, 50.0);
   EXPECT_DOUBLE_EQ(config.planner.interaction.loop.default_physics.mass_kg, 20.0);
