@@ -119,8 +119,8 @@ TEST(RunnerScenario, HeavyBoxIsFoundUnpushableAndAvoided)
 {
   // The demo room with the doorway box at 2000 kg: it looks the same to the planner, so it is planned
   // as pushable; the push stalls, the executive reports it unpushable and the vehicle goes east.
-  const RunSummary summary = runAndLog(requestFor(
-      worldFile(kSourceDir + "/tests/unit/runner/worlds/demo_room_heavy_box.yaml"), kDemoGoal, 240.0));
+  const RunSummary summary =
+      runAndLog(requestFor(worldFile(kSourceDir + "/config/worlds/demo_room_heavy.yaml"), kDemoGoal, 240.0));
   EXPECT_TRUE(summary.arrived) << summary.reason;
   EXPECT_GE(summary.affordance_updates, 1);
   EXPECT_GE(summary.replans, 1);
