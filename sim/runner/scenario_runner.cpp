@@ -219,10 +219,11 @@ void Scenario::report(const sim::StepOutput& output, const executive::Output& co
   }
   const geometry::Pose2& pose = output.vehicle.pose;
   progress_(fmt::format(
-      "t={:.1f}s pos=({:.2f}, {:.2f}) heading={:.0f}deg mode={} goal={:.2f}m pushes={} "
-      "replans={} affordance_updates={}: {}",
+      "t={:.1f}s pos=({:.2f}, {:.2f}) heading={:.0f}deg mode={} target=({:.2f}, {:.2f}) goal={:.2f}m "
+      "pushes={} replans={} affordance_updates={}: {}",
       static_cast<double>(output.time_ns) * 1e-9, pose.x, pose.y, pose.heading * kDegreesPerRadian,
-      executive::modeName(command.status.mode), (pose.position() - request_.goal).norm(),
+      executive::modeName(command.status.mode), command.status.target.x(), command.status.target.y(),
+      (pose.position() - request_.goal).norm(),
       command.status.pushes, command.status.replans, summary_.affordance_updates, command.status.reason));
 }
 

@@ -185,7 +185,7 @@ TEST(RunnerScenario, ProgressOncePerSimulatedSecondAndTimeout)
   ASSERT_EQ(lines.size(), 3U);
   EXPECT_EQ(lines[0].rfind("t=1.0s pos=(", 0), 0U) << lines[0];
   EXPECT_EQ(lines[2].rfind("t=3.0s pos=(", 0), 0U) << lines[2];
-  EXPECT_NE(lines[2].find("mode=follow"), std::string::npos) << lines[2];
+  EXPECT_NE(lines[2].find("mode=follow target=("), std::string::npos) << lines[2];
   // One pose per control cycle (50 Hz): at 0.02 s, 0.04 s, ... 3.0 s.
   EXPECT_EQ(summary.trajectory.size(), 150U);
   EXPECT_GT(summary.distance_m, 0.5);
