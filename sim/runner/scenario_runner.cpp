@@ -223,8 +223,8 @@ void Scenario::report(const sim::StepOutput& output, const executive::Output& co
       "pushes={} replans={} affordance_updates={}: {}",
       static_cast<double>(output.time_ns) * 1e-9, pose.x, pose.y, pose.heading * kDegreesPerRadian,
       executive::modeName(command.status.mode), command.status.target.x(), command.status.target.y(),
-      (pose.position() - request_.goal).norm(),
-      command.status.pushes, command.status.replans, summary_.affordance_updates, command.status.reason));
+      (pose.position() - request_.goal).norm(), command.status.pushes, command.status.replans,
+      summary_.affordance_updates, command.status.reason));
 }
 
 bool Scenario::control(const sim::StepOutput& output)
