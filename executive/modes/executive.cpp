@@ -7,6 +7,7 @@
 
 #include "common/geometry/segment.hpp"
 #include "executive/follower/arc.hpp"
+#include "executive/kinematics/angle.hpp"
 
 namespace ifar::executive {
 
@@ -268,6 +269,24 @@ void Executive::stepFollow(Cycle& cycle)
   }
   cycle.desired = result.command;
   cycle.reason = fmt::format("waypoint {} of {}: {}", waypoint_index_, last, result.reason);
+  // Following that gets nowhere (the arcs dither left and right, wedged at a door or beside a wall with
+  // the target behind) backs off a little and tries again from there.
+  const bool moved = (cycle.pose.position() - stall_anchor_.position()).norm() > 0.1 ||
+                     std::abs(wrapToPi(cycle.pose.heading - stall_anchor_.heading)) > 0.3;
+  const bool resumed = cycle.now_us - last_follow_us_ > 200'000;  // after a stop or another task
+  last_follow_us_ = cycle.now_us;
+  const bool trying = result.status == FollowerStatus::Moving || result.status == FollowerStatus::Blocked;
+  if (stall_anchor_us_ < 0 || resumed || moved || !trying) {
+    stall_anchor_ = cycle.pose;
+    stall_anchor_us_ = cycle.now_us;
+  } else if (static_cast<double>(cycle.now_us - stall_anchor_us_) * 1e-6 > settings_.stall_timeout_s) {
+    task_ = Task::BackOff;
+    backoff_after_stall_ = true;
+    backoff_start_.reset();
+    stall_anchor_us_ = -1;
+    stepBackOff(cycle);
+    return;
+  }
   if (result.status == FollowerStatus::Arrived && waypoint_index_ < last) {
     ++waypoint_index_;
   }
@@ -450,17 +469,33 @@ void Executive::guardCommand(Cycle& cycle, common::Span<const geometry::Point> o
 
 void Executive::stepBackOff(Cycle& cycle)
 {
-  cycle.target_object_id = active_plan_.object_id;
+  if (!backoff_after_stall_) {
+    cycle.target_object_id = active_plan_.object_id;
+  }
   if (!backoff_start_) {
     backoff_start_ = cycle.pose.position();
   }
   const double travelled = (cycle.pose.position() - *backoff_start_).norm();
   if (travelled >= settings_.pusher.release_m) {
     task_ = Task::Follow;
+    backoff_after_stall_ = false;
+    stall_anchor_us_ = -1;
     stepFollow(cycle);
     return;
   }
   cycle.desired = {-settings_.pusher.reverse_speed, 0.0};
+  if (backoff_after_stall_) {
+    cycle.reason = fmt::format("stalled for {:.1f} s: backing up before following again: {:.2f} of {:.2f} m",
+                               settings_.stall_timeout_s, travelled, settings_.pusher.release_m);
+    guardCommand(cycle, cycle.obstacles);
+    if (cycle.desired.isZero()) {
+      // Something behind too: follow again from here rather than wait.
+      task_ = Task::Follow;
+      backoff_after_stall_ = false;
+      stall_anchor_us_ = -1;
+    }
+    return;
+  }
   cycle.reason = fmt::format("backing away from object {} before following the new path: {:.2f} of {:.2f} m",
                              active_plan_.object_id, travelled, settings_.pusher.release_m);
   guardCommand(cycle, objectFreeObstacles(cycle));

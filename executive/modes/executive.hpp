@@ -61,7 +61,8 @@ class Executive {
  private:
   /// The task the executive pursues; Stop and EStop are overrides on top of it.
   /// BackOff: reversing away from an object whose push was given up, before following a new path
-  /// (the follower only plans forward, so with the object on the bumper it would be boxed in).
+  /// (the follower only plans forward, so with the object on the bumper it would be boxed in), or after
+  /// following got nowhere for stall_timeout_s (wedged in a door, dithering beside a wall).
   enum class Task { Idle, Follow, Approach, Push, ReplanWait, BackOff, Halted, Arrived };
 
   struct Cycle;  // per-step context
@@ -109,6 +110,10 @@ class Executive {
   TactileMonitor tactile_;
   std::int64_t replan_requested_us_ = 0;
   std::optional<geometry::Point> backoff_start_;  // where BackOff began reversing (set on its first step)
+  bool backoff_after_stall_ = false;              // BackOff because following got nowhere, not after a push
+  geometry::Pose2 stall_anchor_;                  // where following last moved from
+  std::int64_t stall_anchor_us_ = -1;             // and when (-1: not following)
+  std::int64_t last_follow_us_ = 0;               // the last cycle that followed
 
   VelocityCommand last_command_;
   std::int64_t last_step_us_ = 0;

@@ -75,6 +75,7 @@ ExecutiveSettings loadExecutiveSettings(const common::ConfigNode& node)
   settings.goal_tolerance_m = positive(node, "goal_tolerance_m");
   settings.push_switch_radius_m = positive(node, "push_switch_radius_m");
   settings.replan_timeout_s = positive(node, "replan_timeout_s");
+  settings.stall_timeout_s = positive(node, "stall_timeout_s");
 
   settings.reference_to_bumper_m = positive(node, "footprint.reference_to_bumper_m");
 

@@ -1,7 +1,9 @@
 #include "executive/modes/executive.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -149,6 +151,46 @@ TEST_F(ExecutiveTest, StoppingBetweenTheWaypointAndGoalTolerancesIsNotArrival)
   }
   EXPECT_EQ(output.status.mode, Mode::Arrived) << output.status.reason;
   EXPECT_LE(std::abs(pose_.x - 3.0), settings_.goal_tolerance_m);
+}
+
+TEST_F(ExecutiveTest, FollowingThatGetsNowhereBacksOffAndTriesAgain)
+{
+  // Facing +y with a wall 5 cm off the right side and the goal 2.3 m behind: turning round would sweep
+  // the wall and every forward arc leads away, so the follower only dithers. After stall_timeout_s the
+  // executive backs up pusher.release_m and follows again.
+  std::vector<Point> wall;
+  for (double y = -4.0; y <= 4.0; y += 0.05) {
+    wall.emplace_back(0.40, y);
+  }
+  Path path = straightPath();
+  path.waypoints = {waypoint(0.0, 0.0), waypoint(0.0, -2.3)};
+  pose_ = Pose2{0.0, 0.0, 0.5 * M_PI};
+  bool backed_up = false;
+  double first_backoff_s = -1.0;
+  std::string last_reason;
+  double stalled_y = 0.0;  // where the first back-off began
+  double lowest_y = 0.0;
+  for (int cycle = 0; cycle < 1500; ++cycle) {
+    now_us_ += kCycleUs;
+    Inputs inputs = freshInputs(now_us_, path);
+    inputs.obstacles = Stamped<std::vector<Point>>{wall, now_us_};
+    const Output output = executive_.step(now_us_, inputs);
+    last_reason = std::to_string(static_cast<int>(output.status.mode)) + " " + output.status.reason;
+    if (output.status.reason.find("stalled for") != std::string::npos) {
+      backed_up = true;
+      ASSERT_LT(output.command.linear, 1e-9) << output.status.reason;
+      if (first_backoff_s < 0.0) {
+        first_backoff_s = cycle * kCycleUs * 1e-6;
+        stalled_y = pose_.y;
+      }
+    }
+    pose_ = testing::drive(pose_, output.command, kCycleUs * 1e-6);
+    lowest_y = std::min(lowest_y, pose_.y);
+  }
+  ASSERT_TRUE(backed_up) << "ended at (" << pose_.x << ", " << pose_.y << ", " << pose_.heading
+                         << "): " << last_reason;
+  EXPECT_GE(first_backoff_s, settings_.stall_timeout_s);
+  EXPECT_LT(lowest_y, stalled_y - settings_.pusher.release_m + 0.05);  // backed up the whole distance
 }
 
 TEST_F(ExecutiveTest, AccelerationIsLimited)
