@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -15,6 +16,7 @@ namespace ifar::executive {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+constexpr double kDescentRadius = 0.5;  ///< metres: where the cost-to-go is sampled for the way to face
 
 /// Smallest distance from the footprint at `pose` to a point near it (capped at `search_radius`).
 double clearanceAt(const geometry::Pose2& pose, const ObstacleGrid& grid, const Footprint& footprint,
@@ -90,8 +92,14 @@ FollowerResult follow(const geometry::Pose2& pose, const geometry::Point& target
   const double window =
       std::clamp(start_distance + 1.0, reach + 2.0 * settings.footprint.circumradius(),
                  std::max(settings.navigation_range_m, reach + 2.0 * settings.footprint.circumradius()));
-  const NavigationField field(obstacles, pose.position(), window, settings.navigation_cell_m,
-                              settings.footprint.half_width_m + settings.clearance_m, target);
+  NavigationFieldShape shape;
+  shape.half_size_m = window;
+  shape.cell_size_m = settings.navigation_cell_m;
+  shape.blocked_m = settings.footprint.half_width_m;
+  shape.comfort_m = settings.footprint.half_width_m + settings.clearance_cap_m;
+  shape.proximity_weight = settings.navigation_proximity_weight;
+  shape.open_around_target = stop_at_target;
+  const NavigationField field(obstacles, pose.position(), target, shape);
   const double start_cost = field.value(pose.position());
 
   // Already closer than the clearance (after a push, or a point that appeared close): accept arcs that do
@@ -140,7 +148,14 @@ FollowerResult follow(const geometry::Pose2& pose, const geometry::Point& target
         gain = std::isfinite(end_cost) ? start_cost - end_cost : gain - 1.0;
       }
       const double progress = gain / std::max(reach, 1e-3);
-      const double facing = reached ? 1.0 : 1.0 - headingError(end, target) / kPi;
+      // Facing the way the cost-to-go falls (through the door, round the box), not the straight line to
+      // the target: turning on the spot gains no progress, so this is what tells the good turn apart.
+      double facing = 1.0;
+      if (!reached) {
+        const std::optional<double> descent = field.descentDirection(end.position(), kDescentRadius);
+        facing =
+            1.0 - (descent ? std::abs(wrapToPi(*descent - end.heading)) : headingError(end, target)) / kPi;
+      }
       const double score = settings.progress_weight * progress + settings.heading_weight * facing +
                            settings.clearance_weight * std::min(arc_clearance, settings.clearance_cap_m) /
                                std::max(settings.clearance_cap_m, 1e-3);
@@ -148,6 +163,7 @@ FollowerResult follow(const geometry::Pose2& pose, const geometry::Point& target
         best_score = score;
         result.command = arc;
         result.clearance_m = arc_clearance;
+        result.progress_m = gain;
       }
     }
   }

@@ -2,8 +2,9 @@
 // The collision-free local planner used between waypoints (paper section VII.B, "CollisionFreePlanner"):
 // samples a fan of constant (v, omega) arcs over a short horizon, drops every arc whose footprint comes
 // closer than the clearance to an obstacle point, and picks the free arc that best lowers the cost-to-go
-// to the target (a navigation function over a local grid, so obstacles are driven around), faces the
-// target and keeps clear. A pure function: same inputs, same command.
+// to the target (a navigation function over a local grid, so obstacles are driven around and doors are
+// taken through their middle), faces the way that cost-to-go falls and keeps clear. A pure function: same
+// inputs, same command.
 
 #include <string>
 
@@ -24,14 +25,17 @@ struct FollowerSettings {
   double clearance_m = 0.15;     ///< margin kept between the footprint and obstacle points
   double clearance_cap_m = 0.5;  ///< clearance beyond this earns no more score
   double progress_weight = 1.0;
-  double heading_weight = 0.1;
-  double clearance_weight = 0.3;
+  double heading_weight = 0.2;
+  double clearance_weight = 0.1;
   double goal_tolerance_m = 0.3;      ///< the target counts as reached within this distance
   double slow_down_distance_m = 1.5;  ///< approaching a target to stop at, top speed shrinks within this
   double max_linear_velocity = 0.8;   ///< m/s; the vehicle's own limit applies too
   double cell_size_m = 0.25;          ///< obstacle bucket size
   double navigation_range_m = 6.0;    ///< half-size limit of the cost-to-go window around the vehicle
   double navigation_cell_m = 0.2;     ///< cost-to-go cell size
+  /// Cost-to-go cells within half width + clearance_cap_m of an obstacle cost up to (1 + this) x their
+  /// length, so the vehicle keeps to the middle of doors and corridors rather than the wall-hugging path.
+  double navigation_proximity_weight = 3.0;
   Footprint footprint;
 };
 
@@ -44,6 +48,7 @@ struct FollowerResult {
   FollowerStatus status = FollowerStatus::Blocked;
   std::string reason;
   double clearance_m = 0.0;  ///< of the chosen arc (or of the current pose when not moving)
+  double progress_m = 0.0;   ///< how much the chosen arc lowers the cost-to-go; 0 when turning on the spot
   int free_arcs = 0;
   int arcs = 0;
 };

@@ -6,16 +6,18 @@
 #include <queue>
 #include <utility>
 
+#include "executive/kinematics/angle.hpp"
+
 namespace ifar::executive {
 
 NavigationField::NavigationField(common::Span<const geometry::Point> obstacles, const geometry::Point& centre,
-                                 double half_size_m, double cell_size_m, double inflation_m,
-                                 const geometry::Point& target)
-    : origin_(centre - geometry::Point(half_size_m, half_size_m)),
-      cell_size_(cell_size_m),
-      cells_per_side_(std::max(2, static_cast<int>(std::ceil(2.0 * half_size_m / cell_size_m))))
+                                 const geometry::Point& target, const NavigationFieldShape& shape)
+    : origin_(centre - geometry::Point(shape.half_size_m, shape.half_size_m)),
+      cell_size_(shape.cell_size_m),
+      cells_per_side_(std::max(2, static_cast<int>(std::ceil(2.0 * shape.half_size_m / shape.cell_size_m))))
 {
   const int side = cells_per_side_;
+  const std::size_t cells = static_cast<std::size_t>(side) * static_cast<std::size_t>(side);
   const auto index = [side](int column, int row) { return static_cast<std::size_t>(row * side + column); };
   // Plain doubles here: GCC 12 warns about Eigen temporaries in these loops (false positives).
   const double origin_x = origin_.x();
@@ -24,8 +26,12 @@ NavigationField::NavigationField(common::Span<const geometry::Point> obstacles, 
   const auto distanceFromCentre = [origin_x, origin_y, cell](int column, int row, double x, double y) {
     return std::hypot(origin_x + (column + 0.5) * cell - x, origin_y + (row + 0.5) * cell - y);
   };
-  std::vector<char> blocked(static_cast<std::size_t>(side) * static_cast<std::size_t>(side), 0);
-  const int reach = static_cast<int>(std::ceil(inflation_m / cell_size_));
+
+  // Distance from each cell centre to the nearest obstacle point, as far as it matters.
+  const double blocked_m = shape.blocked_m;
+  const double comfort_m = std::max(shape.comfort_m, blocked_m);
+  std::vector<double> clearance(cells, comfort_m);
+  const int reach = static_cast<int>(std::ceil(comfort_m / cell));
   for (const geometry::Point& point : obstacles) {
     if (!point.allFinite()) {
       continue;
@@ -39,16 +45,25 @@ NavigationField::NavigationField(common::Span<const geometry::Point> obstacles, 
     const int row = static_cast<int>(std::floor(offset_y));
     for (int r = std::max(0, row - reach); r <= std::min(side - 1, row + reach); ++r) {
       for (int c = std::max(0, column - reach); c <= std::min(side - 1, column + reach); ++c) {
-        if (distanceFromCentre(c, r, point.x(), point.y()) <= inflation_m) {
-          blocked[index(c, r)] = 1;
-        }
+        double& nearest = clearance[index(c, r)];
+        nearest = std::min(nearest, distanceFromCentre(c, r, point.x(), point.y()));
       }
+    }
+  }
+  std::vector<char> blocked(cells, 0);
+  std::vector<double> multiplier(cells, 1.0);
+  const double band = comfort_m - blocked_m;
+  for (std::size_t i = 0; i < cells; ++i) {
+    blocked[i] = clearance[i] < blocked_m ? 1 : 0;
+    if (band > 0.0 && clearance[i] < comfort_m) {
+      const double closeness = std::min(1.0, (comfort_m - clearance[i]) / band);
+      multiplier[i] = 1.0 + shape.proximity_weight * closeness * closeness;
     }
   }
 
   using Entry = std::pair<double, std::size_t>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> open;
-  cost_.assign(blocked.size(), kUnreachable);
+  cost_.assign(cells, kUnreachable);
   const auto seed = [&](int column, int row, double cost) {
     const std::size_t seeded = index(column, row);
     if (!blocked[seeded] && cost < cost_[seeded]) {
@@ -65,14 +80,27 @@ NavigationField::NavigationField(common::Span<const geometry::Point> obstacles, 
   if (target_inside) {
     const int column = static_cast<int>(target_column);
     const int row = static_cast<int>(target_row);
-    for (int r = std::max(0, row - reach); r <= std::min(side - 1, row + reach); ++r) {
-      for (int c = std::max(0, column - reach); c <= std::min(side - 1, column + reach); ++c) {
-        const double distance = distanceFromCentre(c, r, target_x, target_y);
-        if (distance <= inflation_m + cell) {
-          blocked[index(c, r)] = 0;
-          seed(c, r, distance);
+    const double radius = blocked_m + cell;
+    const int around = static_cast<int>(std::ceil(radius / cell));
+    const auto forEachAround = [&](auto&& visit) {
+      for (int r = std::max(0, row - around); r <= std::min(side - 1, row + around); ++r) {
+        for (int c = std::max(0, column - around); c <= std::min(side - 1, column + around); ++c) {
+          const double distance = distanceFromCentre(c, r, target_x, target_y);
+          if (distance <= radius) {
+            visit(c, r, distance);
+          }
         }
       }
+    };
+    if (!shape.open_around_target) {
+      // A waypoint on the inflated boundary the planner's path hugs: reached from the free cells near it.
+      forEachAround([&](int c, int r, double distance) { seed(c, r, distance); });
+    }
+    if (open.empty()) {
+      forEachAround([&](int c, int r, double distance) {
+        blocked[index(c, r)] = 0;
+        seed(c, r, distance);
+      });
     }
   } else {
     for (int i = 0; i < side; ++i) {
@@ -83,7 +111,7 @@ NavigationField::NavigationField(common::Span<const geometry::Point> obstacles, 
     }
   }
 
-  // Dijkstra over 8-connected cells.
+  // Dijkstra over 8-connected cells; a step costs its length times the mean multiplier of its two cells.
   const double diagonal = cell * std::sqrt(2.0);
   while (!open.empty()) {
     const auto [cost, current] = open.top();
@@ -101,7 +129,8 @@ NavigationField::NavigationField(common::Span<const geometry::Point> obstacles, 
           continue;
         }
         const std::size_t next = index(c, r);
-        const double step = (dc != 0 && dr != 0) ? diagonal : cell;
+        const double length = (dc != 0 && dr != 0) ? diagonal : cell;
+        const double step = length * 0.5 * (multiplier[current] + multiplier[next]);
         if (!blocked[next] && cost + step < cost_[next]) {
           cost_[next] = cost + step;
           open.emplace(cost_[next], next);
@@ -140,6 +169,24 @@ double NavigationField::value(const geometry::Point& point) const
   }
   // Next to a blocked cell: the nearest cell's value.
   return cellValue(static_cast<int>(std::lround(offset_x)), static_cast<int>(std::lround(offset_y)));
+}
+
+std::optional<double> NavigationField::descentDirection(const geometry::Point& point, double radius_m,
+                                                        int directions) const
+{
+  std::optional<double> best_direction;
+  double best_value = kUnreachable;
+  const int samples = std::max(4, directions);
+  for (int i = 0; i < samples; ++i) {
+    const double direction = 2.0 * kPi * i / samples;
+    const double sampled =
+        value(point + geometry::Point(radius_m * std::cos(direction), radius_m * std::sin(direction)));
+    if (sampled < best_value) {
+      best_value = sampled;
+      best_direction = direction;
+    }
+  }
+  return best_direction;
 }
 
 }  // namespace ifar::executive

@@ -28,6 +28,9 @@ struct Executive::Cycle {
 
 namespace {
 
+/// Metres of cost-to-go below which a follower arc counts as getting nowhere.
+constexpr double kNoProgressM = 0.01;
+
 bool fresh(std::int64_t now_us, std::int64_t stamp_us, double threshold_s)
 {
   return static_cast<double>(now_us - stamp_us) <= threshold_s * 1e6;
@@ -254,15 +257,20 @@ void Executive::stepFollow(Cycle& cycle)
       waypoint_index_ == last ? settings_.goal_tolerance_m : settings_.waypoint_tolerance_m;
   FollowerResult result =
       follow(cycle.pose, waypoint.position, waypoint_index_ == last, cycle.obstacles, follower, drive_);
-  const double squeeze_m = std::max(settings_.pushed_object.guard_clearance_m, result.clearance_m / 2.0);
-  if (result.status == FollowerStatus::Blocked && squeeze_m < settings_.follower.clearance_m) {
-    // Hemmed in at about the clearance (along a wall, every arc dips a little below it; turning swings
-    // a corner closer): accept arcs down to half the clearance left, never below the guard's.
+  // Hemmed in at about the clearance (along a wall every arc dips a little below it; turning swings a
+  // corner closer), or lined up with a door barely wider than the vehicle plus twice the clearance (only
+  // turning on the spot is left): retry with the clearance lowered to the guard's, and take the retry
+  // when it gets further.
+  const bool stuck = result.status == FollowerStatus::Blocked ||
+                     (result.status == FollowerStatus::Moving && result.progress_m <= kNoProgressM);
+  const double squeeze_m = settings_.pushed_object.guard_clearance_m;
+  if (stuck && squeeze_m < follower.clearance_m) {
     FollowerSettings squeezed = follower;
     squeezed.clearance_m = squeeze_m;
     FollowerResult retry =
         follow(cycle.pose, waypoint.position, waypoint_index_ == last, cycle.obstacles, squeezed, drive_);
-    if (retry.status != FollowerStatus::Blocked) {
+    if (retry.status == FollowerStatus::Moving &&
+        (result.status == FollowerStatus::Blocked || retry.progress_m > result.progress_m + kNoProgressM)) {
       retry.reason += fmt::format(" (squeezing: clearance {:.2f} m)", squeeze_m);
       result = retry;
     }
@@ -282,6 +290,7 @@ void Executive::stepFollow(Cycle& cycle)
   } else if (static_cast<double>(cycle.now_us - stall_anchor_us_) * 1e-6 > settings_.stall_timeout_s) {
     task_ = Task::BackOff;
     backoff_after_stall_ = true;
+    stall_escape_sign_ = 0.0;
     backoff_start_.reset();
     stall_anchor_us_ = -1;
     stepBackOff(cycle);
@@ -467,6 +476,31 @@ void Executive::guardCommand(Cycle& cycle, common::Span<const geometry::Point> o
   }
 }
 
+double Executive::freeStraightDistance(const geometry::Pose2& pose, double sign,
+                                       common::Span<const geometry::Point> obstacles, double limit_m) const
+{
+  const Footprint& footprint = settings_.follower.footprint;
+  const double clearance = settings_.pushed_object.guard_clearance_m;
+  constexpr double kStepM = 0.02;
+  const double reach = footprint.bodyCentre().norm() + footprint.circumradius() + limit_m + clearance;
+  double free_m = limit_m;
+  for (const geometry::Point& point : obstacles) {
+    if ((point - pose.position()).norm() > reach) {
+      continue;
+    }
+    const double distance_now = footprint.distance(pose, point);
+    for (double travel = kStepM; travel < free_m + 1e-9; travel += kStepM) {
+      const geometry::Pose2 moved = integrateArc(pose, sign, 0.0, travel);
+      const double distance = footprint.distance(moved, point);
+      if (distance < clearance && distance < distance_now) {
+        free_m = travel - kStepM;
+        break;
+      }
+    }
+  }
+  return std::max(free_m, 0.0);
+}
+
 void Executive::stepBackOff(Cycle& cycle)
 {
   if (!backoff_after_stall_) {
@@ -479,23 +513,35 @@ void Executive::stepBackOff(Cycle& cycle)
   if (travelled >= settings_.pusher.release_m) {
     task_ = Task::Follow;
     backoff_after_stall_ = false;
+    stall_escape_sign_ = 0.0;
     stall_anchor_us_ = -1;
     stepFollow(cycle);
     return;
   }
-  cycle.desired = {-settings_.pusher.reverse_speed, 0.0};
   if (backoff_after_stall_) {
-    cycle.reason = fmt::format("stalled for {:.1f} s: backing up before following again: {:.2f} of {:.2f} m",
-                               settings_.stall_timeout_s, travelled, settings_.pusher.release_m);
+    // Straight back, or straight ahead when the back is nearer a wall (wedged by a door post while
+    // turning); chosen once, kept until the distance is done.
+    if (stall_escape_sign_ == 0.0) {
+      const double limit = settings_.pusher.release_m;
+      const double back = freeStraightDistance(cycle.pose, -1.0, cycle.obstacles, limit);
+      const double ahead = freeStraightDistance(cycle.pose, 1.0, cycle.obstacles, limit);
+      stall_escape_sign_ = back >= ahead ? -1.0 : 1.0;
+    }
+    cycle.reason = fmt::format(
+        "stalled for {:.1f} s: {} before following again: {:.2f} of {:.2f} m", settings_.stall_timeout_s,
+        stall_escape_sign_ < 0.0 ? "backing up" : "driving ahead", travelled, settings_.pusher.release_m);
+    cycle.desired = {stall_escape_sign_ * settings_.pusher.reverse_speed, 0.0};
     guardCommand(cycle, cycle.obstacles);
     if (cycle.desired.isZero()) {
-      // Something behind too: follow again from here rather than wait.
+      // Hemmed in (the chosen way closed): follow again from here rather than wait.
       task_ = Task::Follow;
       backoff_after_stall_ = false;
+      stall_escape_sign_ = 0.0;
       stall_anchor_us_ = -1;
     }
     return;
   }
+  cycle.desired = {-settings_.pusher.reverse_speed, 0.0};
   cycle.reason = fmt::format("backing away from object {} before following the new path: {:.2f} of {:.2f} m",
                              active_plan_.object_id, travelled, settings_.pusher.release_m);
   guardCommand(cycle, objectFreeObstacles(cycle));

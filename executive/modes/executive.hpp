@@ -86,6 +86,10 @@ class Executive {
   common::Span<const geometry::Point> objectFreeObstacles(const Cycle& cycle);
   /// Stops `cycle.desired` when it drives the footprint toward a point closer than the guard clearance.
   void guardCommand(Cycle& cycle, common::Span<const geometry::Point> obstacles) const;
+  /// How far (up to `limit_m`) the vehicle can drive straight from `pose` (sign -1 back, +1 ahead)
+  /// without its footprint coming within the guard clearance of a point it is not already that close to.
+  double freeStraightDistance(const geometry::Pose2& pose, double sign,
+                              common::Span<const geometry::Point> obstacles, double limit_m) const;
 
   ExecutiveSettings settings_;
   common::VehicleSettings vehicle_;
@@ -111,9 +115,10 @@ class Executive {
   std::int64_t replan_requested_us_ = 0;
   std::optional<geometry::Point> backoff_start_;  // where BackOff began reversing (set on its first step)
   bool backoff_after_stall_ = false;              // BackOff because following got nowhere, not after a push
-  geometry::Pose2 stall_anchor_;                  // where following last moved from
-  std::int64_t stall_anchor_us_ = -1;             // and when (-1: not following)
-  std::int64_t last_follow_us_ = 0;               // the last cycle that followed
+  double stall_escape_sign_ = 0.0;     // after a stall: -1 reversing, +1 driving ahead, 0 not chosen yet
+  geometry::Pose2 stall_anchor_;       // where following last moved from
+  std::int64_t stall_anchor_us_ = -1;  // and when (-1: not following)
+  std::int64_t last_follow_us_ = 0;    // the last cycle that followed
 
   VelocityCommand last_command_;
   std::int64_t last_step_us_ = 0;

@@ -94,6 +94,7 @@ ExecutiveSettings loadExecutiveSettings(const common::ConfigNode& node)
   follower.cell_size_m = positive(node, "follower.cell_size_m");
   follower.navigation_range_m = positive(node, "follower.navigation_range_m");
   follower.navigation_cell_m = positive(node, "follower.navigation_cell_m");
+  follower.navigation_proximity_weight = nonNegative(node, "follower.navigation_proximity_weight");
   follower.goal_tolerance_m = settings.waypoint_tolerance_m;
 
   const common::ConfigNode control = node.child("control");

@@ -193,6 +193,44 @@ TEST_F(ExecutiveTest, FollowingThatGetsNowhereBacksOffAndTriesAgain)
   EXPECT_LT(lowest_y, stalled_y - settings_.pusher.release_m + 0.05);  // backed up the whole distance
 }
 
+TEST_F(ExecutiveTest, StalledWithTheBackAgainstADoorPostDrivesAheadInstead)
+{
+  // Turned away from a 1.0 m door (x -0.5 .. 0.5 in a 0.2 m wall at y 0 .. 0.2) with the rear corner
+  // against its left post, the goal through the door: turning toward it swings the rear into the
+  // post, backing up would close in on the post too. After stall_timeout_s the executive drives ahead
+  // pusher.release_m (where there is room) and follows again from there.
+  std::vector<Point> walls;
+  for (double x = -4.0; x <= 4.0; x += 0.05) {
+    if (std::abs(x) >= 0.5) {
+      walls.emplace_back(x, 0.0);
+      walls.emplace_back(x, 0.2);
+    }
+  }
+  for (double y = 0.0; y <= 0.2; y += 0.05) {
+    walls.emplace_back(-0.5, y);
+    walls.emplace_back(0.5, y);
+  }
+  Path path = straightPath();
+  path.waypoints = {waypoint(0.0, -0.35), waypoint(0.25, 1.5)};
+  pose_ = Pose2{-0.03, -0.35, -28.0 * M_PI / 180.0};
+  bool drove_ahead = false;
+  bool backed_up = false;
+  std::string last_reason;
+  for (int cycle = 0; cycle < 1500 && !drove_ahead; ++cycle) {
+    now_us_ += kCycleUs;
+    Inputs inputs = freshInputs(now_us_, path);
+    inputs.obstacles = Stamped<std::vector<Point>>{walls, now_us_};
+    const Output output = executive_.step(now_us_, inputs);
+    last_reason = output.status.reason;
+    drove_ahead = output.status.reason.find("driving ahead") != std::string::npos;
+    backed_up = backed_up || output.status.reason.find("backing up") != std::string::npos;
+    pose_ = testing::drive(pose_, output.command, kCycleUs * 1e-6);
+  }
+  EXPECT_TRUE(drove_ahead) << "ended at (" << pose_.x << ", " << pose_.y << ", " << pose_.heading
+                           << "): " << last_reason;
+  EXPECT_FALSE(backed_up);
+}
+
 TEST_F(ExecutiveTest, AccelerationIsLimited)
 {
   run(1, straightPath());
