@@ -61,6 +61,16 @@ bool ObjectTracker::contains(std::int64_t id) const
   return std::any_of(tracks_.begin(), tracks_.end(), [id](const Track& track) { return track.id == id; });
 }
 
+std::optional<geometry::Point> ObjectTracker::centroidOf(std::int64_t id) const
+{
+  const auto found =
+      std::find_if(tracks_.begin(), tracks_.end(), [id](const Track& track) { return track.id == id; });
+  if (found == tracks_.end()) {
+    return std::nullopt;
+  }
+  return found->centroid;
+}
+
 bool ObjectTracker::forget(std::int64_t id)
 {
   const auto found =

@@ -8,6 +8,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "common/geometry/polygon.hpp"
@@ -43,6 +44,8 @@ class ObjectTracker {
   /// Removes an object now (e.g. its outline left the map); false for an unknown id.
   bool forget(std::int64_t id);
   bool contains(std::int64_t id) const;
+  /// Where the object was last seen; empty for ids not tracked.
+  std::optional<geometry::Point> centroidOf(std::int64_t id) const;
   std::size_t size() const { return tracks_.size(); }
 
  private:

@@ -76,7 +76,9 @@ constexpr double kGravity = 9.81;
 Planner::Planner(const PlannerSettings& settings)
     : settings_(completed(settings)),
       tracker_(trackerSettings(settings_)),
-      interaction_(settings_.interaction)
+      interaction_(settings_.interaction),
+      background_memory_(settings_.perception.cell_size_m),
+      affordances_(trackerSettings(settings_).association_distance_m)
 {
 }
 
@@ -152,7 +154,19 @@ FrameResult Planner::processFrame(const FrameInput& frame)
   input.mount = perception::lidarMount(settings_.vehicle);
   input.motion = frame.motion;
   input.detector_polygons = frame.detector_polygons;
+  std::vector<geometry::Point> remembered;
+  if (settings_.perception.remember_background) {
+    const auto end = frame.motion.vehicle_at_end.translation();
+    const geometry::Point half_layer = geometry::Point::Constant(settings_.perception.layer_size_m / 2.0);
+    remembered = background_memory_.cellsWithin(geometry::Point(end.x(), end.y()) - half_layer,
+                                                geometry::Point(end.x(), end.y()) + half_layer);
+    input.remembered_background = common::Span<const geometry::Point>(remembered.data(), remembered.size());
+  }
   perception::PerceptionResult perceived = perception::runPerception(input, settings_.perception);
+  if (settings_.perception.remember_background && perceived.status == perception::PerceptionStatus::Ok) {
+    background_memory_.remember(common::Span<const geometry::Point>(perceived.observed_background.data(),
+                                                                    perceived.observed_background.size()));
+  }
   status.timings.perception_ms = perceived.stats.total_ms;
   status.obstacle_points =
       static_cast<std::int64_t>(perceived.stats.background_points + perceived.stats.movable_points);
@@ -207,8 +221,17 @@ FrameResult Planner::processFrame(const FrameInput& frame)
   for (std::size_t outline = 0; outline < movable_polygons.size(); ++outline) {
     result.polygon_ids[movable_polygons[outline]] = tracked.polygon_ids[outline];
   }
+  affordances_.seen(tracked.seen);
   for (const std::int64_t dropped : tracked.dropped) {
     interaction_.drop(dropped, global_);
+    affordances_.dropped(dropped);
+  }
+  for (const TrackedObject& object : tracked.seen) {
+    if (const std::optional<LearnedAffordance> learned = affordances_.inherit(object.id, object.centroid)) {
+      interaction_.applyAffordance(object.id, true, learned->pushable, learned->physics, nullptr, global_);
+      appendMessage(status.message, "object " + std::to_string(object.id) +
+                                        " is where a lost object was: keeps its affordance");
+    }
   }
 
   // Local DV-graph of this frame's obstacles.
@@ -366,6 +389,9 @@ FrameResult Planner::applyAffordance(const AffordanceUpdate& update)
     outcome =
         interaction_.applyAffordance(update.object_id, tracker_.contains(update.object_id), update.pushable,
                                      physics, obstacles_ ? &*obstacles_ : nullptr, global_);
+    if (outcome != AffordanceOutcome::UnknownObject && tracker_.contains(update.object_id)) {
+      affordances_.learned(update.object_id, update.pushable, physics, tracker_.centroidOf(update.object_id));
+    }
     if (outcome == AffordanceOutcome::UnknownObject) {
       problem =
           "affordance for object " + std::to_string(update.object_id) + " rejected: no such object tracked";

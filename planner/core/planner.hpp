@@ -12,6 +12,7 @@
 
 #include "common/geometry/point.hpp"
 #include "common/vehicle.hpp"
+#include "planner/core/affordance_memory.hpp"
 #include "planner/core/frame_assembler.hpp"
 #include "planner/core/interaction_stage.hpp"
 #include "planner/core/object_tracker.hpp"
@@ -22,6 +23,7 @@
 #include "planner/graph/settings.hpp"
 #include "planner/interaction/interaction_settings.hpp"
 #include "planner/interaction/push_plan.hpp"
+#include "planner/perception/background_memory.hpp"
 #include "planner/perception/local_layer.hpp"
 #include "planner/perception/perception_settings.hpp"
 
@@ -120,6 +122,8 @@ class Planner {
   graph::DvGraph global_;
   ObjectTracker tracker_;
   InteractionStage interaction_;
+  perception::BackgroundMemory background_memory_;
+  AffordanceMemory affordances_;
   std::optional<graph::ObstacleSet> obstacles_;  // last frame's observed obstacles, for attachment
   std::optional<Goal> goal_;
   std::optional<geometry::Point> robot_;

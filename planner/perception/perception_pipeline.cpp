@@ -65,13 +65,17 @@ PerceptionResult runPerception(const PerceptionInput& input, const PerceptionSet
   result.stats.outside_height_band_points = filtered.counts.outside_height_band;
 
   stage_start = Clock::now();
-  const ClassifiedPoints classified =
+  ClassifiedPoints classified =
       input.detector_polygons
           ? classifyByDetector(filtered.obstacle_points, *input.detector_polygons)
           : classifyByReflectivity(filtered.obstacle_points, settings.movable_reflectivity_threshold);
   result.stats.classification_ms = millisecondsSince(stage_start);
   result.stats.background_points = classified.background.size();
   result.stats.movable_points = classified.movable.size();
+
+  result.observed_background = classified.background;
+  classified.background.insert(classified.background.end(), input.remembered_background.begin(),
+                               input.remembered_background.end());
 
   stage_start = Clock::now();
   result.layer = buildLocalLayer(classified, centre, settings);

@@ -22,6 +22,9 @@ struct PerceptionInput {
   /// Movable-object outlines from an external detector (world frame). When present (even empty),
   /// they decide what is movable instead of the reflectivity threshold.
   std::optional<std::vector<geometry::Polygon>> detector_polygons;
+  /// Background seen in earlier scans (world frame, e.g. BackgroundMemory cell centres): drawn into the
+  /// layer with this scan's background points. Only used during the call.
+  common::Span<const geometry::Point> remembered_background;
 };
 
 enum class PerceptionStatus {
@@ -54,6 +57,7 @@ struct PerceptionResult {
   PerceptionStatus status = PerceptionStatus::Ok;
   std::string message;  // human-readable summary, names the reason when the status is not Ok
   LocalLayer layer;     // centred on the vehicle's position at the end of the scan
+  std::vector<geometry::Point> observed_background;  // this scan's background obstacle points (world)
   PerceptionStats stats;
 };
 

@@ -69,6 +69,7 @@ PerceptionSettings loadPerceptionSettings(const common::ConfigNode& root)
   settings.inflation_radius_m = requirePositive(node, "inflation_radius_m");
   settings.simplify_epsilon_m = requirePositive(node, "simplify_epsilon_m");
   settings.min_polygon_area_m2 = requirePositive(node, "min_polygon_area_m2");
+  settings.remember_background = node.required<bool>("remember_background");
   if (settings.vehicle_height_m <= settings.ground_clearance_m) {
     node.fail("vehicle_height_m", "must be above ground_clearance_m");
   }

@@ -26,6 +26,8 @@ struct PerceptionSettings {
   double simplify_epsilon_m = 0.1;
   /// Contours (outer borders and holes) enclosing less area than this are dropped (square metres).
   double min_polygon_area_m2 = 0.05;
+  /// Keep the background seen in earlier scans in the layer (planner/perception/background_memory.hpp).
+  bool remember_background = true;
 
   /// Cells along one side of the layer.
   int layerCells() const;

@@ -19,6 +19,7 @@ perception:
   inflation_radius_m: 0.4
   simplify_epsilon_m: 0.05
   min_polygon_area_m2: 0.1
+  remember_background: false
 )";
 
 std::string messageOf(const std::string& text)
@@ -50,6 +51,7 @@ TEST(PerceptionSettings, ReadsEveryKey)
   EXPECT_DOUBLE_EQ(settings.inflation_radius_m, 0.4);
   EXPECT_DOUBLE_EQ(settings.simplify_epsilon_m, 0.05);
   EXPECT_DOUBLE_EQ(settings.min_polygon_area_m2, 0.1);
+  EXPECT_FALSE(settings.remember_background);
   EXPECT_EQ(settings.layerCells(), 200);
 }
 

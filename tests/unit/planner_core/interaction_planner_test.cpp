@@ -190,6 +190,35 @@ TEST(InteractionPlanner, UnpushableBoxIsDroppedAtOnceAndForGood)
   EXPECT_TRUE(planner.applyAffordance(update).path.pushes.empty());
 }
 
+// The tracker loses the unpushable box (scans that do not show it) and finds it again under a new id:
+// what AFFORDANCE said stays with it, so the vehicle is not sent to push it again.
+TEST(InteractionPlanner, AnUnpushableBoxLostAndFoundAgainStaysUnpushable)
+{
+  Planner planner{PlannerSettings{}};
+  const FrameResult pushed = runStartThenApproach(planner);
+  const std::int64_t box = objectNear(pushed, kDoorwayBox);
+  ASSERT_EQ(pushed.path.pushes.size(), 1U);
+  AffordanceUpdate update;
+  update.object_id = box;
+  update.pushable = false;
+  ASSERT_TRUE(planner.applyAffordance(update).path.pushes.empty());
+
+  FrameInput blind = approachFrames().back();
+  blind.points.clear();
+  for (int frame = 0; frame < 10; ++frame) {
+    blind.utime += 100'000;
+    planner.processFrame(blind);
+  }
+  const FrameResult found = planner.processFrame(approachFrames().back());
+  const std::int64_t again = objectNear(found, kDoorwayBox);
+  EXPECT_NE(again, box) << "the tracker dropped the box while it was not seen";
+  EXPECT_NE(found.status.message.find("keeps its affordance"), std::string::npos) << found.status.message;
+  EXPECT_TRUE(found.path.pushes.empty());
+  for (const graph::InteractionEdge& edge : planner.graph().interactionEdges()) {
+    EXPECT_FALSE(edge.alive && edge.object_id == again);
+  }
+}
+
 TEST(InteractionPlanner, AffordanceChangesTheFrictionAndReplansAtOnce)
 {
   Planner planner{PlannerSettings{}};

@@ -240,17 +240,44 @@ TEST(PlannerCore, EmptyScanIsFlaggedAndKeepsTheGraph)
 {
   const std::vector<FrameInput> frames = pushRoomFrames();
   ASSERT_FALSE(frames.empty());
-  Planner planner{PlannerSettings{}};
+  PlannerSettings settings;
+  settings.perception.remember_background = false;
+  Planner planner{settings};
   planner.processFrame(frames[0]);
   const std::size_t vertices = planner.graph().vertexCount();
   ASSERT_GT(vertices, 0U);
-  PlannerSettings settings;
   for (int frame_index = 0; frame_index < settings.graph.votes + 2; ++frame_index) {
     const FrameResult result = planner.processFrame(stillFrame());
     EXPECT_NE(result.status.flags & kFlagEmptyScan, 0);
     EXPECT_EQ(result.status.polygons, 0);
   }
   EXPECT_EQ(planner.graph().vertexCount(), vertices);  // a sensor gap casts no removal votes
+}
+
+// The room's walls, once seen, stay in the layer: a goal outside the closed room is not attached
+// through a wall the current scan does not show (here: an empty scan), as it is without the memory.
+TEST(PlannerCore, RememberedWallsKeepTheGoalFromBeingAttachedThroughThem)
+{
+  const std::vector<FrameInput> frames = pushRoomFrames();
+  ASSERT_FALSE(frames.empty());
+  for (const bool remember : {false, true}) {
+    PlannerSettings settings;
+    settings.perception.remember_background = remember;
+    Planner planner{settings};
+    ASSERT_TRUE(planner.setGoal(Goal{3, geometry::Point(16.0, 6.0)}));
+    const FrameResult seen = planner.processFrame(frames[0]);
+    EXPECT_GE(seen.status.polygons, 2);
+    const FrameResult blind = planner.processFrame(stillFrame());
+    EXPECT_NE(blind.status.flags & kFlagEmptyScan, 0);
+    const bool straight_through_the_wall = blind.path.valid && blind.path.waypoints.size() == 2;
+    if (remember) {
+      EXPECT_GE(blind.status.polygons, 1) << "the walls stay";
+      EXPECT_FALSE(straight_through_the_wall) << blind.status.message;
+    } else {
+      EXPECT_EQ(blind.status.polygons, 0);
+      EXPECT_TRUE(straight_through_the_wall) << blind.status.message;
+    }
+  }
 }
 
 TEST(PlannerCore, CorruptGraphFileIsReportedAndIgnored)

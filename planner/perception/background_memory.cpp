@@ -1,0 +1,53 @@
+#include "planner/perception/background_memory.hpp"
+
+#include <cmath>
+
+namespace ifar::perception {
+namespace {
+
+// Cells beyond this many from the origin are not remembered (2^31 cells of 0.15 m: 300,000 km).
+constexpr double kLargestCellIndex = 2147483647.0;
+
+std::uint64_t key(std::int64_t column, std::int64_t row)
+{
+  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(column)) << 32U) |
+         static_cast<std::uint64_t>(static_cast<std::uint32_t>(row));
+}
+
+}  // namespace
+
+BackgroundMemory::BackgroundMemory(double cell_size_m) : cell_size_(cell_size_m) {}
+
+void BackgroundMemory::remember(common::Span<const geometry::Point> points)
+{
+  if (!(cell_size_ > 0.0) || !std::isfinite(cell_size_)) {
+    return;  // unusable settings: perception refuses the frames anyway
+  }
+  for (const geometry::Point& point : points) {
+    const double column = std::floor(point.x() / cell_size_);
+    const double row = std::floor(point.y() / cell_size_);
+    if (!std::isfinite(column) || !std::isfinite(row) || std::abs(column) > kLargestCellIndex ||
+        std::abs(row) > kLargestCellIndex) {
+      continue;
+    }
+    cells_.insert(key(static_cast<std::int64_t>(column), static_cast<std::int64_t>(row)));
+  }
+}
+
+std::vector<geometry::Point> BackgroundMemory::cellsWithin(const geometry::Point& minimum,
+                                                           const geometry::Point& maximum) const
+{
+  std::vector<geometry::Point> centres;
+  for (const std::uint64_t cell : cells_) {
+    const auto column = static_cast<std::int32_t>(static_cast<std::uint32_t>(cell >> 32U));
+    const auto row = static_cast<std::int32_t>(static_cast<std::uint32_t>(cell & 0xFFFFFFFFU));
+    const geometry::Point centre((column + 0.5) * cell_size_, (row + 0.5) * cell_size_);
+    if (centre.x() >= minimum.x() && centre.y() >= minimum.y() && centre.x() < maximum.x() &&
+        centre.y() < maximum.y()) {
+      centres.push_back(centre);
+    }
+  }
+  return centres;
+}
+
+}  // namespace ifar::perception

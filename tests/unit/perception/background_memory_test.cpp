@@ -1,0 +1,68 @@
+#include "planner/perception/background_memory.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+namespace ifar::perception {
+namespace {
+
+using geometry::Point;
+
+common::Span<const Point> spanOf(const std::vector<Point>& points)
+{
+  return common::Span<const Point>(points.data(), points.size());
+}
+
+TEST(BackgroundMemory, RemembersOneCellPerPointAtItsCentre)
+{
+  BackgroundMemory memory(0.15);
+  const std::vector<Point> points{{1.00, 2.00}, {1.01, 2.02}, {-0.01, -0.01}};
+  memory.remember(spanOf(points));
+  EXPECT_EQ(memory.size(), 2U);  // the first two share a cell
+  std::vector<Point> cells = memory.cellsWithin(Point(-10.0, -10.0), Point(10.0, 10.0));
+  ASSERT_EQ(cells.size(), 2U);
+  std::sort(cells.begin(), cells.end(), [](const Point& a, const Point& b) { return a.x() < b.x(); });
+  EXPECT_NEAR(cells[0].x(), -0.075, 1e-12);  // cell -1: [-0.15, 0)
+  EXPECT_NEAR(cells[0].y(), -0.075, 1e-12);
+  EXPECT_NEAR(cells[1].x(), 6 * 0.15 + 0.075, 1e-12);   // 1.00 lies in cell 6: [0.90, 1.05)
+  EXPECT_NEAR(cells[1].y(), 13 * 0.15 + 0.075, 1e-12);  // 2.00 lies in cell 13: [1.95, 2.10)
+}
+
+TEST(BackgroundMemory, GivesOnlyTheCellsInsideTheWindow)
+{
+  BackgroundMemory memory(0.5);
+  std::vector<Point> wall;
+  for (double x = 0.1; x < 20.0; x += 0.5) {
+    wall.emplace_back(x, 3.1);
+  }
+  memory.remember(spanOf(wall));
+  EXPECT_EQ(memory.size(), 40U);
+  const std::vector<Point> inside = memory.cellsWithin(Point(5.0, 0.0), Point(10.0, 5.0));
+  EXPECT_EQ(inside.size(), 10U);
+  for (const Point& cell : inside) {
+    EXPECT_GE(cell.x(), 5.0);
+    EXPECT_LT(cell.x(), 10.0);
+    EXPECT_DOUBLE_EQ(cell.y(), 3.25);
+  }
+}
+
+TEST(BackgroundMemory, SkipsNonFiniteAndFarPointsAndUnusableCellSizes)
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double infinity = std::numeric_limits<double>::infinity();
+  const std::vector<Point> points{{nan, 1.0}, {1.0, infinity}, {1e300, 0.0}, {2.0, 2.0}};
+  BackgroundMemory memory(0.15);
+  memory.remember(spanOf(points));
+  EXPECT_EQ(memory.size(), 1U);
+
+  BackgroundMemory unusable(0.0);
+  unusable.remember(spanOf(points));
+  EXPECT_EQ(unusable.size(), 0U);
+}
+
+}  // namespace
+}  // namespace ifar::perception
