@@ -150,8 +150,11 @@ FollowerResult follow(const geometry::Pose2& pose, const geometry::Point& target
       const double progress = gain / std::max(reach, 1e-3);
       // Facing the way the cost-to-go falls (through the door, round the box), not the straight line to
       // the target: turning on the spot gains no progress, so this is what tells the good turn apart.
+      // Within the sampling radius of the target the circle reaches past it: face the target itself.
       double facing = 1.0;
-      if (!reached) {
+      if (!reached && (target - end.position()).norm() <= kDescentRadius) {
+        facing = 1.0 - headingError(end, target) / kPi;
+      } else if (!reached) {
         const std::optional<double> descent = field.descentDirection(end.position(), kDescentRadius);
         facing =
             1.0 - (descent ? std::abs(wrapToPi(*descent - end.heading)) : headingError(end, target)) / kPi;

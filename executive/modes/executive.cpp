@@ -30,6 +30,8 @@ namespace {
 
 /// Metres of cost-to-go below which a follower arc counts as getting nowhere.
 constexpr double kNoProgressM = 0.01;
+/// Metres beyond the goal tolerance within which an arrived vehicle stays arrived for a new plan.
+constexpr double kStayArrivedM = 0.1;
 
 bool fresh(std::int64_t now_us, std::int64_t stamp_us, double threshold_s)
 {
@@ -166,9 +168,11 @@ void Executive::absorbPath(const Inputs& inputs)
       return;
     }
     case Task::Arrived:
+      // A replanned path to the same goal does not restart following for the centimetres the vehicle
+      // coasted after arriving (it stopped 0.31 m from the goal and followed again, in the demo).
       if (incoming.valid && incoming.goal_id == goal_id_ && !incoming.waypoints.empty() && inputs.pose &&
           (incoming.waypoints.back().position - inputs.pose->value.position()).norm() <=
-              settings_.goal_tolerance_m) {
+              settings_.goal_tolerance_m + kStayArrivedM) {
         path_ = incoming;
         return;
       }

@@ -136,6 +136,18 @@ TEST_F(ExecutiveTest, FollowsPathThenArrives)
   EXPECT_NEAR(pose_.x, 3.0, settings_.goal_tolerance_m);
 }
 
+TEST_F(ExecutiveTest, ANewPlanAfterArrivalDoesNotRestartForCentimetres)
+{
+  const Output arrived = run(500, straightPath());
+  ASSERT_EQ(arrived.status.mode, Mode::Arrived);
+  // Coasted to just past the goal tolerance: the planner's next plan leaves it arrived.
+  pose_ = Pose2{3.0 - settings_.goal_tolerance_m - 0.05, 0.0, 0.0};
+  EXPECT_EQ(run(1, straightPath(2, 1)).status.mode, Mode::Arrived);
+  // Moved away for real: a new plan is followed again.
+  pose_ = Pose2{3.0 - settings_.goal_tolerance_m - 0.3, 0.0, 0.0};
+  EXPECT_EQ(run(1, straightPath(3, 2)).status.mode, Mode::Follow);
+}
+
 TEST_F(ExecutiveTest, StoppingBetweenTheWaypointAndGoalTolerancesIsNotArrival)
 {
   // Closer to the goal than an intermediate waypoint needs, farther than arrival needs: drive on.
