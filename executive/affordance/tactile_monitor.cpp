@@ -90,8 +90,12 @@ std::optional<AffordanceEvent> TactileMonitor::update(std::int64_t now_us, doubl
     } else {
       saturated_vehicle_travel_ += forward_step;
     }
-    const double moved =
-        object_position ? (*object_position - saturated_object_start_).norm() : saturated_vehicle_travel_;
+    // In contact the object moves no farther than the vehicle follows it. The observed centroid alone
+    // is not enough: while the bumper hides the near face it wanders by up to ~8 cm (seen in the
+    // office world), which restarted the window for a minute against a box that never moved.
+    const double moved = object_position ? std::min((*object_position - saturated_object_start_).norm(),
+                                                    saturated_vehicle_travel_)
+                                         : saturated_vehicle_travel_;
     if (moved > settings.motion_threshold_m) {
       // It moves: start a new window here.
       saturated_since_us_ = now_us;

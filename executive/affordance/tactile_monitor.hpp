@@ -3,9 +3,10 @@
 // far the object moves, and says when the object is unpushable or costs clearly more or less than the
 // plan assumed.
 //
-// Object motion comes from an observed object position when perception provides one; otherwise the
-// vehicle's own forward travel while the bumper is loaded stands for it (in a stable push the object
-// moves with the bumper).
+// Object motion is the vehicle's own forward travel while the bumper is loaded (in a stable push the
+// object moves with the bumper), capped by the observed object displacement when perception provides
+// one: an object in contact moves no farther than the vehicle follows it, and a wheel that spins on the
+// spot is not an object that moves.
 
 #include <cstdint>
 #include <optional>

@@ -43,6 +43,36 @@ double headingError(const geometry::Pose2& pose, const geometry::Point& target)
   return std::abs(wrapToPi(bearing - pose.heading));
 }
 
+/// Top speed of the arcs toward `target` (slower near a target to stop at).
+double topSpeed(const geometry::Pose2& pose, const geometry::Point& target, bool stop_at_target,
+                const FollowerSettings& settings, const DifferentialDrive& drive)
+{
+  double top_speed = std::min(settings.max_linear_velocity, drive.maxLinearVelocity());
+  if (stop_at_target && settings.slow_down_distance_m > 0.0) {
+    top_speed *= std::clamp((target - pose.position()).norm() / settings.slow_down_distance_m, 0.25, 1.0);
+  }
+  return top_speed;
+}
+
+/// The cost-to-go toward `target` in a window that holds every arc of length `reach`.
+NavigationField navigationField(const geometry::Pose2& pose, const geometry::Point& target,
+                                bool stop_at_target, common::Span<const geometry::Point> obstacles,
+                                const FollowerSettings& settings, double reach)
+{
+  const double start_distance = (target - pose.position()).norm();
+  const double window =
+      std::clamp(start_distance + 1.0, reach + 2.0 * settings.footprint.circumradius(),
+                 std::max(settings.navigation_range_m, reach + 2.0 * settings.footprint.circumradius()));
+  NavigationFieldShape shape;
+  shape.half_size_m = window;
+  shape.cell_size_m = settings.navigation_cell_m;
+  shape.blocked_m = settings.footprint.half_width_m;
+  shape.comfort_m = settings.footprint.half_width_m + settings.clearance_cap_m;
+  shape.proximity_weight = settings.navigation_proximity_weight;
+  shape.open_around_target = stop_at_target;
+  return NavigationField(obstacles, pose.position(), target, shape);
+}
+
 }  // namespace
 
 const char* followerStatusName(FollowerStatus status)
@@ -78,10 +108,7 @@ FollowerResult follow(const geometry::Pose2& pose, const geometry::Point& target
     return result;
   }
 
-  double top_speed = std::min(settings.max_linear_velocity, drive.maxLinearVelocity());
-  if (stop_at_target && settings.slow_down_distance_m > 0.0) {
-    top_speed *= std::clamp(start_distance / settings.slow_down_distance_m, 0.25, 1.0);
-  }
+  const double top_speed = topSpeed(pose, target, stop_at_target, settings, drive);
   const double reach = top_speed * settings.horizon_s;
   const double search_radius = std::max(settings.clearance_cap_m, settings.clearance_m);
   const ObstacleGrid grid(
@@ -89,17 +116,7 @@ FollowerResult follow(const geometry::Pose2& pose, const geometry::Point& target
       reach + settings.footprint.circumradius() * 2.0 + search_radius + settings.cell_size_m,
       settings.cell_size_m);
 
-  const double window =
-      std::clamp(start_distance + 1.0, reach + 2.0 * settings.footprint.circumradius(),
-                 std::max(settings.navigation_range_m, reach + 2.0 * settings.footprint.circumradius()));
-  NavigationFieldShape shape;
-  shape.half_size_m = window;
-  shape.cell_size_m = settings.navigation_cell_m;
-  shape.blocked_m = settings.footprint.half_width_m;
-  shape.comfort_m = settings.footprint.half_width_m + settings.clearance_cap_m;
-  shape.proximity_weight = settings.navigation_proximity_weight;
-  shape.open_around_target = stop_at_target;
-  const NavigationField field(obstacles, pose.position(), target, shape);
+  const NavigationField field = navigationField(pose, target, stop_at_target, obstacles, settings, reach);
   const double start_cost = field.value(pose.position());
 
   // Already closer than the clearance (after a push, or a point that appeared close): accept arcs that do
@@ -183,6 +200,21 @@ FollowerResult follow(const geometry::Pose2& pose, const geometry::Point& target
   result.reason = fmt::format("following: {:.2f} m to target, {} of {} arcs free", start_distance,
                               result.free_arcs, result.arcs);
   return result;
+}
+
+std::optional<double> facingDirection(const geometry::Pose2& pose, const geometry::Point& target,
+                                      bool stop_at_target, common::Span<const geometry::Point> obstacles,
+                                      const FollowerSettings& settings, const DifferentialDrive& drive)
+{
+  if (!std::isfinite(pose.x) || !std::isfinite(pose.y) || !target.allFinite()) {
+    return std::nullopt;
+  }
+  if ((target - pose.position()).norm() <= kDescentRadius) {
+    return std::atan2(target.y() - pose.y, target.x() - pose.x);
+  }
+  const double reach = topSpeed(pose, target, stop_at_target, settings, drive) * settings.horizon_s;
+  return navigationField(pose, target, stop_at_target, obstacles, settings, reach)
+      .descentDirection(pose.position(), kDescentRadius);
 }
 
 }  // namespace ifar::executive

@@ -6,6 +6,7 @@
 // taken through their middle), faces the way that cost-to-go falls and keeps clear. A pure function: same
 // inputs, same command.
 
+#include <optional>
 #include <string>
 
 #include "common/geometry/point.hpp"
@@ -58,5 +59,11 @@ struct FollowerResult {
 FollowerResult follow(const geometry::Pose2& pose, const geometry::Point& target, bool stop_at_target,
                       common::Span<const geometry::Point> obstacles, const FollowerSettings& settings,
                       const DifferentialDrive& drive);
+
+/// The heading the follower's cost-to-go falls along at `pose` toward `target` (the bearing of the target
+/// itself when it is near): the way to face before driving on. None when the field has no way there.
+std::optional<double> facingDirection(const geometry::Pose2& pose, const geometry::Point& target,
+                                      bool stop_at_target, common::Span<const geometry::Point> obstacles,
+                                      const FollowerSettings& settings, const DifferentialDrive& drive);
 
 }  // namespace ifar::executive

@@ -32,6 +32,12 @@ namespace {
 constexpr double kNoProgressM = 0.01;
 /// Metres beyond the goal tolerance within which an arrived vehicle stays arrived for a new plan.
 constexpr double kStayArrivedM = 0.1;
+// After a stall's straight escape the vehicle turns on the spot to the cost-to-go's heading when it is off
+// by more than this, for at most this long; the straight escape goes on for up to this many release
+// distances while that turn is not free.
+constexpr double kStallTurnToleranceRad = 0.2;
+constexpr double kStallTurnTimeoutS = 5.0;
+constexpr double kStallEscapeReleases = 3.0;
 
 bool fresh(std::int64_t now_us, std::int64_t stamp_us, double threshold_s)
 {
@@ -295,6 +301,7 @@ void Executive::stepFollow(Cycle& cycle)
     task_ = Task::BackOff;
     backoff_after_stall_ = true;
     stall_escape_sign_ = 0.0;
+    stall_turn_heading_.reset();
     backoff_start_.reset();
     stall_anchor_us_ = -1;
     stepBackOff(cycle);
@@ -505,6 +512,47 @@ double Executive::freeStraightDistance(const geometry::Pose2& pose, double sign,
   return std::max(free_m, 0.0);
 }
 
+bool Executive::freeTurn(const geometry::Pose2& pose, double heading,
+                         common::Span<const geometry::Point> obstacles) const
+{
+  const Footprint& footprint = settings_.follower.footprint;
+  const double clearance = settings_.pushed_object.guard_clearance_m;
+  constexpr double kStepRad = 0.05;
+  const double turn = wrapToPi(heading - pose.heading);
+  const int steps = static_cast<int>(std::ceil(std::abs(turn) / kStepRad));
+  const double reach = footprint.bodyCentre().norm() + footprint.circumradius() + clearance;
+  for (const geometry::Point& point : obstacles) {
+    if ((point - pose.position()).norm() > reach) {
+      continue;
+    }
+    const double distance_now = footprint.distance(pose, point);
+    for (int step = 1; step <= steps; ++step) {
+      const geometry::Pose2 turned{pose.x, pose.y, pose.heading + turn * step / steps};
+      const double distance = footprint.distance(turned, point);
+      if (distance < clearance && distance < distance_now) {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+std::optional<double> Executive::stallTurnHeading(const Cycle& cycle) const
+{
+  if (!has_path_ || path_.waypoints.empty()) {
+    return std::nullopt;
+  }
+  const std::size_t last = path_.waypoints.size() - 1;
+  const std::size_t index = std::min(waypoint_index_, last);
+  const std::optional<double> heading =
+      facingDirection(cycle.pose, path_.waypoints[index].position, index == last, cycle.obstacles,
+                      settings_.follower, drive_);
+  if (!heading || std::abs(wrapToPi(*heading - cycle.pose.heading)) <= kStallTurnToleranceRad) {
+    return std::nullopt;
+  }
+  return heading;
+}
+
 void Executive::stepBackOff(Cycle& cycle)
 {
   if (!backoff_after_stall_) {
@@ -514,10 +562,40 @@ void Executive::stepBackOff(Cycle& cycle)
     backoff_start_ = cycle.pose.position();
   }
   const double travelled = (cycle.pose.position() - *backoff_start_).norm();
-  if (travelled >= settings_.pusher.release_m) {
+  const double release_m = settings_.pusher.release_m;
+  bool escape_further = false;
+  if (backoff_after_stall_ && travelled >= release_m && !stall_turn_heading_) {
+    // Face the way the cost-to-go falls before following again, when that takes a turn on the spot; while
+    // the turn is not free, go on straight a little further (up to kStallEscapeReleases x release_m).
+    const std::optional<double> wanted = stallTurnHeading(cycle);
+    if (wanted && freeTurn(cycle.pose, *wanted, cycle.obstacles)) {
+      stall_turn_heading_ = wanted;
+      stall_turn_since_us_ = cycle.now_us;
+    } else if (wanted && travelled < kStallEscapeReleases * release_m) {
+      escape_further = true;
+    }
+  }
+  if (stall_turn_heading_) {
+    const double error = wrapToPi(*stall_turn_heading_ - cycle.pose.heading);
+    const double turned_s = static_cast<double>(cycle.now_us - stall_turn_since_us_) * 1e-6;
+    if (std::abs(error) > kStallTurnToleranceRad && turned_s < kStallTurnTimeoutS) {
+      const double rate = std::min(settings_.approach.control.max_angular_velocity,
+                                   settings_.approach.control.angular_gain * std::abs(error));
+      cycle.desired = {0.0, std::copysign(rate, error)};
+      cycle.reason =
+          fmt::format("stalled for {:.1f} s: turning on the spot to face the way on, {:.0f} deg to go",
+                      settings_.stall_timeout_s, std::abs(error) * 180.0 / kPi);
+      guardCommand(cycle, cycle.obstacles);
+      if (!cycle.desired.isZero()) {
+        return;
+      }
+    }
+  }
+  if (travelled >= release_m && !escape_further) {
     task_ = Task::Follow;
     backoff_after_stall_ = false;
     stall_escape_sign_ = 0.0;
+    stall_turn_heading_.reset();
     stall_anchor_us_ = -1;
     stepFollow(cycle);
     return;

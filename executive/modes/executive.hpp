@@ -90,6 +90,13 @@ class Executive {
   /// without its footprint coming within the guard clearance of a point it is not already that close to.
   double freeStraightDistance(const geometry::Pose2& pose, double sign,
                               common::Span<const geometry::Point> obstacles, double limit_m) const;
+  /// True when turning on the spot from `pose` to `heading` keeps the footprint out of the guard clearance
+  /// of every point it is not already that close to.
+  bool freeTurn(const geometry::Pose2& pose, double heading,
+                common::Span<const geometry::Point> obstacles) const;
+  /// After a stall's straight escape: the heading the follower's cost-to-go wants, when turning to it on
+  /// the spot first is needed and free (a door entered at a slant wedges the corners on its posts).
+  std::optional<double> stallTurnHeading(const Cycle& cycle) const;
 
   ExecutiveSettings settings_;
   common::VehicleSettings vehicle_;
@@ -115,10 +122,12 @@ class Executive {
   std::int64_t replan_requested_us_ = 0;
   std::optional<geometry::Point> backoff_start_;  // where BackOff began reversing (set on its first step)
   bool backoff_after_stall_ = false;              // BackOff because following got nowhere, not after a push
-  double stall_escape_sign_ = 0.0;     // after a stall: -1 reversing, +1 driving ahead, 0 not chosen yet
-  geometry::Pose2 stall_anchor_;       // where following last moved from
-  std::int64_t stall_anchor_us_ = -1;  // and when (-1: not following)
-  std::int64_t last_follow_us_ = 0;    // the last cycle that followed
+  double stall_escape_sign_ = 0.0;  // after a stall: -1 reversing, +1 driving ahead, 0 not chosen yet
+  std::optional<double> stall_turn_heading_;  // after the straight escape: turning on the spot to this
+  std::int64_t stall_turn_since_us_ = 0;      // since then
+  geometry::Pose2 stall_anchor_;              // where following last moved from
+  std::int64_t stall_anchor_us_ = -1;         // and when (-1: not following)
+  std::int64_t last_follow_us_ = 0;           // the last cycle that followed
 
   VelocityCommand last_command_;
   std::int64_t last_step_us_ = 0;
