@@ -71,6 +71,13 @@ std::optional<geometry::Point> ObjectTracker::centroidOf(std::int64_t id) const
   return found->centroid;
 }
 
+geometry::Polygon ObjectTracker::outlineOf(std::int64_t id) const
+{
+  const auto found =
+      std::find_if(tracks_.begin(), tracks_.end(), [id](const Track& track) { return track.id == id; });
+  return found == tracks_.end() ? geometry::Polygon{} : found->outline;
+}
+
 bool ObjectTracker::forget(std::int64_t id)
 {
   const auto found =

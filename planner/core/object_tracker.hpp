@@ -46,6 +46,8 @@ class ObjectTracker {
   bool contains(std::int64_t id) const;
   /// Where the object was last seen; empty for ids not tracked.
   std::optional<geometry::Point> centroidOf(std::int64_t id) const;
+  /// The object's latest outline; empty for an unknown id.
+  geometry::Polygon outlineOf(std::int64_t id) const;
   std::size_t size() const { return tracks_.size(); }
 
  private:

@@ -166,6 +166,12 @@ FrameResult Planner::processFrame(const FrameInput& frame)
   if (settings_.perception.remember_background && perceived.status == perception::PerceptionStatus::Ok) {
     background_memory_.remember(common::Span<const geometry::Point>(perceived.observed_background.data(),
                                                                     perceived.observed_background.size()));
+    if (!settings_.interaction_enabled) {
+      // FAR mode knows no movable objects: what it saw is an obstacle it remembers like any other (as
+      // FAR's own map does), or a corridor closed by a box looks open from the room beside it.
+      background_memory_.remember(common::Span<const geometry::Point>(perceived.observed_movable.data(),
+                                                                      perceived.observed_movable.size()));
+    }
   }
   status.timings.perception_ms = perceived.stats.total_ms;
   status.obstacle_points =
@@ -391,6 +397,13 @@ FrameResult Planner::applyAffordance(const AffordanceUpdate& update)
                                      physics, obstacles_ ? &*obstacles_ : nullptr, global_);
     if (outcome != AffordanceOutcome::UnknownObject && tracker_.contains(update.object_id)) {
       affordances_.learned(update.object_id, update.pushable, physics, tracker_.centroidOf(update.object_id));
+      if (!update.pushable && settings_.perception.remember_background) {
+        // What the vehicle cannot move is a wall from now on, also once it is out of sight: otherwise
+        // the corridor it closes looks open again from the room beside it, and the route flips each
+        // time the vehicle steps through the room's door.
+        background_memory_.rememberInflatedOutline(tracker_.outlineOf(update.object_id),
+                                                   settings_.perception.inflation_radius_m);
+      }
     }
     if (outcome == AffordanceOutcome::UnknownObject) {
       problem =

@@ -1,5 +1,6 @@
 #include "planner/perception/background_memory.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace ifar::perception {
@@ -32,6 +33,39 @@ void BackgroundMemory::remember(common::Span<const geometry::Point> points)
     }
     cells_.insert(key(static_cast<std::int64_t>(column), static_cast<std::int64_t>(row)));
   }
+}
+
+std::size_t BackgroundMemory::rememberInflatedOutline(const geometry::Polygon& inflated_outline,
+                                                      double inflation_m)
+{
+  if (inflated_outline.size() < 3 || !(cell_size_ > 0.0) || !std::isfinite(cell_size_)) {
+    return 0;
+  }
+  geometry::Point minimum = inflated_outline.front();
+  geometry::Point maximum = inflated_outline.front();
+  for (const geometry::Point& point : inflated_outline) {
+    if (!point.allFinite()) {
+      return 0;
+    }
+    minimum = minimum.cwiseMin(point);
+    maximum = maximum.cwiseMax(point);
+  }
+  // Half a cell of slack: the outline was traced on cells, so its border is a cell's width uncertain.
+  const double inside_m = std::max(0.0, inflation_m - 0.5 * cell_size_);
+  std::vector<geometry::Point> cells;
+  for (double y = (std::floor(minimum.y() / cell_size_) + 0.5) * cell_size_; y < maximum.y();
+       y += cell_size_) {
+    for (double x = (std::floor(minimum.x() / cell_size_) + 0.5) * cell_size_; x < maximum.x();
+         x += cell_size_) {
+      const geometry::Point centre(x, y);
+      if (geometry::containsPoint(inflated_outline, centre) &&
+          geometry::distanceToBoundary(inflated_outline, centre) >= inside_m) {
+        cells.push_back(centre);
+      }
+    }
+  }
+  remember(common::Span<const geometry::Point>(cells.data(), cells.size()));
+  return cells.size();
 }
 
 std::vector<geometry::Point> BackgroundMemory::cellsWithin(const geometry::Point& minimum,

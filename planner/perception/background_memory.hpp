@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "common/geometry/point.hpp"
+#include "common/geometry/polygon.hpp"
 #include "common/span.hpp"
 
 namespace ifar::perception {
@@ -23,6 +24,11 @@ class BackgroundMemory {
 
   /// Marks the cells of `points` (world frame); non-finite points are skipped.
   void remember(common::Span<const geometry::Point> points);
+
+  /// Marks the cells of the obstacle whose outline inflated by `inflation_m` is `inflated_outline`: the
+  /// cells inside it at least `inflation_m` from its border (an object found unpushable is background
+  /// from then on, also while out of sight). Returns how many cells that was.
+  std::size_t rememberInflatedOutline(const geometry::Polygon& inflated_outline, double inflation_m);
 
   /// Centres of the remembered cells inside the square [minimum, maximum).
   std::vector<geometry::Point> cellsWithin(const geometry::Point& minimum,

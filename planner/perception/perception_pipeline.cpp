@@ -74,6 +74,7 @@ PerceptionResult runPerception(const PerceptionInput& input, const PerceptionSet
   result.stats.movable_points = classified.movable.size();
 
   result.observed_background = classified.background;
+  result.observed_movable = classified.movable;
   classified.background.insert(classified.background.end(), input.remembered_background.begin(),
                                input.remembered_background.end());
 

@@ -58,6 +58,7 @@ struct PerceptionResult {
   std::string message;  // human-readable summary, names the reason when the status is not Ok
   LocalLayer layer;     // centred on the vehicle's position at the end of the scan
   std::vector<geometry::Point> observed_background;  // this scan's background obstacle points (world)
+  std::vector<geometry::Point> observed_movable;     // and its movable ones
   PerceptionStats stats;
 };
 

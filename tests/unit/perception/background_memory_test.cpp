@@ -64,5 +64,33 @@ TEST(BackgroundMemory, SkipsNonFiniteAndFarPointsAndUnusableCellSizes)
   EXPECT_EQ(unusable.size(), 0U);
 }
 
+TEST(BackgroundMemory, AnInflatedOutlineLeavesTheObjectsOwnCells)
+{
+  // A 1.2 m x 0.6 m box centred at (5, 5), its outline inflated by 0.35 m (square corners are enough):
+  // the cells remembered are the box's own (within half a cell of its sides), not the inflation band.
+  const geometry::Polygon inflated{{4.05, 4.35}, {5.95, 4.35}, {5.95, 5.65}, {4.05, 5.65}};
+  BackgroundMemory memory(0.15);
+  const std::size_t cells = memory.rememberInflatedOutline(inflated, 0.35);
+  EXPECT_EQ(cells, memory.size());
+  const std::vector<Point> remembered = memory.cellsWithin(Point(0.0, 0.0), Point(10.0, 10.0));
+  ASSERT_FALSE(remembered.empty());
+  double min_x = 10.0;
+  double max_x = 0.0;
+  for (const Point& cell : remembered) {
+    EXPECT_GE(cell.x(), 4.4 - 0.075 - 1e-9);
+    EXPECT_LE(cell.x(), 5.6 + 0.075 + 1e-9);
+    EXPECT_GE(cell.y(), 4.7 - 0.075 - 1e-9);
+    EXPECT_LE(cell.y(), 5.3 + 0.075 + 1e-9);
+    min_x = std::min(min_x, cell.x());
+    max_x = std::max(max_x, cell.x());
+  }
+  EXPECT_LT(min_x, 4.5);  // and it reaches the box's sides
+  EXPECT_GT(max_x, 5.5);
+
+  EXPECT_EQ(memory.rememberInflatedOutline(geometry::Polygon{{0.0, 0.0}, {1.0, 0.0}}, 0.35), 0U);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(memory.rememberInflatedOutline(geometry::Polygon{{0.0, 0.0}, {1.0, nan}, {1.0, 1.0}}, 0.35), 0U);
+}
+
 }  // namespace
 }  // namespace ifar::perception

@@ -2,6 +2,7 @@
 // light box in the 1.4 m doorway at (8, 16) is pushed instead of driving round through the east doorway,
 // its id is stable, AFFORDANCE re-plans or removes its edges, FAR mode never pushes.
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -216,6 +217,73 @@ TEST(InteractionPlanner, AnUnpushableBoxLostAndFoundAgainStaysUnpushable)
   EXPECT_TRUE(found.path.pushes.empty());
   for (const graph::InteractionEdge& edge : planner.graph().interactionEdges()) {
     EXPECT_FALSE(edge.alive && edge.object_id == again);
+  }
+}
+
+/// Frames at (8, 12) facing the doorway with the doorway box gone from the world: it is out of sight.
+const std::vector<FrameInput>& approachFramesWithoutTheBox()
+{
+  static const std::vector<FrameInput> frames = [] {
+    sim::World world = demoRoom();
+    world.start = geometry::Pose2{8.0, 12.0, M_PI / 2.0};
+    world.objects.erase(std::remove_if(world.objects.begin(), world.objects.end(),
+                                       [](const sim::MovableObject& object) {
+                                         return (object.pose.position() - kDoorwayBox).norm() < 0.5;
+                                       }),
+                        world.objects.end());
+    FrameAssembler assembler{InputSettings{}};
+    return testing::feedAll(testing::recordSimulation(world, 1.25), assembler);
+  }();
+  return frames;
+}
+
+TEST(InteractionPlanner, AnUnpushableBoxOutOfSightStillClosesItsDoorway)
+{
+  // Found unpushable, then not seen (hidden behind a wall in the office world; here gone from the scan):
+  // with the background memory it still closes the doorway, so the path keeps to the east doorway
+  // (x 14) instead of flipping back through the box each time it is out of sight.
+  for (const bool remember : {true, false}) {
+    PlannerSettings settings;
+    settings.perception.remember_background = remember;
+    Planner planner{settings};
+    const FrameResult pushed = runStartThenApproach(planner);
+    ASSERT_EQ(pushed.path.pushes.size(), 1U) << "remember " << remember;
+    AffordanceUpdate update;
+    update.object_id = objectNear(pushed, kDoorwayBox);
+    update.pushable = false;
+    planner.applyAffordance(update);
+    const FrameResult hidden = runFrames(planner, approachFramesWithoutTheBox());
+    ASSERT_EQ(hidden.status.state, PlannerState::Planning) << hidden.status.message;
+    const std::optional<double> crossing = crossingX(hidden.path, 16.0);
+    ASSERT_TRUE(crossing.has_value());
+    if (remember) {
+      EXPECT_GT(*crossing, 12.0) << "the path goes through the unpushable box's doorway";
+    } else {
+      EXPECT_NEAR(*crossing, kDoorwayBox.x(), 0.5) << "control: without the memory the doorway looks open";
+    }
+  }
+}
+
+TEST(InteractionPlanner, FarModeRemembersABoxOutOfSightLikeAWall)
+{
+  // FAR mode knows no movable objects: the doorway box it saw stays an obstacle once out of sight.
+  for (const bool remember : {true, false}) {
+    PlannerSettings settings;
+    settings.interaction_enabled = false;
+    settings.perception.remember_background = remember;
+    Planner planner{settings};
+    const FrameResult seen = runStartThenApproach(planner);
+    const std::optional<double> around = crossingX(seen.path, 16.0);
+    ASSERT_TRUE(around.has_value());
+    ASSERT_GT(*around, 12.0) << "FAR mode goes round the box it sees";
+    const FrameResult hidden = runFrames(planner, approachFramesWithoutTheBox());
+    const std::optional<double> crossing = crossingX(hidden.path, 16.0);
+    ASSERT_TRUE(crossing.has_value()) << hidden.status.message;
+    if (remember) {
+      EXPECT_GT(*crossing, 12.0) << "the path goes through the box FAR mode saw";
+    } else {
+      EXPECT_NEAR(*crossing, kDoorwayBox.x(), 0.5) << "control: without the memory the doorway looks open";
+    }
   }
 }
 
