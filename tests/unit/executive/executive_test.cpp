@@ -243,6 +243,44 @@ TEST_F(ExecutiveTest, StalledWithTheBackAgainstADoorPostDrivesAheadInstead)
   EXPECT_FALSE(backed_up);
 }
 
+TEST_F(ExecutiveTest, WedgedAtASlantInADoorTurnsToFaceItAndDrivesThrough)
+{
+  // The office world's door: 1.0 m wide (x -0.5 .. 0.5) in a 0.2 m wall at y 0 .. 0.2, the vehicle just
+  // below it turned 35 degrees to the left, the next waypoint beyond it. Following alone dithered here
+  // for 100 s; after the stall's straight escape the vehicle turns on the spot to face the door, then
+  // drives through.
+  std::vector<Point> walls;
+  for (double x = -4.0; x <= 4.0; x += 0.05) {
+    if (std::abs(x) >= 0.5) {
+      walls.emplace_back(x, 0.0);
+      walls.emplace_back(x, 0.2);
+    }
+  }
+  for (double y = 0.0; y <= 0.2; y += 0.05) {
+    walls.emplace_back(-0.5, y);
+    walls.emplace_back(0.5, y);
+  }
+  Path path = straightPath();
+  path.waypoints = {waypoint(0.0, -0.28), waypoint(0.0, 0.47), waypoint(0.0, 2.0)};
+  pose_ = Pose2{-0.13, -0.48, 125.0 * M_PI / 180.0};
+  bool turned = false;
+  bool through = false;
+  std::string last_reason;
+  for (int cycle = 0; cycle < 3000 && !through; ++cycle) {
+    now_us_ += kCycleUs;
+    Inputs inputs = freshInputs(now_us_, path);
+    inputs.obstacles = Stamped<std::vector<Point>>{walls, now_us_};
+    const Output output = executive_.step(now_us_, inputs);
+    last_reason = output.status.reason;
+    turned = turned || output.status.reason.find("turning on the spot") != std::string::npos;
+    pose_ = testing::drive(pose_, output.command, kCycleUs * 1e-6);
+    through = pose_.y > 0.9;
+  }
+  EXPECT_TRUE(through) << "ended at (" << pose_.x << ", " << pose_.y << ", " << pose_.heading
+                       << "): " << last_reason;
+  EXPECT_TRUE(turned);
+}
+
 TEST_F(ExecutiveTest, AccelerationIsLimited)
 {
   run(1, straightPath());
