@@ -205,12 +205,9 @@ TEST_F(ExecutiveTest, FollowingThatGetsNowhereBacksOffAndTriesAgain)
   EXPECT_LT(lowest_y, stalled_y - settings_.pusher.release_m + 0.05);  // backed up the whole distance
 }
 
-TEST_F(ExecutiveTest, StalledWithTheBackAgainstADoorPostDrivesAheadInstead)
+/// A 1.0 m door (x -0.5 .. 0.5) in a 0.2 m wall along y 0 .. 0.2, as obstacle points 5 cm apart.
+std::vector<Point> doorWalls()
 {
-  // Turned away from a 1.0 m door (x -0.5 .. 0.5 in a 0.2 m wall at y 0 .. 0.2) with the rear corner
-  // against its left post, the goal through the door: turning toward it swings the rear into the
-  // post, backing up would close in on the post too. After stall_timeout_s the executive drives ahead
-  // pusher.release_m (where there is room) and follows again from there.
   std::vector<Point> walls;
   for (double x = -4.0; x <= 4.0; x += 0.05) {
     if (std::abs(x) >= 0.5) {
@@ -222,6 +219,16 @@ TEST_F(ExecutiveTest, StalledWithTheBackAgainstADoorPostDrivesAheadInstead)
     walls.emplace_back(-0.5, y);
     walls.emplace_back(0.5, y);
   }
+  return walls;
+}
+
+TEST_F(ExecutiveTest, StalledWithTheBackAgainstADoorPostDrivesAheadInstead)
+{
+  // Turned away from a 1.0 m door (x -0.5 .. 0.5 in a 0.2 m wall at y 0 .. 0.2) with the rear corner
+  // against its left post, the goal through the door: turning toward it swings the rear into the
+  // post, backing up would close in on the post too. After stall_timeout_s the executive drives ahead
+  // pusher.release_m (where there is room) and follows again from there.
+  const std::vector<Point> walls = doorWalls();
   Path path = straightPath();
   path.waypoints = {waypoint(0.0, -0.35), waypoint(0.25, 1.5)};
   pose_ = Pose2{-0.03, -0.35, -28.0 * M_PI / 180.0};
@@ -249,17 +256,7 @@ TEST_F(ExecutiveTest, WedgedAtASlantInADoorTurnsToFaceItAndDrivesThrough)
   // below it turned 35 degrees to the left, the next waypoint beyond it. Following alone dithered here
   // for 100 s; after the stall's straight escape the vehicle turns on the spot to face the door, then
   // drives through.
-  std::vector<Point> walls;
-  for (double x = -4.0; x <= 4.0; x += 0.05) {
-    if (std::abs(x) >= 0.5) {
-      walls.emplace_back(x, 0.0);
-      walls.emplace_back(x, 0.2);
-    }
-  }
-  for (double y = 0.0; y <= 0.2; y += 0.05) {
-    walls.emplace_back(-0.5, y);
-    walls.emplace_back(0.5, y);
-  }
+  const std::vector<Point> walls = doorWalls();
   Path path = straightPath();
   path.waypoints = {waypoint(0.0, -0.28), waypoint(0.0, 0.47), waypoint(0.0, 2.0)};
   pose_ = Pose2{-0.13, -0.48, 125.0 * M_PI / 180.0};
