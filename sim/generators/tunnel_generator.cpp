@@ -12,8 +12,9 @@ namespace {
 
 constexpr double kWidth = 330.0;
 constexpr double kHeight = 270.0;
-constexpr double kTunnel = 4.0;  // tunnel width
-constexpr double kFrame = 3.0;   // rock around the network
+constexpr double kTunnel = 4.0;      // tunnel width
+constexpr double kFrame = 3.0;       // rock around the network
+constexpr double kCrateDepth = 1.2;  // along the tunnel; a crate is 0.4 m narrower than the tunnel
 constexpr int kColumns = 7;
 constexpr int kRows = 6;
 constexpr double kTargetPath = 450.0;
@@ -86,6 +87,29 @@ class Lattice {
     return distance;
   }
 
+  /// The edge that goes on straight through `to` coming from `from` (neighbouring junctions), or -1 at the
+  /// lattice's border.
+  int straightOn(int from, int to) const
+  {
+    const int column = to % kColumns + (to % kColumns - from % kColumns);
+    const int row = to / kColumns + (to / kColumns - from / kColumns);
+    if (column < 0 || row < 0 || column >= kColumns || row >= kRows) {
+      return -1;
+    }
+    return edgeBetween(to, index(column, row));
+  }
+
+  int edgeBetween(int first, int second) const
+  {
+    for (int index = 0; index < static_cast<int>(edges_.size()); ++index) {
+      const Edge& edge = edges_[index];
+      if ((edge.from == first && edge.to == second) || (edge.from == second && edge.to == first)) {
+        return index;
+      }
+    }
+    return -1;
+  }
+
   bool connected() const
   {
     const auto distance = distances(0, -1);
@@ -119,6 +143,19 @@ geometry::Point alongEdge(const Lattice& lattice, const Edge& edge, SeededRandom
   const double length = (to - from).norm();
   const double at = random.uniform(8.0, length - 8.0);
   const geometry::Point point = from + (to - from) * (at / length);
+  return {std::round(point.x() * 10.0) / 10.0, std::round(point.y() * 10.0) / 10.0};
+}
+
+/// Where a crate across the tunnel from `near_end` to `far_end` goes: its far face 0.3-0.9 m short of the
+/// far junction, so a push of about 3-4 m (the interaction planner's reach) puts it into the junction and
+/// clears the turn there.
+geometry::Point beforeJunction(const Lattice& lattice, int near_end, int far_end, SeededRandom& random)
+{
+  const geometry::Point from = lattice.junction(near_end);
+  const geometry::Point to = lattice.junction(far_end);
+  const geometry::Point direction = (to - from).normalized();
+  const double back = 0.5 * kTunnel + 0.5 * kCrateDepth + random.uniform(0.3, 0.9);
+  const geometry::Point point = to - direction * back;
   return {std::round(point.x() * 10.0) / 10.0, std::round(point.y() * 10.0) / 10.0};
 }
 
@@ -193,26 +230,39 @@ World generateTunnel(std::uint64_t seed)
   builder.addGoal(lattice.junction(goal_node));
 
   // Crates across tunnels of the shortest route: light ones to push, heavy ones only where a way round
-  // exists (the tunnel is not a bridge between start and goal).
-  std::vector<int> route;
+  // exists (the tunnel is not a bridge between start and goal). A crate fills the tunnel's width, so the
+  // vehicle can only push it ahead along the tunnel: it goes only where the route turns at the next
+  // junction and the tunnel straight on is open, so it can be pushed through the junction and out of the
+  // way. Never into the goal's junction: a dead end there would leave the crate on the goal. It stands just
+  // short of that junction, so the push is a short one.
+  std::vector<int> route_nodes{goal_node};
+  std::vector<int> route;  // edge indices: route[i] joins route_nodes[i] and route_nodes[i + 1]
   for (int node = goal_node; node != start_node;) {
     const int via = previous[node];
     route.push_back(via);
     node = edges[via].from == node ? edges[via].to : edges[via].from;
+    route_nodes.push_back(node);
   }
+  std::reverse(route_nodes.begin(), route_nodes.end());  // start to goal
+  std::reverse(route.begin(), route.end());
   int crates = 0;
   std::vector<geometry::Point> placed_objects;
-  for (const int edge_index : route) {
-    if (crates == 3 || lattice.length(edges[edge_index]) < 20.0) {
+  for (std::size_t step = 0; step + 2 < route_nodes.size(); ++step) {
+    const int edge_index = route[step];
+    const int near_end = route_nodes[step];
+    const int far_end = route_nodes[step + 1];
+    const int straight_on = lattice.straightOn(near_end, far_end);
+    const bool turns = straight_on != route[step + 1];
+    if (crates == 3 || lattice.length(edges[edge_index]) < 20.0 || !turns || straight_on < 0 ||
+        !edges[straight_on].open) {
       continue;
     }
     const bool bridge = !std::isfinite(lattice.distances(start_node, edge_index)[goal_node]);
     const ObjectWeight weight = (crates == 1 && !bridge) ? ObjectWeight::Heavy : ObjectWeight::Light;
-    const auto centre = alongEdge(lattice, edges[edge_index], random);
-    // 3.6 m across a 4 m tunnel, 1.2 m deep.
+    const auto centre = beforeJunction(lattice, near_end, far_end, random);
     const bool horizontal = edges[edge_index].horizontal;
-    builder.addObject(centre, horizontal ? 1.2 : kTunnel - 0.4, horizontal ? kTunnel - 0.4 : 1.2, 0.0, weight,
-                      random);
+    builder.addObject(centre, horizontal ? kCrateDepth : kTunnel - 0.4,
+                      horizontal ? kTunnel - 0.4 : kCrateDepth, 0.0, weight, random);
     placed_objects.push_back(centre);
     ++crates;
   }

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 #include <queue>
+#include <string>
 
 #include "common/vehicle.hpp"
 #include "sim/generators/generators.hpp"
@@ -178,6 +179,99 @@ TEST(SimWorldGenerators, PathLengthsMatchThePapersPlaces)
   }
 }
 
+/// The world with `outline` as one more static obstacle.
+World withPlug(const World& world, const geometry::Polygon& outline)
+{
+  World plugged = world;
+  StaticObstacle plug;
+  plug.name = "plug";
+  plug.outline = outline;
+  plugged.obstacles.push_back(plug);
+  return plugged;
+}
+
+/// Shortest static path length between two points of `world` (0.5 m cells).
+double pathBetween(World world, const geometry::Point& from, const geometry::Point& to)
+{
+  world.start = geometry::Pose2{from.x(), from.y(), 0.0};
+  world.goals.at(0).position = to;
+  return staticPathLength(world, 0.5);
+}
+
+bool insideStatic(const World& world, const geometry::Point& point)
+{
+  for (const StaticObstacle& obstacle : world.obstacles) {
+    if (geometry::containsPoint(obstacle.outline, point)) {
+      return true;
+    }
+  }
+  return false;
+}
+
+TEST(SimWorldGenerators, TunnelCratesArePushedIntoTheNextJunctionAndClearItsTurn)
+{
+  // A crate fills its tunnel's width, so the vehicle can only push it ahead along the tunnel. Each one
+  // stands just short of a junction whose side tunnel is open: from behind the crate, the turn into that
+  // side tunnel is closed with the crate in place, and open once the crate is pushed 4 m ahead (the
+  // interaction planner's search_radius_m). A crate mid-tunnel or in a dead end (seed 1 before) fails.
+  constexpr double kPushM = 4.0;
+  int crates = 0;
+  for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+    const World tunnel = generateTunnel(seed);
+    for (const MovableObject& object : tunnel.objects) {
+      const geometry::Polygon outline = placedOutline(object);
+      geometry::Point low = outline.front();
+      geometry::Point high = low;
+      for (const geometry::Point& vertex : outline) {
+        low = low.cwiseMin(vertex);
+        high = high.cwiseMax(vertex);
+      }
+      const geometry::Point extent = high - low;
+      if (extent.maxCoeff() < 3.0) {
+        continue;  // a loose box against a tunnel side
+      }
+      ++crates;
+      const std::string name = "seed " + std::to_string(seed) + " " + object.name;
+      const geometry::Point centre = 0.5 * (low + high);
+      const geometry::Point axis =
+          extent.x() < extent.y() ? geometry::Point(1.0, 0.0) : geometry::Point(0.0, 1.0);
+      const geometry::Point across(-axis.y(), axis.x());
+      // Ahead: toward the nearer junction with an open side tunnel (3 m off the tunnel's centre line).
+      double mouth = -1.0;
+      geometry::Point ahead = axis;
+      double side = 1.0;
+      for (double along = 0.0; along < 60.0 && mouth < 0.0; along += 0.1) {
+        for (const double direction : {1.0, -1.0}) {
+          for (const double lateral : {1.0, -1.0}) {
+            const geometry::Point probe = centre + direction * along * axis + lateral * 3.0 * across;
+            if (mouth < 0.0 && !insideStatic(tunnel, probe)) {
+              mouth = along;
+              ahead = direction * axis;
+              side = lateral;
+            }
+          }
+        }
+      }
+      ASSERT_GE(mouth, 0.0) << name;
+      const geometry::Point behind = centre - 2.5 * ahead;
+      const geometry::Point turned = centre + (mouth + 2.0) * ahead + side * 6.0 * across;
+      const double turn_length = (mouth + 4.5) + 6.0 + 1.0;  // round the corner, with slack for the cells
+      // The crate as the vehicle sees it: no way past its ends (0.2 m from the rock, the vehicle is 0.7 m).
+      const auto plug = [&](double pushed_m) {
+        const geometry::Point grow = 0.5 * across.cwiseAbs();
+        const geometry::Point from = low - grow + pushed_m * ahead;
+        const geometry::Point to = high + grow + pushed_m * ahead;
+        return geometry::Polygon{
+            {from.x(), from.y()}, {to.x(), from.y()}, {to.x(), to.y()}, {from.x(), to.y()}};
+      };
+      EXPECT_LE(pathBetween(withPlug(tunnel, plug(kPushM)), behind, turned), turn_length)
+          << name << ": the junction " << mouth << " m ahead";
+      EXPECT_GT(pathBetween(withPlug(tunnel, plug(0.0)), behind, turned), turn_length) << name;
+    }
+  }
+  EXPECT_GT(crates, 3);
+}
+
 TEST(SimWorldGenerators, DemoRoomHidesTheGoalBehindALightDoorwayBox)
 {
   const World demo = generateDemoRoom();
@@ -196,12 +290,7 @@ TEST(SimWorldGenerators, DemoRoomHidesTheGoalBehindALightDoorwayBox)
   EXPECT_TRUE(crosses);
   // Without pushing, the way round through the opening is much longer than the straight line.
   const double straight = (goal - start).norm();
-  World blocked = demo;
-  StaticObstacle plug;
-  plug.name = "plug";
-  plug.outline = outline;
-  blocked.obstacles.push_back(plug);
-  EXPECT_GT(staticPathLength(blocked, 0.25), 1.6 * straight);  // about 40 m against 22 m
+  EXPECT_GT(staticPathLength(withPlug(demo, outline), 0.25), 1.6 * straight);  // about 40 m against 22 m
 }
 
 TEST(SimWorldGenerators, KindNamesRoundTrip)
