@@ -29,6 +29,7 @@
 #include "bench/scenarios/task_selection.hpp"
 #include "common/config.hpp"
 #include "common/vehicle.hpp"
+#include "sim/world/world_file.hpp"
 
 namespace {
 
@@ -178,6 +179,7 @@ int main(int argc, char** argv)
   double max_sim_time = 900.0;
   double system_budget_minutes = 0.0;
   std::string commit = "unknown";
+  std::string task_world_dir;
   app.add_option("--kinds", kind_list, "comma-separated: room,room_objects,office,willow,tunnel")
       ->capture_default_str();
   app.add_option("--tasks", tasks, "tasks per kind")->check(CLI::PositiveNumber)->capture_default_str();
@@ -217,6 +219,9 @@ int main(int argc, char** argv)
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   app.add_option("--commit", commit, "commit named in the tables' header")->capture_default_str();
+  app.add_option("--task-worlds", task_world_dir,
+                 "write each driven task as a world file (its start and goal) into this folder, to drive it "
+                 "again with ifar-run");
   app.add_flag("--smoke", smoke,
                "CI subset: one task per kind, 0.3 s sampling cap; the runner drives the room task only, 60 s "
                "simulated");
@@ -365,6 +370,14 @@ int main(int argc, char** argv)
   for (const SystemJob& job : jobs) {
     const KeptWorld& world = kept[job.world];
     scenarios::PathPair pair{{}, {}, job.task.start, job.task.goal};
+    if (!task_world_dir.empty()) {
+      const std::string path = task_world_dir + "/" + world.name + "-" + job.task.id + ".yaml";
+      const std::string error = ifar::sim::saveWorldFile(scenarios::taskWorld(world.world, job.task), path);
+      if (!error.empty()) {
+        std::cerr << "ifar-bench: --task-worlds: " << error << "\n";
+        return 2;
+      }
+    }
     for (const std::string planner : {"far", "ours"}) {
       const double used_minutes = std::chrono::duration<double>(Clock::now() - began).count() / 60.0;
       if (system_budget_minutes > 0.0 && used_minutes > system_budget_minutes &&

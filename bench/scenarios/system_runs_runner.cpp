@@ -4,7 +4,6 @@
 #include "bench/scenarios/system_runs.hpp"
 #include "sim/runner/run_config.hpp"
 #include "sim/runner/scenario_runner.hpp"
-#include "sim/world/world_geometry.hpp"
 
 namespace ifar::scenarios {
 
@@ -24,10 +23,7 @@ SystemRun runSystem(const sim::World& world, const Task& task, bool interaction_
     run.reason = std::string("runner settings: ") + error.what();
     return run;
   }
-  request.world = world;
-  request.world.start = geometry::Pose2{task.start.x(), task.start.y(), task.start_heading};
-  request.world.goals = {sim::Goal{"task_" + task.id, task.goal}};
-  sim::updateBounds(request.world);
+  request.world = taskWorld(world, task);
   request.goal = task.goal;
   request.planner.interaction_enabled = interaction_enabled;
   request.max_sim_time_s = settings.max_sim_time_s;

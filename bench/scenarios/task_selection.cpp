@@ -119,4 +119,13 @@ std::vector<Task> selectTasks(const sim::World& world, const ScenarioMaps& maps,
   return tasks;
 }
 
+sim::World taskWorld(const sim::World& world, const Task& task)
+{
+  sim::World driven = world;
+  driven.start = geometry::Pose2{task.start.x(), task.start.y(), task.start_heading};
+  driven.goals = {sim::Goal{"task_" + task.id, task.goal}};
+  sim::updateBounds(driven);
+  return driven;
+}
+
 }  // namespace ifar::scenarios

@@ -38,4 +38,7 @@ struct TaskSelectionSettings {
 std::vector<Task> selectTasks(const sim::World& world, const ScenarioMaps& maps,
                               const TaskSelectionSettings& settings);
 
+/// `world` with the task's start (and heading) and its goal as the only goal: what the runner drives.
+sim::World taskWorld(const sim::World& world, const Task& task);
+
 }  // namespace ifar::scenarios

@@ -103,5 +103,25 @@ TEST(TaskSelection, NoTaskWhenNothingIsLongEnough)
   EXPECT_TRUE(selectTasks(world, maps, settings).empty());
 }
 
+TEST(TaskSelection, TheTaskWorldStartsAndEndsWhereTheTaskDoes)
+{
+  const sim::World world = sim::generateRoom(1, true);
+  const ScenarioMaps maps = buildScenarioMaps(world, MapSettings{});
+  TaskSelectionSettings settings = roomSelection(4);
+  settings.include_world_task = false;
+  const std::vector<Task> tasks = selectTasks(world, maps, settings);
+  ASSERT_FALSE(tasks.empty());
+  const Task& task = tasks.front();
+  const sim::World driven = taskWorld(world, task);
+  EXPECT_EQ(driven.start.position(), task.start);
+  EXPECT_DOUBLE_EQ(driven.start.heading, task.start_heading);
+  ASSERT_EQ(driven.goals.size(), 1u);
+  EXPECT_EQ(driven.goals.front().position, task.goal);
+  EXPECT_EQ(driven.goals.front().name, "task_" + task.id);
+  EXPECT_NE(world.start.position(), task.start);  // a random task: not the world's own start
+  EXPECT_EQ(driven.obstacles.size(), world.obstacles.size());
+  EXPECT_EQ(driven.objects.size(), world.objects.size());
+}
+
 }  // namespace
 }  // namespace ifar::scenarios
