@@ -203,12 +203,13 @@ FrameResult Planner::processFrame(const FrameInput& frame)
   const geometry::Point robot = frame.motion.vehicle_at_end.translation().head<2>();
   robot_ = robot;
   const perception::LayerGrid& grid = perceived.layer.grid;
-  const geometry::Point layer_max = grid.origin + geometry::Point(grid.sideLength(), grid.sideLength());
+  const perception::LayerGrid& extent = perceived.layer.extent;
+  const geometry::Point layer_max = extent.origin + geometry::Point::Constant(extent.sideLength());
   if (known_extent_) {
-    known_extent_->first = known_extent_->first.cwiseMin(grid.origin);
+    known_extent_->first = known_extent_->first.cwiseMin(extent.origin);
     known_extent_->second = known_extent_->second.cwiseMax(layer_max);
   } else {
-    known_extent_ = std::make_pair(grid.origin, layer_max);
+    known_extent_ = std::make_pair(extent.origin, layer_max);
   }
 
   // Stable ids for the movable outlines.

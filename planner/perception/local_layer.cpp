@@ -1,6 +1,8 @@
 #include "planner/perception/local_layer.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
@@ -101,18 +103,66 @@ LayerGrid makeLayerGrid(const geometry::Point& centre, const PerceptionSettings&
   return grid;
 }
 
+LayerGrid croppedLayerGrid(const LayerGrid& layer, const ClassifiedPoints& points, double margin_m)
+{
+  geometry::Point minimum = geometry::Point::Constant(std::numeric_limits<double>::infinity());
+  geometry::Point maximum = -minimum;
+  const geometry::Point layer_max = layer.origin + geometry::Point::Constant(layer.sideLength());
+  for (const std::vector<geometry::Point>* group : {&points.background, &points.movable}) {
+    for (const geometry::Point& point : *group) {
+      if (point.x() >= layer.origin.x() && point.y() >= layer.origin.y() && point.x() < layer_max.x() &&
+          point.y() < layer_max.y()) {
+        minimum = minimum.cwiseMin(point);
+        maximum = maximum.cwiseMax(point);
+      }
+    }
+  }
+  if (!minimum.allFinite()) {
+    return layer;  // nothing inside: the whole (free) layer
+  }
+  const auto cellOf = [&layer](double value, double origin) {
+    return static_cast<int>(std::floor((value - origin) / layer.cell_size_m));
+  };
+  const int margin = static_cast<int>(std::ceil(margin_m / layer.cell_size_m));
+  const int first_column = std::max(0, cellOf(minimum.x(), layer.origin.x()) - margin);
+  const int first_row = std::max(0, cellOf(minimum.y(), layer.origin.y()) - margin);
+  const int last_column = std::min(layer.cells - 1, cellOf(maximum.x(), layer.origin.x()) + margin);
+  const int last_row = std::min(layer.cells - 1, cellOf(maximum.y(), layer.origin.y()) + margin);
+  LayerGrid cropped = layer;
+  cropped.cells = std::max(last_column - first_column, last_row - first_row) + 1;
+  // Square, inside the layer: shift back where the larger side would run over the layer's far edge.
+  const int column = std::min(first_column, layer.cells - cropped.cells);
+  const int row = std::min(first_row, layer.cells - cropped.cells);
+  cropped.origin = layer.origin + geometry::Point(column, row) * layer.cell_size_m;
+  return cropped;
+}
+
 LocalLayer buildLocalLayer(const ClassifiedPoints& points, const geometry::Point& centre,
                            const PerceptionSettings& settings)
 {
   LocalLayer layer;
-  layer.grid = makeLayerGrid(centre, settings);
+  // The raster covers only the part of the layer that holds points (and their inflation): a layer as
+  // large as the sensor's reach costs its full size only where the returns spread that far.
+  const LayerGrid full = makeLayerGrid(centre, settings);
+  layer.extent = full;
+  layer.grid = croppedLayerGrid(full, points, settings.inflation_radius_m + 3.0 * settings.cell_size_m);
+  for (const std::vector<geometry::Point>* group : {&points.background, &points.movable}) {
+    for (const geometry::Point& point : *group) {
+      // Outside the full layer (not just the crop) is what counts as outside.
+      const geometry::Point offset = point - full.origin;
+      if (!(offset.x() >= 0.0 && offset.y() >= 0.0 && offset.x() < full.sideLength() &&
+            offset.y() < full.sideLength())) {
+        ++layer.points_outside_layer;
+      }
+    }
+  }
   const int cells = layer.grid.cells;
   const cv::Mat kernel = discKernel(settings.inflation_radius_m / settings.cell_size_m);
   // Each class gets its own image: a movable object must not merge into the wall it leans on.
   const auto build_class = [&](const std::vector<geometry::Point>& class_points, ObstacleClass obstacle_class,
                                std::vector<std::uint8_t>& occupancy) {
     cv::Mat image = cv::Mat::zeros(cells, cells, CV_8UC1);
-    layer.points_outside_layer += rasterise(class_points, layer.grid, image);
+    rasterise(class_points, layer.grid, image);  // what falls outside the crop is outside the layer
     if (!class_points.empty()) {
       cv::dilate(image, image, kernel, cv::Point(-1, -1), 1, cv::BORDER_CONSTANT, cv::Scalar(0));
       traceContours(image, layer.grid, obstacle_class, settings, layer);

@@ -42,7 +42,8 @@ struct LayerGrid {
 LayerGrid makeLayerGrid(const geometry::Point& centre, const PerceptionSettings& settings);
 
 struct LocalLayer {
-  LayerGrid grid;
+  LayerGrid extent;  // the whole layer around the vehicle
+  LayerGrid grid;    // the raster: the square part of `extent` that holds the points and their inflation
   std::vector<LayerPolygon> polygons;
   /// Inflated occupancy, row-major (index row * cells + column), 1 = occupied: for free-space queries.
   std::vector<std::uint8_t> background_occupancy;
@@ -50,6 +51,10 @@ struct LocalLayer {
   std::size_t points_outside_layer = 0;
   std::size_t dropped_contours = 0;  // smaller than min_polygon_area_m2 or fewer than 3 vertices
 };
+
+/// The square part of `layer` (aligned to its cells) that holds every point of `points` inside `layer`,
+/// grown by `margin_m`; `layer` itself when none is inside.
+LayerGrid croppedLayerGrid(const LayerGrid& layer, const ClassifiedPoints& points, double margin_m);
 
 /// Rasterises, inflates (disc of settings.inflation_radius_m), traces outer borders and holes
 /// (Suzuki-Abe border following) and simplifies (Douglas-Peucker) each class.

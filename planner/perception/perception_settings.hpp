@@ -17,8 +17,10 @@ struct PerceptionSettings {
   /// Points with calibrated reflectivity at or above this are movable (retro-reflective tags read
   /// 101..255 on a VLP-16); used when no detector polygons are given.
   float movable_reflectivity_threshold = 101.0F;
-  /// The vehicle-centred local layer: square side and cell size (metres).
-  double layer_size_m = 60.0;
+  /// The vehicle-centred local layer: square side and cell size (metres). Twice the lidar's range, so
+  /// the layer holds all the sensor can see: where it cuts a remembered wall, the cut corner is out of
+  /// sight and behind the vehicle (a cut that moves with the vehicle makes the route flip between ways).
+  double layer_size_m = 200.0;
   double cell_size_m = 0.15;
   /// Obstacles grow by this radius before contours are taken: the vehicle's half width.
   double inflation_radius_m = 0.35;

@@ -116,5 +116,48 @@ void BM_PlannerFirstFrameDemoRoom(benchmark::State& state)
 }
 BENCHMARK(BM_PlannerFirstFrameDemoRoom)->Unit(benchmark::kMillisecond);
 
+const std::vector<FrameInput>& tunnelFrames()
+{
+  static const std::vector<FrameInput> recorded = [] {
+    const sim::WorldResult world =
+        sim::loadWorldFile(std::string(IFAR_SOURCE_DIR) + "/config/worlds/tunnel.yaml");
+    if (!world.ok()) {
+      return std::vector<FrameInput>{};
+    }
+    FrameAssembler assembler{InputSettings{}};
+    return testing::feedAll(testing::recordSimulation(world.world(), 4.0, 1.0), assembler);
+  }();
+  return recorded;
+}
+
+/// The tunnel's first tunnel, 100 m lidar range, with the local layer's side as the argument (metres):
+/// what a layer that holds the whole sensor range costs per frame.
+void BM_PlannerFrameTunnel(benchmark::State& state)
+{
+  if (tunnelFrames().empty()) {
+    state.SkipWithError("config/worlds/tunnel.yaml did not load");
+    return;
+  }
+  PlannerSettings settings;
+  settings.perception.layer_size_m = static_cast<double>(state.range(0));
+  Planner planner{settings};
+  planner.setGoal(Goal{1, geometry::Point(211.5, 160.2)});
+  std::size_t index = 0;
+  double perception_ms = 0.0;
+  double local_graph_ms = 0.0;
+  for (auto _ : state) {
+    const FrameResult result = planner.processFrame(tunnelFrames()[index]);
+    perception_ms += result.status.timings.perception_ms;
+    local_graph_ms += result.status.timings.local_graph_ms;
+    benchmark::DoNotOptimize(result.path.length_m);
+    index = (index + 1) % tunnelFrames().size();
+  }
+  const double iterations = static_cast<double>(std::max<benchmark::IterationCount>(state.iterations(), 1));
+  state.counters["perception_ms"] = perception_ms / iterations;
+  state.counters["local_graph_ms"] = local_graph_ms / iterations;
+  state.counters["vertices"] = static_cast<double>(planner.graph().vertexCount());
+}
+BENCHMARK(BM_PlannerFrameTunnel)->Arg(60)->Arg(120)->Arg(200)->Unit(benchmark::kMillisecond);
+
 }  // namespace
 }  // namespace ifar::planner

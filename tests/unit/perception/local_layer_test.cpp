@@ -25,9 +25,17 @@ std::vector<geometry::Point> outlinePoints(const geometry::Polygon& box)
   return points;
 }
 
-TEST(LocalLayer, GridIsCentredAndSnappedToCells)
+/// A 60 m layer (the grid numbers below are worked out for it).
+PerceptionSettings sixtyMetreLayer()
 {
   PerceptionSettings settings;
+  settings.layer_size_m = 60.0;
+  return settings;
+}
+
+TEST(LocalLayer, GridIsCentredAndSnappedToCells)
+{
+  const PerceptionSettings settings = sixtyMetreLayer();
   const LayerGrid grid = makeLayerGrid(geometry::Point(10.07, -3.0), settings);
   EXPECT_EQ(grid.cells, 400);
   EXPECT_NEAR(grid.sideLength(), 60.0, 1e-9);
@@ -86,7 +94,7 @@ TEST(LocalLayer, EnclosedFreeSpaceIsAHole)
 
 TEST(LocalLayer, OccupancyMarksInflatedCells)
 {
-  PerceptionSettings settings;
+  const PerceptionSettings settings = sixtyMetreLayer();
   ClassifiedPoints points;
   points.movable = {geometry::Point(1.0, 1.0)};
   const LocalLayer layer = buildLocalLayer(points, geometry::Point(0.0, 0.0), settings);
@@ -98,7 +106,9 @@ TEST(LocalLayer, OccupancyMarksInflatedCells)
     return static_cast<std::size_t>(row) * static_cast<std::size_t>(layer.grid.cells) +
            static_cast<std::size_t>(column);
   };
-  ASSERT_EQ(layer.movable_occupancy.size(), 400U * 400U);
+  const auto cells = static_cast<std::size_t>(layer.grid.cells);
+  ASSERT_EQ(layer.movable_occupancy.size(), cells * cells);
+  ASSERT_EQ(layer.background_occupancy.size(), cells * cells);
   EXPECT_EQ(layer.movable_occupancy[cell_index(geometry::Point(1.0, 1.0))], 1);
   EXPECT_EQ(layer.movable_occupancy[cell_index(geometry::Point(1.3, 1.0))], 1);  // within the radius
   EXPECT_EQ(layer.movable_occupancy[cell_index(geometry::Point(1.6, 1.0))], 0);
@@ -108,9 +118,52 @@ TEST(LocalLayer, OccupancyMarksInflatedCells)
   EXPECT_NEAR(geometry::width(layer.polygons[0].vertices), 0.7, 2.0 * settings.cell_size_m);
 }
 
+TEST(LocalLayer, TheRasterCoversOnlyThePointsAndTheirInflation)
+{
+  // A 200 m layer with two boxes 10 m apart: the raster is the square around them, not 1,334 cells a side,
+  // and the polygons are what the whole layer gives.
+  PerceptionSettings settings;
+  settings.layer_size_m = 200.0;
+  const geometry::Polygon near_box = synthetic::boxFootprint(4.0, 1.0, 2.0, 0.6);
+  const geometry::Polygon far_box = synthetic::boxFootprint(-6.0, 8.0, 1.0, 1.0);
+  ClassifiedPoints points;
+  points.background = outlinePoints(near_box);
+  points.movable = outlinePoints(far_box);
+  const LocalLayer layer = buildLocalLayer(points, geometry::Point(0.0, 0.0), settings);
+  EXPECT_EQ(layer.extent.cells, 1334);
+  EXPECT_LT(layer.grid.cells, 120);  // 11.5 m of points plus the margin, in 0.15 m cells
+  EXPECT_GE(layer.grid.origin.x(), layer.extent.origin.x());
+  EXPECT_LE(layer.grid.origin.x(), -6.5 - settings.inflation_radius_m);
+  EXPECT_LE(layer.grid.origin.y(), 0.7 - settings.inflation_radius_m);
+  EXPECT_GE(layer.grid.origin.x() + layer.grid.sideLength(), 5.0 + settings.inflation_radius_m);
+  EXPECT_GE(layer.grid.origin.y() + layer.grid.sideLength(), 8.5 + settings.inflation_radius_m);
+  const auto background = polygonsOf(layer, ObstacleClass::Background, BoundaryKind::Outer);
+  const auto movable = polygonsOf(layer, ObstacleClass::Movable, BoundaryKind::Outer);
+  ASSERT_EQ(background.size(), 1U);
+  ASSERT_EQ(movable.size(), 1U);
+  EXPECT_LE(mismatchToInflatedBox(background[0].vertices, near_box, settings.inflation_radius_m),
+            2.0 * settings.cell_size_m);
+  EXPECT_LE(mismatchToInflatedBox(movable[0].vertices, far_box, settings.inflation_radius_m),
+            2.0 * settings.cell_size_m);
+}
+
+TEST(LocalLayer, ACropNearTheLayersEdgeStaysInsideTheLayer)
+{
+  PerceptionSettings settings = sixtyMetreLayer();
+  ClassifiedPoints points;
+  points.background = {geometry::Point(29.9, 29.9), geometry::Point(20.0, 29.0)};
+  const LayerGrid full = makeLayerGrid(geometry::Point(0.0, 0.0), settings);
+  const LayerGrid crop = croppedLayerGrid(full, points, 1.0);
+  EXPECT_LT(crop.cells, 100);
+  EXPECT_NEAR(crop.origin.x() + crop.sideLength(), full.origin.x() + full.sideLength(), 1e-9);
+  EXPECT_NEAR(crop.origin.y() + crop.sideLength(), full.origin.y() + full.sideLength(), 1e-9);
+  EXPECT_LE(crop.origin.x(), 20.0 - 1.0);
+  EXPECT_LE(crop.origin.y(), 29.0 - 1.0);
+}
+
 TEST(LocalLayer, PointsOutsideTheLayerAreCounted)
 {
-  PerceptionSettings settings;
+  const PerceptionSettings settings = sixtyMetreLayer();
   ClassifiedPoints points;
   points.background = {geometry::Point(31.0, 0.0), geometry::Point(0.0, -40.0), geometry::Point(5.0, 5.0)};
   const LocalLayer layer = buildLocalLayer(points, geometry::Point(0.0, 0.0), settings);
@@ -120,7 +173,7 @@ TEST(LocalLayer, PointsOutsideTheLayerAreCounted)
 
 TEST(LocalLayer, ObstacleCutByTheLayerEdgeKeepsItsInsidePart)
 {
-  PerceptionSettings settings;
+  const PerceptionSettings settings = sixtyMetreLayer();
   ClassifiedPoints points;
   points.background = {geometry::Point(29.95, 0.0)};  // the last column of a layer centred on the origin
   const LocalLayer layer = buildLocalLayer(points, geometry::Point(0.0, 0.0), settings);

@@ -93,8 +93,9 @@ TEST(PerceptionPipeline, KnownBoxesGiveInflatedPolygonsSplitByReflectivity)
         << centre.transpose();
   }
   // The layer is centred on the vehicle.
-  EXPECT_NEAR(result.layer.grid.origin.x() + 30.0, 1.0, 0.15);
-  EXPECT_NEAR(result.layer.grid.origin.y() + 30.0, 2.0, 0.15);
+  const double half = 0.5 * result.layer.extent.sideLength();
+  EXPECT_NEAR(result.layer.extent.origin.x() + half, 1.0, 0.15);
+  EXPECT_NEAR(result.layer.extent.origin.y() + half, 2.0, 0.15);
 }
 
 TEST(PerceptionPipeline, DetectorPolygonsDecideMovable)
@@ -186,12 +187,13 @@ TEST(PerceptionPipeline, EmptyScanGivesNoPolygonsAndSaysSo)
 {
   const BoxScene scene;
   const std::vector<SensorPoint> points;
-  const PerceptionResult result = runPerception(scene.input(points), PerceptionSettings{});
+  const PerceptionSettings settings;
+  const PerceptionResult result = runPerception(scene.input(points), settings);
   EXPECT_EQ(result.status, PerceptionStatus::EmptyScan);
   EXPECT_TRUE(result.layer.polygons.empty());
   EXPECT_NE(result.message.find("empty scan"), std::string::npos);
   EXPECT_STREQ(toString(result.status), "empty scan");
-  EXPECT_EQ(result.layer.grid.cells, 400);  // the layer is still there: all of it free
+  EXPECT_EQ(result.layer.grid.cells, settings.layerCells());  // the layer is still there: all of it free
 }
 
 TEST(PerceptionPipeline, GroundOnlyScanHasNoObstaclePoints)

@@ -59,9 +59,9 @@ TEST(PerceptionSettings, ProjectConfigLoads)
 {
   const PerceptionSettings settings = loadPerceptionSettings(
       common::ConfigNode::loadFile(std::string(IFAR_SOURCE_DIR) + "/config/planner.yaml"));
-  EXPECT_DOUBLE_EQ(settings.layer_size_m, 60.0);
+  EXPECT_DOUBLE_EQ(settings.layer_size_m, 200.0);
   EXPECT_DOUBLE_EQ(settings.cell_size_m, 0.15);
-  EXPECT_EQ(settings.layerCells(), 400);
+  EXPECT_EQ(settings.layerCells(), 1334);
   EXPECT_DOUBLE_EQ(settings.inflation_radius_m, 0.35);
 }
 
