@@ -13,6 +13,7 @@
 #include "planner/core/planner.hpp"
 #include "planner/graph/graph_file.hpp"
 #include "sim/simulator/builtin_worlds.hpp"
+#include "sim/world/world_geometry.hpp"
 #include "tests/unit/planner_core/simulated_feed.hpp"
 
 namespace ifar::planner {
@@ -332,6 +333,70 @@ TEST(PlannerFrameAssembler, SimulatedPacketsMakeOneFramePerRevolutionWithMotion)
   // 10 Hz: a full revolution holds about 0.1 s of firings.
   EXPECT_NEAR(frames[1].motion.duration_s, 0.1, 0.015);
   EXPECT_EQ(frames[1].utime - frames[0].utime, 100'000);
+}
+
+/// A 4 m tunnel along y (x -2 .. 2), 300 m long, in rock. The vehicle starts 20 m south of y 0, facing
+/// north; the goal is 40 m east of y 0, in rock nobody has seen inside: the way there leads round the north
+/// or the south end of the tunnel's east wall, as far as it is known.
+sim::World tunnelInRock()
+{
+  sim::World world;
+  world.name = "tunnel in rock";
+  const auto rock = [&world](double x0, double y0, double x1, double y1) {
+    sim::StaticObstacle obstacle;
+    obstacle.name = "rock_" + std::to_string(world.obstacles.size());
+    obstacle.outline = {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+    obstacle.height_m = 4.0;
+    world.obstacles.push_back(obstacle);
+  };
+  rock(-12.0, -152.0, -2.0, 152.0);
+  rock(2.0, -152.0, 12.0, 152.0);
+  rock(-2.0, 150.0, 2.0, 152.0);
+  rock(-2.0, -152.0, 2.0, -150.0);
+  world.start = geometry::Pose2{0.0, -20.0, 0.5 * M_PI};
+  world.goals.push_back(sim::Goal{"east", geometry::Point(40.0, 0.0)});
+  sim::updateBounds(world);
+  return world;
+}
+
+/// Drives north along the tunnel at 1 m/s for 30 s and returns, per frame once the vehicle is 3 m past the
+/// goal's y, whether the path's first step points south (back the way it came).
+std::vector<bool> southboundFrames(double layer_size_m)
+{
+  static const std::vector<testing::FeedRecord> records =
+      testing::recordSimulation(tunnelInRock(), 30.0, 1.0);
+  FrameAssembler assembler{InputSettings{}};
+  const std::vector<FrameInput> frames = testing::feedAll(records, assembler);
+  PlannerSettings settings;
+  settings.perception.layer_size_m = layer_size_m;
+  Planner planner{settings};
+  EXPECT_TRUE(planner.setGoal(Goal{1, geometry::Point(40.0, 0.0)}));
+  std::vector<bool> southbound;
+  for (std::size_t index = 0; index < frames.size(); ++index) {
+    const FrameResult result = planner.processFrame(frames[index]);
+    if (frames[index].motion.vehicle_at_end.translation().y() < 3.0) {
+      continue;
+    }
+    EXPECT_TRUE(result.path.valid) << result.status.message;
+    if (result.path.valid && result.path.waypoints.size() >= 2) {
+      const geometry::Point step = result.path.waypoints[1].position - result.path.waypoints[0].position;
+      southbound.push_back(step.y() < 0.0);
+    }
+  }
+  return southbound;
+}
+
+TEST(PlannerCore, DrivingOnAlongATunnelTheRouteDoesNotTurnBackWhereTheLayerCutsTheWall)
+{
+  // The layer holds all the lidar reaches, so the wall's end behind the vehicle is its remembered end,
+  // which stays put, and the route round the end ahead only gets better as the vehicle goes on.
+  const std::vector<bool> southbound = southboundFrames(PlannerSettings{}.perception.layer_size_m);
+  ASSERT_GE(southbound.size(), 50U);
+  EXPECT_EQ(std::count(southbound.begin(), southbound.end(), true), 0);
+  // Control: a 60 m layer cuts the east wall 30 m behind the vehicle, and that corner follows it north:
+  // once north of the goal, going back round it is the shorter way.
+  const std::vector<bool> sixty = southboundFrames(60.0);
+  EXPECT_GT(std::count(sixty.begin(), sixty.end(), true), 0);
 }
 
 TEST(PlannerFrameAssembler, BadPosesAreRefusedWithAReason)
