@@ -56,17 +56,21 @@ void BM_PlannerReplan(benchmark::State& state)
 }
 BENCHMARK(BM_PlannerReplan)->Unit(benchmark::kMicrosecond);
 
+/// Frames of the vehicle driving straight at `linear` m/s for `seconds` from the start of a world file under
+/// config/worlds; empty when the file does not load.
+std::vector<FrameInput> worldFileFrames(const std::string& file, double seconds, double linear)
+{
+  const sim::WorldResult world = sim::loadWorldFile(std::string(IFAR_SOURCE_DIR) + "/config/worlds/" + file);
+  if (!world.ok()) {
+    return {};
+  }
+  FrameAssembler assembler{InputSettings{}};
+  return testing::feedAll(testing::recordSimulation(world.world(), seconds, linear), assembler);
+}
+
 const std::vector<FrameInput>& demoRoomFrames()
 {
-  static const std::vector<FrameInput> recorded = [] {
-    const sim::WorldResult world =
-        sim::loadWorldFile(std::string(IFAR_SOURCE_DIR) + "/config/worlds/demo_room.yaml");
-    if (!world.ok()) {
-      return std::vector<FrameInput>{};
-    }
-    FrameAssembler assembler{InputSettings{}};
-    return testing::feedAll(testing::recordSimulation(world.world(), 2.0, 1.0), assembler);
-  }();
+  static const std::vector<FrameInput> recorded = worldFileFrames("demo_room.yaml", 2.0, 1.0);
   return recorded;
 }
 
@@ -118,15 +122,7 @@ BENCHMARK(BM_PlannerFirstFrameDemoRoom)->Unit(benchmark::kMillisecond);
 
 const std::vector<FrameInput>& tunnelFrames()
 {
-  static const std::vector<FrameInput> recorded = [] {
-    const sim::WorldResult world =
-        sim::loadWorldFile(std::string(IFAR_SOURCE_DIR) + "/config/worlds/tunnel.yaml");
-    if (!world.ok()) {
-      return std::vector<FrameInput>{};
-    }
-    FrameAssembler assembler{InputSettings{}};
-    return testing::feedAll(testing::recordSimulation(world.world(), 4.0, 1.0), assembler);
-  }();
+  static const std::vector<FrameInput> recorded = worldFileFrames("tunnel.yaml", 4.0, 1.0);
   return recorded;
 }
 
