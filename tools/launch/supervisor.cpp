@@ -225,40 +225,34 @@ void Supervisor::reapChildren(bool stopping, SupervisorResult& result)
   }
 }
 
-bool Supervisor::anyRunning() const
-{
-  return std::any_of(children_.begin(), children_.end(), [](const Child& child) { return child.pid > 0; });
-}
-
 void Supervisor::stopAll(double timeout_s)
 {
-  if (!anyRunning()) {
-    return;
-  }
-  for (const auto& child : children_) {
-    if (child.pid > 0) {
-      kill(-child.pid, SIGINT);
-    }
-  }
+  // In the reverse of the file's order, each one gone (or killed) before the next is asked: what starts
+  // first (the recorder) stops last, so the log holds everyone's last messages (the executive's arrival,
+  // its zero velocity on shutdown).
   SupervisorResult ignored;
-  const std::int64_t deadline = common::monotonicMicroseconds() + common::secondsToMicroseconds(timeout_s);
-  while (anyRunning() && common::monotonicMicroseconds() < deadline) {
-    for (auto& child : children_) {
-      drainOutput(child, false);
+  for (auto child = children_.rbegin(); child != children_.rend(); ++child) {
+    if (child->pid <= 0) {
+      continue;
     }
-    reapChildren(true, ignored);
-    usleep(20'000);
-  }
-  for (auto& child : children_) {
-    if (child.pid > 0) {
-      say("launch", child.spec.name + " did not stop within " + std::to_string(timeout_s).substr(0, 4) +
+    kill(-child->pid, SIGINT);
+    const std::int64_t deadline = common::monotonicMicroseconds() + common::secondsToMicroseconds(timeout_s);
+    while (child->pid > 0 && common::monotonicMicroseconds() < deadline) {
+      for (auto& other : children_) {
+        drainOutput(other, false);
+      }
+      reapChildren(true, ignored);
+      usleep(10'000);
+    }
+    if (child->pid > 0) {
+      say("launch", child->spec.name + " did not stop within " + std::to_string(timeout_s).substr(0, 4) +
                         " s: killing it");
-      kill(-child.pid, SIGKILL);
+      kill(-child->pid, SIGKILL);
+      while (child->pid > 0) {
+        reapChildren(true, ignored);
+        usleep(10'000);
+      }
     }
-  }
-  while (anyRunning()) {
-    reapChildren(true, ignored);
-    usleep(10'000);
   }
 }
 

@@ -49,7 +49,6 @@ class Supervisor {
   void drainOutput(Child& child, bool flush_partial);
   void say(const std::string& name, const std::string& line);
   void stopAll(double timeout_s);
-  bool anyRunning() const;
 
   std::vector<Child> children_;
   std::string program_directory_;

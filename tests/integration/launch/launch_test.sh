@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# ifar launch as a real process: prefixed output, respawn with back-off, SIGINT then SIGKILL on stop,
-# a required process that fails ends the launch with exit code 1, a bad launch file exits 2.
+# ifar launch as a real process: prefixed output, respawn with back-off, SIGINT then SIGKILL on stop in
+# the reverse of the file's order, a required process that fails ends the launch with exit code 1, a bad
+# launch file exits 2.
 set -euo pipefail
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -10,7 +11,7 @@ cat > "$work/respawn.yaml" <<'YAML'
 stop_timeout_s: 1
 processes:
   - name: ticker
-    command: [bash, -c, 'for i in 1 2 3 4 5 6 7 8 9 10; do echo tick $i; sleep 0.2; done']
+    command: [bash, -c, 'for i in $(seq 1 30); do echo tick $i; sleep 0.2; done']
   - name: crasher
     command: [bash, -c, 'echo crashing; exit 3']
     respawn: true
@@ -29,6 +30,18 @@ grep -q 'restarting crasher in 0.40 s' "$work/out" || fail "no back-off on repea
 grep -q 'ticker killed by signal 2' "$work/out" || fail "ticker did not get SIGINT on stop"
 grep -q 'stubborn did not stop within 1.00 s: killing it' "$work/out" || fail "stubborn process not killed"
 pgrep -f 'trap "" INT; echo ignoring INT' > /dev/null && fail "stubborn process survived"
+
+# Stopping goes in the reverse of the file's order, each process gone before the next is asked: the first
+# (a recorder) still runs when the last has finished its shutdown, which takes it 0.3 s here.
+cat > "$work/order.yaml" <<YAML
+processes:
+  - name: recorder
+    command: [bash, -c, 'trap "[ -e $work/executive-gone ] && echo after > $work/order || echo before > $work/order; exit 0" INT; while true; do sleep 0.05; done']
+  - name: executive
+    command: [bash, -c, 'trap "sleep 0.3; touch $work/executive-gone; exit 0" INT; while true; do sleep 0.05; done']
+YAML
+ifar launch "$work/order.yaml" --duration 0.5 --no-colour > "$work/out" 2>&1 || fail "order launch failed"
+[ "$(cat "$work/order" 2>/dev/null)" = after ] || fail "the first process was stopped before the last had gone"
 
 cat > "$work/required.yaml" <<'YAML'
 processes:
