@@ -32,7 +32,8 @@ grep -q 'stubborn did not stop within 1.00 s: killing it' "$work/out" || fail "s
 pgrep -f 'trap "" INT; echo ignoring INT' > /dev/null && fail "stubborn process survived"
 
 # Stopping goes in the reverse of the file's order, each process gone before the next is asked: the first
-# (a recorder) still runs when the last has finished its shutdown, which takes it 0.3 s here.
+# (a recorder) still runs when the last has finished its shutdown, which takes it 0.3 s here. The 3 s
+# run leaves both time to set their traps on a loaded machine.
 cat > "$work/order.yaml" <<YAML
 processes:
   - name: recorder
@@ -40,7 +41,7 @@ processes:
   - name: executive
     command: [bash, -c, 'trap "sleep 0.3; touch $work/executive-gone; exit 0" INT; while true; do sleep 0.05; done']
 YAML
-ifar launch "$work/order.yaml" --duration 0.5 --no-colour > "$work/out" 2>&1 || fail "order launch failed"
+ifar launch "$work/order.yaml" --duration 3 --no-colour > "$work/out" 2>&1 || fail "order launch failed"
 [ "$(cat "$work/order" 2>/dev/null)" = after ] || fail "the first process was stopped before the last had gone"
 
 cat > "$work/required.yaml" <<'YAML'
