@@ -146,23 +146,14 @@ LocalLayer buildLocalLayer(const ClassifiedPoints& points, const geometry::Point
   const LayerGrid full = makeLayerGrid(centre, settings);
   layer.extent = full;
   layer.grid = croppedLayerGrid(full, points, settings.inflation_radius_m + 3.0 * settings.cell_size_m);
-  for (const std::vector<geometry::Point>* group : {&points.background, &points.movable}) {
-    for (const geometry::Point& point : *group) {
-      // Outside the full layer (not just the crop) is what counts as outside.
-      const geometry::Point offset = point - full.origin;
-      if (!(offset.x() >= 0.0 && offset.y() >= 0.0 && offset.x() < full.sideLength() &&
-            offset.y() < full.sideLength())) {
-        ++layer.points_outside_layer;
-      }
-    }
-  }
   const int cells = layer.grid.cells;
   const cv::Mat kernel = discKernel(settings.inflation_radius_m / settings.cell_size_m);
   // Each class gets its own image: a movable object must not merge into the wall it leans on.
   const auto build_class = [&](const std::vector<geometry::Point>& class_points, ObstacleClass obstacle_class,
                                std::vector<std::uint8_t>& occupancy) {
     cv::Mat image = cv::Mat::zeros(cells, cells, CV_8UC1);
-    rasterise(class_points, layer.grid, image);  // what falls outside the crop is outside the layer
+    // The crop holds every point inside the layer, so what falls outside it is outside the layer.
+    layer.points_outside_layer += rasterise(class_points, layer.grid, image);
     if (!class_points.empty()) {
       cv::dilate(image, image, kernel, cv::Point(-1, -1), 1, cv::BORDER_CONSTANT, cv::Scalar(0));
       traceContours(image, layer.grid, obstacle_class, settings, layer);
