@@ -53,11 +53,14 @@ std::size_t BackgroundMemory::rememberInflatedOutline(const geometry::Polygon& i
   // Half a cell of slack: the outline was traced on cells, so its border is a cell's width uncertain.
   const double inside_m = std::max(0.0, inflation_m - 0.5 * cell_size_);
   std::vector<geometry::Point> cells;
-  for (double y = (std::floor(minimum.y() / cell_size_) + 0.5) * cell_size_; y < maximum.y();
-       y += cell_size_) {
-    for (double x = (std::floor(minimum.x() / cell_size_) + 0.5) * cell_size_; x < maximum.x();
-         x += cell_size_) {
-      const geometry::Point centre(x, y);
+  // Integer cell indices (a floating-point counter would drift over a long outline).
+  const auto first_column = static_cast<std::int64_t>(std::floor(minimum.x() / cell_size_));
+  const auto first_row = static_cast<std::int64_t>(std::floor(minimum.y() / cell_size_));
+  for (std::int64_t row = first_row; (static_cast<double>(row) + 0.5) * cell_size_ < maximum.y(); ++row) {
+    for (std::int64_t column = first_column; (static_cast<double>(column) + 0.5) * cell_size_ < maximum.x();
+         ++column) {
+      const geometry::Point centre((static_cast<double>(column) + 0.5) * cell_size_,
+                                   (static_cast<double>(row) + 0.5) * cell_size_);
       if (geometry::containsPoint(inflated_outline, centre) &&
           geometry::distanceToBoundary(inflated_outline, centre) >= inside_m) {
         cells.push_back(centre);
