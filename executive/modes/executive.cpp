@@ -234,8 +234,19 @@ void Executive::stepFollow(Cycle& cycle)
   const auto distance_to = [&cycle, &waypoints](std::size_t index) {
     return (waypoints[index].position - cycle.pose.position()).norm();
   };
+  // Passed: within the tolerance, or within the pass radius and beyond the waypoint, on the next leg's
+  // side of the line through it square to that leg.
+  const auto passed = [&](std::size_t index) {
+    const double distance = distance_to(index);
+    if (distance <= settings_.waypoint_tolerance_m) {
+      return true;
+    }
+    const geometry::Point leg = waypoints[index + 1].position - waypoints[index].position;
+    return distance <= settings_.waypoint_pass_radius_m &&
+           leg.dot(cycle.pose.position() - waypoints[index].position) > 0.0;
+  };
   while (
-      waypoint_index_ < last && distance_to(waypoint_index_) <= settings_.waypoint_tolerance_m &&
+      waypoint_index_ < last && passed(waypoint_index_) &&
       !(waypoints[waypoint_index_].kind == WaypointKind::Topological && planForWaypoint(waypoint_index_))) {
     ++waypoint_index_;
   }

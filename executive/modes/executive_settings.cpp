@@ -72,6 +72,7 @@ ExecutiveSettings loadExecutiveSettings(const common::ConfigNode& node)
   settings.stale.motor_s = positive(node, "stale_after_s.motor");
   settings.stale.obstacles_s = positive(node, "stale_after_s.obstacles");
   settings.waypoint_tolerance_m = positive(node, "waypoint_tolerance_m");
+  settings.waypoint_pass_radius_m = positive(node, "waypoint_pass_radius_m");
   settings.goal_tolerance_m = positive(node, "goal_tolerance_m");
   settings.push_switch_radius_m = positive(node, "push_switch_radius_m");
   settings.replan_timeout_s = positive(node, "replan_timeout_s");

@@ -35,7 +35,10 @@ struct PushedObjectSettings {
 struct ExecutiveSettings {
   StaleThresholds stale;
   double waypoint_tolerance_m = 0.4;  ///< an intermediate waypoint counts as passed within this
-  double goal_tolerance_m = 0.3;      ///< the goal counts as reached within this
+  /// ... and within this when the vehicle stands beyond it, on the next leg's side of the line through it
+  /// square to that leg (a door post's inflated corner is closer to the post than the vehicle can get).
+  double waypoint_pass_radius_m = 1.0;
+  double goal_tolerance_m = 0.3;  ///< the goal counts as reached within this
   double push_switch_radius_m =
       1.5;  ///< r of Algorithm 2: switch to pushing this close to a topological waypoint
   double replan_timeout_s = 10.0;  ///< waiting longer for a replanned path stops the vehicle

@@ -165,6 +165,28 @@ TEST_F(ExecutiveTest, StoppingBetweenTheWaypointAndGoalTolerancesIsNotArrival)
   EXPECT_LE(std::abs(pose_.x - 3.0), settings_.goal_tolerance_m);
 }
 
+TEST_F(ExecutiveTest, AWaypointTheVehicleIsBeyondCountsAsPassedWithinThePassRadius)
+{
+  // The corner waypoint (2.0, 0.6) stands where a door post's inflated corner would: the vehicle goes by
+  // 0.67 m from it, outside waypoint_tolerance_m. Beyond it (on the next leg's side of the line through
+  // it square to that leg) and within waypoint_pass_radius_m it is passed; short of it, or farther than
+  // the pass radius, it is still the target.
+  ASSERT_LT(settings_.waypoint_tolerance_m, 0.67);
+  ASSERT_GT(settings_.waypoint_pass_radius_m, 0.67);
+  ASSERT_LT(settings_.waypoint_pass_radius_m, 1.5);
+  Path path = straightPath();
+  path.waypoints = {waypoint(0.0, 0.0), waypoint(2.0, 0.6), waypoint(6.0, 0.0)};
+  const auto target_from = [&](const Pose2& pose) {
+    Executive executive(settings_, vehicle_);
+    pose_ = pose;
+    now_us_ += kCycleUs;
+    return executive.step(now_us_, freshInputs(now_us_, path)).status.target;
+  };
+  EXPECT_NEAR(target_from(Pose2{2.3, 0.0, 0.0}).x(), 6.0, 1e-9);  // beyond, 0.67 m away
+  EXPECT_NEAR(target_from(Pose2{1.7, 0.0, 0.0}).x(), 2.0, 1e-9);  // short of it, 0.67 m away
+  EXPECT_NEAR(target_from(Pose2{3.4, 0.0, 0.0}).x(), 2.0, 1e-9);  // beyond, but 1.52 m away
+}
+
 TEST_F(ExecutiveTest, FollowingThatGetsNowhereBacksOffAndTriesAgain)
 {
   // Facing +y with a wall 5 cm off the right side and the goal 2.3 m behind: turning round would sweep
