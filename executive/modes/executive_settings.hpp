@@ -42,7 +42,7 @@ struct ExecutiveSettings {
   double push_switch_radius_m =
       1.5;  ///< r of Algorithm 2: switch to pushing this close to a topological waypoint
   double replan_timeout_s = 10.0;  ///< waiting longer for a replanned path stops the vehicle
-  double stall_timeout_s = 4.0;    ///< following without moving this long: back off and try again
+  double stall_timeout_s = 1.5;    ///< following without moving this long: back off and try again
   /// Vehicle reference point (the pose) to the bumper face; the rest of the vehicle length is behind.
   /// The Executive builds the follower's footprint from this and the vehicle's length and width.
   double reference_to_bumper_m = 0.45;
