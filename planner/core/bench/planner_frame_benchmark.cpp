@@ -4,6 +4,7 @@
 // run a fresh planner's first frame (every object planned from scratch).
 
 #include <algorithm>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -68,6 +69,35 @@ std::vector<FrameInput> worldFileFrames(const std::string& file, double seconds,
   return testing::feedAll(testing::recordSimulation(world.world(), seconds, linear), assembler);
 }
 
+/// One counter of the frames benchmarks: its name and what it reads off each frame's result.
+struct FrameCounter {
+  const char* name;
+  double (*value)(const FrameResult&);
+};
+
+/// Processes `frames` in turn (from the first again after the last), one per iteration, and reports each
+/// counter's mean per frame.
+void processFramesInTurn(benchmark::State& state, Planner& planner, const std::vector<FrameInput>& frames,
+                         std::initializer_list<FrameCounter> counters)
+{
+  std::vector<double> sums(counters.size(), 0.0);
+  std::size_t index = 0;
+  for (auto _ : state) {
+    const FrameResult result = planner.processFrame(frames[index]);
+    std::size_t counter_index = 0;
+    for (const FrameCounter& counter : counters) {
+      sums[counter_index++] += counter.value(result);
+    }
+    benchmark::DoNotOptimize(result.path.length_m);
+    index = (index + 1) % frames.size();
+  }
+  const double iterations = static_cast<double>(std::max<benchmark::IterationCount>(state.iterations(), 1));
+  std::size_t counter_index = 0;
+  for (const FrameCounter& counter : counters) {
+    state.counters[counter.name] = sums[counter_index++] / iterations;
+  }
+}
+
 const std::vector<FrameInput>& demoRoomFrames()
 {
   static const std::vector<FrameInput> recorded = worldFileFrames("demo_room.yaml", 2.0, 1.0);
@@ -82,19 +112,10 @@ void BM_PlannerFrameDemoRoom(benchmark::State& state)
   }
   Planner planner{PlannerSettings{}};
   planner.setGoal(Goal{1, geometry::Point(8.0, 26.0)});
-  std::size_t index = 0;
-  double interaction_ms = 0.0;
-  double pushes = 0.0;
-  for (auto _ : state) {
-    const FrameResult result = planner.processFrame(demoRoomFrames()[index]);
-    interaction_ms += result.status.timings.interaction_ms;
-    pushes += static_cast<double>(result.path.pushes.size());
-    benchmark::DoNotOptimize(result.path.length_m);
-    index = (index + 1) % demoRoomFrames().size();
-  }
-  const double iterations = static_cast<double>(std::max<benchmark::IterationCount>(state.iterations(), 1));
-  state.counters["interaction_ms"] = interaction_ms / iterations;
-  state.counters["pushes"] = pushes / iterations;
+  processFramesInTurn(
+      state, planner, demoRoomFrames(),
+      {{"interaction_ms", [](const FrameResult& result) { return result.status.timings.interaction_ms; }},
+       {"pushes", [](const FrameResult& result) { return static_cast<double>(result.path.pushes.size()); }}});
 }
 BENCHMARK(BM_PlannerFrameDemoRoom)->Unit(benchmark::kMillisecond);
 
@@ -138,19 +159,10 @@ void BM_PlannerFrameTunnel(benchmark::State& state)
   settings.perception.layer_size_m = static_cast<double>(state.range(0));
   Planner planner{settings};
   planner.setGoal(Goal{1, geometry::Point(211.5, 160.2)});
-  std::size_t index = 0;
-  double perception_ms = 0.0;
-  double local_graph_ms = 0.0;
-  for (auto _ : state) {
-    const FrameResult result = planner.processFrame(tunnelFrames()[index]);
-    perception_ms += result.status.timings.perception_ms;
-    local_graph_ms += result.status.timings.local_graph_ms;
-    benchmark::DoNotOptimize(result.path.length_m);
-    index = (index + 1) % tunnelFrames().size();
-  }
-  const double iterations = static_cast<double>(std::max<benchmark::IterationCount>(state.iterations(), 1));
-  state.counters["perception_ms"] = perception_ms / iterations;
-  state.counters["local_graph_ms"] = local_graph_ms / iterations;
+  processFramesInTurn(
+      state, planner, tunnelFrames(),
+      {{"perception_ms", [](const FrameResult& result) { return result.status.timings.perception_ms; }},
+       {"local_graph_ms", [](const FrameResult& result) { return result.status.timings.local_graph_ms; }}});
   state.counters["vertices"] = static_cast<double>(planner.graph().vertexCount());
 }
 BENCHMARK(BM_PlannerFrameTunnel)->Arg(60)->Arg(120)->Arg(200)->Unit(benchmark::kMillisecond);
