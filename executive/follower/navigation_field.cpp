@@ -18,7 +18,9 @@ NavigationField::NavigationField(common::Span<const geometry::Point> obstacles, 
 {
   const int side = cells_per_side_;
   const std::size_t cells = static_cast<std::size_t>(side) * static_cast<std::size_t>(side);
-  const auto index = [side](int column, int row) { return static_cast<std::size_t>(row * side + column); };
+  const auto index = [side](int column, int row) {
+    return static_cast<std::size_t>(row) * static_cast<std::size_t>(side) + static_cast<std::size_t>(column);
+  };
   // Plain doubles here: GCC 12 warns about Eigen temporaries in these loops (false positives).
   const double origin_x = origin_.x();
   const double origin_y = origin_.y();
@@ -145,7 +147,8 @@ double NavigationField::cellValue(int column, int row) const
   if (column < 0 || row < 0 || column >= cells_per_side_ || row >= cells_per_side_) {
     return kUnreachable;
   }
-  return cost_[static_cast<std::size_t>(row * cells_per_side_ + column)];
+  return cost_[static_cast<std::size_t>(row) * static_cast<std::size_t>(cells_per_side_) +
+               static_cast<std::size_t>(column)];
 }
 
 double NavigationField::value(const geometry::Point& point) const

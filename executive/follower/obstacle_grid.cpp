@@ -33,7 +33,8 @@ ObstacleGrid::ObstacleGrid(common::Span<const geometry::Point> points, const geo
       continue;
     }
     const std::size_t cell =
-        static_cast<std::size_t>(clampedCell(offset.y()) * cells_per_side_ + clampedCell(offset.x()));
+        static_cast<std::size_t>(clampedCell(offset.y())) * static_cast<std::size_t>(cells_per_side_) +
+        static_cast<std::size_t>(clampedCell(offset.x()));
     cell_of.push_back(cell);
     kept.push_back(point);
     ++cell_start_[cell + 1];

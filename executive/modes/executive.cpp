@@ -476,6 +476,7 @@ void Executive::guardCommand(Cycle& cycle, common::Span<const geometry::Point> o
   const double horizon_s = settings_.pushed_object.guard_horizon_s;
   const double clearance = settings_.pushed_object.guard_clearance_m;
   const double time_step_s = std::min(settings_.follower.time_step_s, horizon_s);
+  const int steps = static_cast<int>(std::floor(horizon_s / time_step_s + 1e-9));
   // Points farther than this from the reference point cannot come within the clearance in the horizon.
   const double reach = footprint.bodyCentre().norm() + footprint.circumradius() +
                        std::abs(command.linear) * horizon_s + clearance;
@@ -484,8 +485,9 @@ void Executive::guardCommand(Cycle& cycle, common::Span<const geometry::Point> o
       continue;
     }
     const double distance_now = footprint.distance(cycle.pose, point);
-    for (double time_s = time_step_s; time_s <= horizon_s + 1e-9; time_s += time_step_s) {
-      const geometry::Pose2 ahead = integrateArc(cycle.pose, command.linear, command.angular, time_s);
+    for (int step = 1; step <= steps; ++step) {
+      const geometry::Pose2 ahead =
+          integrateArc(cycle.pose, command.linear, command.angular, step * time_step_s);
       const double distance = footprint.distance(ahead, point);
       // Only closing in counts, so the vehicle can always back away from something already near.
       if (distance < clearance && distance < distance_now) {
@@ -511,7 +513,8 @@ double Executive::freeStraightDistance(const geometry::Pose2& pose, double sign,
       continue;
     }
     const double distance_now = footprint.distance(pose, point);
-    for (double travel = kStepM; travel < free_m + 1e-9; travel += kStepM) {
+    for (int step = 1; step * kStepM < free_m + 1e-9; ++step) {
+      const double travel = step * kStepM;
       const geometry::Pose2 moved = integrateArc(pose, sign, 0.0, travel);
       const double distance = footprint.distance(moved, point);
       if (distance < clearance && distance < distance_now) {
@@ -675,10 +678,9 @@ Output Executive::step(std::int64_t now_us, const Inputs& inputs)
   const bool e_stopped = inputs.e_stop && inputs.e_stop->value.engaged;
   const bool pose_finite =
       std::isfinite(cycle.pose.x) && std::isfinite(cycle.pose.y) && std::isfinite(cycle.pose.heading);
-  Mode mode = modeOf(task_);
+  const bool halted = e_stopped || (active && (stale != 0 || !pose_finite));
   bool moving = false;
-  if (e_stopped || (active && (stale != 0 || !pose_finite))) {
-    mode = e_stopped ? Mode::EStop : Mode::Stop;
+  if (halted) {
     if (e_stopped) {
       cycle.reason =
           fmt::format("e-stop engaged by {}: {}", inputs.e_stop->value.source, inputs.e_stop->value.reason);
@@ -719,7 +721,6 @@ Output Executive::step(std::int64_t now_us, const Inputs& inputs)
         cycle.reason = task_reason_;
         break;
     }
-    mode = modeOf(task_);
     moving =
         task_ == Task::Follow || task_ == Task::Approach || task_ == Task::Push || task_ == Task::BackOff;
     if (!cycle.obstacles_fresh && (task_ == Task::Follow || task_ == Task::Approach)) {
@@ -727,6 +728,7 @@ Output Executive::step(std::int64_t now_us, const Inputs& inputs)
     }
   }
 
+  const Mode mode = halted ? (e_stopped ? Mode::EStop : Mode::Stop) : modeOf(task_);
   Output output;
   if (moving) {
     const double elapsed_s =
