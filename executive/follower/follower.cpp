@@ -43,13 +43,16 @@ double headingError(const geometry::Pose2& pose, const geometry::Point& target)
   return std::abs(wrapToPi(bearing - pose.heading));
 }
 
-/// Top speed of the arcs toward `target` (slower near a target to stop at).
+/// Top speed of the arcs toward `target`. Near a target to stop at it follows a constant-deceleration
+/// braking curve that reaches zero at the tolerance's edge (not a linear ramp, which creeps over the last
+/// metre), floored at a quarter of the top speed so the vehicle still gets there.
 double topSpeed(const geometry::Pose2& pose, const geometry::Point& target, bool stop_at_target,
                 const FollowerSettings& settings, const DifferentialDrive& drive)
 {
   double top_speed = std::min(settings.max_linear_velocity, drive.maxLinearVelocity());
   if (stop_at_target && settings.slow_down_distance_m > 0.0) {
-    top_speed *= std::clamp((target - pose.position()).norm() / settings.slow_down_distance_m, 0.25, 1.0);
+    const double remaining = std::max(0.0, (target - pose.position()).norm() - settings.goal_tolerance_m);
+    top_speed *= std::clamp(std::sqrt(remaining / settings.slow_down_distance_m), 0.25, 1.0);
   }
   return top_speed;
 }

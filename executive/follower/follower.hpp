@@ -28,12 +28,14 @@ struct FollowerSettings {
   double progress_weight = 1.0;
   double heading_weight = 0.2;
   double clearance_weight = 0.1;
-  double goal_tolerance_m = 0.3;      ///< the target counts as reached within this distance
-  double slow_down_distance_m = 1.5;  ///< approaching a target to stop at, top speed shrinks within this
-  double max_linear_velocity = 0.8;   ///< m/s; the vehicle's own limit applies too
-  double cell_size_m = 0.25;          ///< obstacle bucket size
-  double navigation_range_m = 6.0;    ///< half-size limit of the cost-to-go window around the vehicle
-  double navigation_cell_m = 0.2;     ///< cost-to-go cell size
+  double goal_tolerance_m = 0.3;  ///< the target counts as reached within this distance
+  /// Approaching a target to stop at, the vehicle brakes from top speed over this distance (to the
+  /// tolerance's edge) at constant deceleration: top speed x sqrt(remaining / this).
+  double slow_down_distance_m = 1.0;
+  double max_linear_velocity = 0.8;  ///< m/s; the vehicle's own limit applies too
+  double cell_size_m = 0.25;         ///< obstacle bucket size
+  double navigation_range_m = 6.0;   ///< half-size limit of the cost-to-go window around the vehicle
+  double navigation_cell_m = 0.2;    ///< cost-to-go cell size
   /// Cost-to-go cells within half width + clearance_cap_m of an obstacle cost up to (1 + this) x their
   /// length, so the vehicle keeps to the middle of doors and corridors rather than the wall-hugging path.
   double navigation_proximity_weight = 3.0;

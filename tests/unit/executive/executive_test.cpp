@@ -529,8 +529,10 @@ TEST_F(ExecutiveTest, StaleInputDuringPushResumesThroughFollow)
   Inputs inputs = freshInputs(now_us_, path, 100.0);
   inputs.pose->utime = now_us_ - 1'000'000;
   EXPECT_EQ(executive_.step(now_us_, inputs).status.mode, Mode::Stop);
+  // Shoved 0.3 m sideways while stopped: out of the push lane, so the push may not simply carry on.
+  pose_.y += 0.3;
   const Output resumed = run(1, path, 100.0);
-  EXPECT_NE(resumed.status.mode, Mode::Push);
+  EXPECT_NE(resumed.status.mode, Mode::Push) << resumed.status.reason;
   EXPECT_NE(resumed.status.mode, Mode::Stop);
 }
 

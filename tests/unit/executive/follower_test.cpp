@@ -50,6 +50,25 @@ TEST_F(FollowerTest, DrivesStraightInFreeSpace)
   EXPECT_EQ(result.free_arcs, result.arcs);
 }
 
+TEST_F(FollowerTest, BrakesAtConstantDecelerationTowardATargetToStopAt)
+{
+  // 0.25 m beyond the tolerance's edge with a 1 m braking distance: half the top speed (a linear ramp
+  // over the same distance would give a quarter; over the old 1.5 m, 0.37 of it).
+  settings_.slow_down_distance_m = 1.0;
+  const double distance = settings_.goal_tolerance_m + 0.25;
+  const FollowerResult stopping = follow({0.0, 0.0, 0.0}, {distance, 0.0}, true, {}, settings_, drive_);
+  EXPECT_NEAR(stopping.command.linear, 0.5 * settings_.max_linear_velocity, 1e-9);
+
+  // A waypoint passed through keeps the top speed.
+  const FollowerResult passing = follow({0.0, 0.0, 0.0}, {distance, 0.0}, false, {}, settings_, drive_);
+  EXPECT_NEAR(passing.command.linear, settings_.max_linear_velocity, 1e-9);
+
+  // At the tolerance's edge it still moves, at the quarter-speed floor.
+  const FollowerResult creeping =
+      follow({0.0, 0.0, 0.0}, {settings_.goal_tolerance_m + 0.01, 0.0}, true, {}, settings_, drive_);
+  EXPECT_NEAR(creeping.command.linear, 0.25 * settings_.max_linear_velocity, 1e-9);
+}
+
 TEST_F(FollowerTest, TurnsTowardTargetBehind)
 {
   const FollowerResult result = follow({0.0, 0.0, 0.0}, {-5.0, 0.5}, true, {}, settings_, drive_);
