@@ -125,6 +125,10 @@ Output ExecutiveNode::cycle(std::int64_t now_us)
     loop_.publish("AFFORDANCE", toAffordanceMessage(*output.affordance, now_us));
     logger_->info("affordance: {}", output.affordance->text);
   }
+  if (output.blocked_passage) {
+    loop_.publish("BLOCKED_PASSAGE", toBlockedPassageMessage(*output.blocked_passage, now_us));
+    logger_->warn("blocked passage: {}", output.blocked_passage->text);
+  }
   return output;
 }
 

@@ -2,8 +2,8 @@
 // The executive daemon's wiring, apart from main() so a test can drive it over an in-process bus:
 // subscribes POSE, GLOBAL_PATH, FORCE, MOTOR_STATUS and E_STOP into the executive's inputs and
 // VELODYNE_PACKET (the channel from `obstacles:`) into its own obstacle points, and on each control
-// cycle publishes VELOCITY_CMD, EXEC_STATUS (every fifth cycle and on mode changes) and AFFORDANCE (on
-// tactile findings).
+// cycle publishes VELOCITY_CMD, EXEC_STATUS (every fifth cycle and on mode changes), AFFORDANCE (on
+// tactile findings) and BLOCKED_PASSAGE (when repeated stalls give a passage up).
 
 #include <cstdint>
 #include <memory>

@@ -171,4 +171,18 @@ ifar::affordance_t toAffordanceMessage(const AffordanceEvent& event, std::int64_
   return message;
 }
 
+ifar::blocked_passage_t toBlockedPassageMessage(const BlockedPassage& passage, std::int64_t utime)
+{
+  ifar::blocked_passage_t message;
+  message.utime = utime;
+  message.goal_id = passage.goal_id;
+  message.from_x = passage.from.x();
+  message.from_y = passage.from.y();
+  message.to_x = passage.to.x();
+  message.to_y = passage.to.y();
+  message.stalls = passage.stalls;
+  message.reason = passage.text;
+  return message;
+}
+
 }  // namespace ifar::executive

@@ -9,6 +9,7 @@
 #include "executive/modes/executive.hpp"
 #include "executive/modes/inputs.hpp"
 #include "ifar/affordance_t.hpp"
+#include "ifar/blocked_passage_t.hpp"
 #include "ifar/e_stop_t.hpp"
 #include "ifar/exec_status_t.hpp"
 #include "ifar/force_t.hpp"
@@ -50,5 +51,6 @@ class MotorStatusCombiner {
 ifar::velocity_cmd_t toVelocityMessage(const Output& output, std::int64_t utime);
 ifar::exec_status_t toStatusMessage(const Output& output, std::int64_t utime);
 ifar::affordance_t toAffordanceMessage(const AffordanceEvent& event, std::int64_t utime);
+ifar::blocked_passage_t toBlockedPassageMessage(const BlockedPassage& passage, std::int64_t utime);
 
 }  // namespace ifar::executive

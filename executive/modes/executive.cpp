@@ -24,6 +24,7 @@ struct Executive::Cycle {
   geometry::Point target = geometry::Point::Zero();
   std::int64_t target_object_id = -1;
   std::optional<AffordanceEvent> affordance;
+  std::optional<BlockedPassage> blocked_passage;
 };
 
 namespace {
@@ -38,6 +39,9 @@ constexpr double kStayArrivedM = 0.1;
 constexpr double kStallTurnToleranceRad = 0.2;
 constexpr double kStallTurnTimeoutS = 5.0;
 constexpr double kStallEscapeReleases = 3.0;
+/// Stalls within this distance of the first one of a series, toward waypoints this close to each other,
+/// count as the same passage.
+constexpr double kStallSiteRadiusM = 1.0;
 
 bool fresh(std::int64_t now_us, std::int64_t stamp_us, double threshold_s)
 {
@@ -104,6 +108,7 @@ void Executive::startGoal(std::int64_t goal_id)
     goal_id_ = goal_id;
     pushes_ = 0;
     replans_ = 0;
+    stalls_at_site_ = 0;
   }
 }
 
@@ -309,6 +314,7 @@ void Executive::stepFollow(Cycle& cycle)
     stall_anchor_ = cycle.pose;
     stall_anchor_us_ = cycle.now_us;
   } else if (static_cast<double>(cycle.now_us - stall_anchor_us_) * 1e-6 > settings_.stall_timeout_s) {
+    countStall(cycle, waypoint.position);
     task_ = Task::BackOff;
     backoff_after_stall_ = true;
     stall_escape_sign_ = 0.0;
@@ -321,6 +327,33 @@ void Executive::stepFollow(Cycle& cycle)
   if (result.status == FollowerStatus::Arrived && waypoint_index_ < last) {
     ++waypoint_index_;
   }
+}
+
+void Executive::countStall(Cycle& cycle, const geometry::Point& target)
+{
+  const geometry::Point position = cycle.pose.position();
+  if (stalls_at_site_ == 0 || (position - stall_site_).norm() > kStallSiteRadiusM ||
+      (target - stall_site_target_).norm() > kStallSiteRadiusM) {
+    stall_site_ = position;
+    stall_site_target_ = target;
+    stalls_at_site_ = 0;
+  }
+  ++stalls_at_site_;
+  if (settings_.blocked_passage_stalls <= 0 || stalls_at_site_ < settings_.blocked_passage_stalls) {
+    return;
+  }
+  // The local planner cannot get the vehicle through what the global path takes for a passage (a gap the
+  // planner's inflation leaves open but the footprint does not fit): the planner must route around it.
+  BlockedPassage passage;
+  passage.goal_id = goal_id_;
+  passage.from = position;
+  passage.to = target;
+  passage.stalls = stalls_at_site_;
+  passage.text =
+      fmt::format("stalled {} times within {:.1f} m of ({:.2f}, {:.2f}) toward ({:.2f}, {:.2f})",
+                  stalls_at_site_, kStallSiteRadiusM, position.x(), position.y(), target.x(), target.y());
+  cycle.blocked_passage = std::move(passage);
+  stalls_at_site_ = 0;
 }
 
 void Executive::stepApproach(Cycle& cycle)
@@ -657,7 +690,8 @@ void Executive::stepReplanWait(Cycle& cycle)
 
 Output Executive::step(std::int64_t now_us, const Inputs& inputs)
 {
-  Cycle cycle{now_us, inputs, {}, 0.0, {}, false, {}, {}, geometry::Point::Zero(), -1, std::nullopt};
+  Cycle cycle{now_us, inputs,       {},          0.0, {}, false, {}, {}, geometry::Point::Zero(),
+              -1,     std::nullopt, std::nullopt};
   if (inputs.pose) {
     cycle.pose = inputs.pose->value;
   }
@@ -751,6 +785,7 @@ Output Executive::step(std::int64_t now_us, const Inputs& inputs)
   status.replans = replans_;
   status.reason = cycle.reason;
   output.affordance = std::move(cycle.affordance);
+  output.blocked_passage = std::move(cycle.blocked_passage);
   output.mode_changed = mode != last_mode_;
   last_mode_ = mode;
   return output;

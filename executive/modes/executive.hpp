@@ -36,12 +36,24 @@ struct Status {
   std::string reason;
 };
 
+/// A passage the vehicle could not get through: following toward `to` stalled `stalls` times within
+/// kStallSiteRadiusM of `from`. The daemon publishes it as BLOCKED_PASSAGE; the planner seals the
+/// narrowest point between the two and routes around it.
+struct BlockedPassage {
+  std::int64_t goal_id = -1;
+  geometry::Point from = geometry::Point::Zero();  ///< the vehicle, world frame
+  geometry::Point to = geometry::Point::Zero();    ///< the waypoint it could not reach
+  int stalls = 0;
+  std::string text;  ///< for people
+};
+
 struct Output {
   VelocityCommand command;  ///< after the vehicle's speed and acceleration limits; exactly zero when stopped
   WheelSpeeds wheels;       ///< the same command as wheel speeds
   Status status;
   bool mode_changed = false;
-  std::optional<AffordanceEvent> affordance;  ///< set on the cycle the tactile monitor found something
+  std::optional<AffordanceEvent> affordance;      ///< set on the cycle the tactile monitor found something
+  std::optional<BlockedPassage> blocked_passage;  ///< set on the cycle repeated stalls gave a passage up
 };
 
 class Executive {
@@ -97,6 +109,8 @@ class Executive {
   /// After a stall's straight escape: the heading the follower's cost-to-go wants, when turning to it on
   /// the spot first is needed and free (a door entered at a slant wedges the corners on its posts).
   std::optional<double> stallTurnHeading(const Cycle& cycle) const;
+  /// Counts a stall toward `target`; the blocked_passage_stalls-th at one site reports a blocked passage.
+  void countStall(Cycle& cycle, const geometry::Point& target);
 
   ExecutiveSettings settings_;
   common::VehicleSettings vehicle_;
@@ -128,6 +142,9 @@ class Executive {
   geometry::Pose2 stall_anchor_;              // where following last moved from
   std::int64_t stall_anchor_us_ = -1;         // and when (-1: not following)
   std::int64_t last_follow_us_ = 0;           // the last cycle that followed
+  geometry::Point stall_site_ = geometry::Point::Zero();  // where the current series of stalls began
+  int stalls_at_site_ = 0;                                // stalls of that series, toward one waypoint
+  geometry::Point stall_site_target_ = geometry::Point::Zero();
 
   VelocityCommand last_command_;
   std::int64_t last_step_us_ = 0;

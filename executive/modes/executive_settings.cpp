@@ -77,6 +77,7 @@ ExecutiveSettings loadExecutiveSettings(const common::ConfigNode& node)
   settings.push_switch_radius_m = positive(node, "push_switch_radius_m");
   settings.replan_timeout_s = positive(node, "replan_timeout_s");
   settings.stall_timeout_s = positive(node, "stall_timeout_s");
+  settings.blocked_passage_stalls = positiveCount(node, "blocked_passage_stalls", 0);
 
   settings.reference_to_bumper_m = positive(node, "footprint.reference_to_bumper_m");
 

@@ -43,6 +43,8 @@ struct ExecutiveSettings {
       1.5;  ///< r of Algorithm 2: switch to pushing this close to a topological waypoint
   double replan_timeout_s = 10.0;  ///< waiting longer for a replanned path stops the vehicle
   double stall_timeout_s = 1.5;    ///< following without moving this long: back off and try again
+  /// This many stalls at one site toward one waypoint report the passage as blocked (0: never).
+  int blocked_passage_stalls = 3;
   /// Vehicle reference point (the pose) to the bumper face; the rest of the vehicle length is behind.
   /// The Executive builds the follower's footprint from this and the vehicle's length and width.
   double reference_to_bumper_m = 0.45;

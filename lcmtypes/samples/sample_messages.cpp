@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "ifar/affordance_t.hpp"
+#include "ifar/blocked_passage_t.hpp"
 #include "ifar/can_bus_status_t.hpp"
 #include "ifar/can_frame_t.hpp"
 #include "ifar/dv_graph_t.hpp"
@@ -90,6 +91,20 @@ affordance_t makeAffordance()
   message.planned_cost = 7.5;
   message.measured_cost = 11.25;
   message.reason = affordance_t::REASON_COST_HIGHER;
+  return message;
+}
+
+blocked_passage_t makeBlockedPassage()
+{
+  blocked_passage_t message;
+  message.utime = kUtime;
+  message.goal_id = 7;
+  message.from_x = 20.75;
+  message.from_y = 27.67;
+  message.to_x = 19.73;
+  message.to_y = 27.97;
+  message.stalls = 3;
+  message.reason = "stalled 3 times within 1.0 m of (20.75, 27.67) toward (19.73, 27.97)";
   return message;
 }
 
@@ -398,6 +413,7 @@ std::vector<SampleMessage> allSampleMessages()
   object_state_t object = makeWorldState().objects.front();
   return {
       sample("AFFORDANCE", makeAffordance()),
+      sample("BLOCKED_PASSAGE", makeBlockedPassage()),
       sample("CAN_STATUS", makeCanBusStatus()),
       sample("CAN_VEHICLE", makeCanFrame()),
       sample("DV_GRAPH", makeDvGraph()),

@@ -6,7 +6,10 @@
 #include <limits>
 #include <utility>
 
+#include <fmt/format.h>
+
 #include "planner/core/occupancy_rectangles.hpp"
+#include "planner/core/passage_seal.hpp"
 #include "planner/graph/graph_file.hpp"
 #include "planner/graph/merge.hpp"
 #include "planner/graph/visibility_builder.hpp"
@@ -78,6 +81,7 @@ Planner::Planner(const PlannerSettings& settings)
       tracker_(trackerSettings(settings_)),
       interaction_(settings_.interaction),
       background_memory_(settings_.perception.cell_size_m),
+      sealed_(settings_.perception.cell_size_m),
       affordances_(trackerSettings(settings_).association_distance_m)
 {
 }
@@ -155,11 +159,16 @@ FrameResult Planner::processFrame(const FrameInput& frame)
   input.motion = frame.motion;
   input.detector_polygons = frame.detector_polygons;
   std::vector<geometry::Point> remembered;
-  if (settings_.perception.remember_background) {
+  {
     const auto end = frame.motion.vehicle_at_end.translation();
     const geometry::Point half_layer = geometry::Point::Constant(settings_.perception.layer_size_m / 2.0);
-    remembered = background_memory_.cellsWithin(geometry::Point(end.x(), end.y()) - half_layer,
-                                                geometry::Point(end.x(), end.y()) + half_layer);
+    const geometry::Point minimum = geometry::Point(end.x(), end.y()) - half_layer;
+    const geometry::Point maximum = geometry::Point(end.x(), end.y()) + half_layer;
+    if (settings_.perception.remember_background) {
+      remembered = background_memory_.cellsWithin(minimum, maximum);
+    }
+    const std::vector<geometry::Point> sealed = sealed_.cellsWithin(minimum, maximum);
+    remembered.insert(remembered.end(), sealed.begin(), sealed.end());
     input.remembered_background = common::Span<const geometry::Point>(remembered.data(), remembered.size());
   }
   perception::PerceptionResult perceived = perception::runPerception(input, settings_.perception);
@@ -425,6 +434,36 @@ FrameResult Planner::applyAffordance(const AffordanceUpdate& update)
   }
   result.status.timings.interaction_ms = update_ms;
   result.status.timings.total_ms += update_ms;
+  return result;
+}
+
+FrameResult Planner::applyBlockedPassage(const BlockedPassage& passage)
+{
+  std::string problem;
+  std::string done;
+  const std::string named = fmt::format("blocked passage ({:.2f}, {:.2f}) -> ({:.2f}, {:.2f})",
+                                        passage.from.x(), passage.from.y(), passage.to.x(), passage.to.y());
+  if (!passage.from.allFinite() || !passage.to.allFinite()) {
+    problem = "blocked passage rejected: from and to must be finite";
+  } else if (!obstacles_) {
+    problem = named + " rejected: no frame placed yet";
+  } else if (const std::optional<PassageSeal> seal =
+                 sealPassage(*obstacles_, passage.from, passage.to, settings_.perception.inflation_radius_m,
+                             settings_.perception.cell_size_m)) {
+    sealed_.remember(common::Span<const geometry::Point>(seal->cells.data(), seal->cells.size()));
+    const std::size_t removed = removeEdgesThroughSeal(*seal, global_);
+    done = fmt::format(
+        "{}: sealed at ({:.2f}, {:.2f}), {:.2f} m from the nearest obstacle, {} cells, {} edges "
+        "through it removed",
+        named, seal->centre.x(), seal->centre.y(), seal->half_width_m, seal->cells.size(), removed);
+  } else {
+    problem = named + " rejected: no free point to seal beyond the vehicle";
+  }
+  if (!problem.empty()) {
+    ++bad_inputs_;
+  }
+  FrameResult result = replan();
+  appendMessage(result.status.message, problem.empty() ? done : problem);
   return result;
 }
 

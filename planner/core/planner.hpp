@@ -72,6 +72,13 @@ struct AffordanceUpdate {
   double affordance = 0.0;    // measured mu (<= 0: unknown)
 };
 
+/// A passage the vehicle could not get through (the executive's BLOCKED_PASSAGE): from where it stalled
+/// toward the waypoint it could not reach, world frame.
+struct BlockedPassage {
+  geometry::Point from = geometry::Point::Zero();
+  geometry::Point to = geometry::Point::Zero();
+};
+
 struct FrameResult {
   PlannerStatus status;
   std::vector<perception::LayerPolygon> polygons;  // this frame's local polygons, world frame
@@ -102,6 +109,14 @@ class Planner {
   /// searches again at once (no frame needed). Unknown object id: counted as bad input, message says so.
   FrameResult applyAffordance(const AffordanceUpdate& update);
 
+  /// Seals the narrowest point between passage.from and passage.to (see passage_seal.hpp) for good:
+  /// from the next frame the layer holds it like a wall and the graph routes around it. Searches again
+  /// at once. Non-finite points, no frame yet or no free point to seal: counted as bad input, the
+  /// message says why.
+  FrameResult applyBlockedPassage(const BlockedPassage& passage);
+  /// Background cells sealed so far (blocked passages).
+  std::size_t sealedCells() const { return sealed_.size(); }
+
   const graph::DvGraph& graph() const { return global_; }
   std::int64_t badInputs() const { return bad_inputs_; }
   /// The physics the planner assumes for a movable object (the configured prior until AFFORDANCE).
@@ -123,6 +138,7 @@ class Planner {
   ObjectTracker tracker_;
   InteractionStage interaction_;
   perception::BackgroundMemory background_memory_;
+  perception::BackgroundMemory sealed_;  // passages the vehicle could not get through: walls for good
   AffordanceMemory affordances_;
   std::optional<graph::ObstacleSet> obstacles_;  // last frame's observed obstacles, for attachment
   std::optional<Goal> goal_;

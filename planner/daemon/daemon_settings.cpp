@@ -58,6 +58,7 @@ DaemonSettings loadDaemonSettings(const common::ConfigNode& root)
     out.goal = channel(channels, "goal", out.goal);
     out.detected_objects = channel(channels, "detected_objects", out.detected_objects);
     out.affordance = channel(channels, "affordance", out.affordance);
+    out.blocked_passage = channel(channels, "blocked_passage", out.blocked_passage);
     out.dv_graph = channel(channels, "dv_graph", out.dv_graph);
     out.global_path = channel(channels, "global_path", out.global_path);
     out.planner_status = channel(channels, "planner_status", out.planner_status);

@@ -16,6 +16,7 @@ struct PlannerChannels {
   std::string goal = "GOAL";
   std::string detected_objects = "DETECTED_OBJECTS";
   std::string affordance = "AFFORDANCE";
+  std::string blocked_passage = "BLOCKED_PASSAGE";
   std::string dv_graph = "DV_GRAPH";
   std::string global_path = "GLOBAL_PATH";
   std::string planner_status = "PLANNER_STATUS";

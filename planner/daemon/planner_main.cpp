@@ -17,6 +17,7 @@
 #include "common/time.hpp"
 #include "common/vehicle.hpp"
 #include "ifar/affordance_t.hpp"
+#include "ifar/blocked_passage_t.hpp"
 #include "ifar/goal_t.hpp"
 #include "ifar/velodyne_packet_t.hpp"
 #include "planner/core/planner.hpp"
@@ -30,6 +31,7 @@ namespace {
 constexpr int kVelodyneDataPort = 2368;
 // Planner::applyAffordance names a refused estimate (unknown id, non-finite values) this way.
 constexpr const char* kAffordanceRejected = "affordance for object";
+constexpr const char* kBlockedPassage = "blocked passage";
 
 /// Everything the LCM thread owns between callbacks.
 struct LoopState {
@@ -47,7 +49,8 @@ struct LoopState {
   std::int64_t affordances = 0;
   std::int64_t bad_affordances = 0;  // non-finite values (unknown ids are counted by the planner)
   std::vector<AffordanceUpdate> pending_affordances;  // wait for the worker, applied before the next search
-  std::optional<path_t> last_path;                    // resent between updates with a fresh utime
+  std::vector<BlockedPassage> pending_blocked_passages;  // likewise
+  std::optional<path_t> last_path;                       // resent between updates with a fresh utime
   common::RateLimiter input_log{5'000'000};
 };
 
@@ -103,7 +106,8 @@ int runPlanner(common::DaemonContext& context)
   // the next tick. A goal change alone replans at once without taking the frame, so graph updates keep
   // to the configured rate.
   const auto dispatch = [&](bool with_frame) {
-    if (!(with_frame && state.latest_frame) && !state.goal_changed && state.pending_affordances.empty()) {
+    if (!(with_frame && state.latest_frame) && !state.goal_changed && state.pending_affordances.empty() &&
+        state.pending_blocked_passages.empty()) {
       return;
     }
     PlannerJob job;
@@ -113,6 +117,7 @@ int runPlanner(common::DaemonContext& context)
     job.new_goal = state.new_goal;
     job.clear_goal = state.clear_goal;
     job.affordances = state.pending_affordances;
+    job.blocked_passages = state.pending_blocked_passages;
     if (!worker.trySubmit(std::move(job))) {
       if (with_frame && state.latest_frame) {
         ++state.dropped_frames;
@@ -123,6 +128,7 @@ int runPlanner(common::DaemonContext& context)
       state.latest_frame.reset();
     }
     state.pending_affordances.clear();
+    state.pending_blocked_passages.clear();
     state.new_goal.reset();
     state.clear_goal = false;
     state.goal_changed = false;
@@ -195,6 +201,15 @@ int runPlanner(common::DaemonContext& context)
     dispatch(false);  // replans at once when the worker is free, else with the next job
   });
 
+  loop.subscribe<blocked_passage_t>(
+      channels.blocked_passage, [&](const blocked_passage_t& passage, std::int64_t) {
+        // Non-finite points are handed on too: the planner counts them and says so in PLANNER_STATUS.
+        logger->warn("blocked passage, goal {}: ({:.2f}, {:.2f}) -> ({:.2f}, {:.2f}): {}", passage.goal_id,
+                     passage.from_x, passage.from_y, passage.to_x, passage.to_y, passage.reason);
+        state.pending_blocked_passages.push_back(toBlockedPassage(passage));
+        dispatch(false);
+      });
+
   loop.every(1.0 / daemon.rate_hz, [&] {
     const std::int64_t now = common::nowMicroseconds();
     if (state.detector_utime &&
@@ -223,6 +238,9 @@ int runPlanner(common::DaemonContext& context)
       }
       if (messages.status.message.find(kAffordanceRejected) != std::string::npos) {
         logger->warn("{}: {}", channels.affordance, messages.status.message);
+      }
+      if (messages.status.message.find(kBlockedPassage) != std::string::npos) {
+        logger->info("{}: {}", channels.blocked_passage, messages.status.message);
       }
       loop.publish(channels.dv_graph, messages.graph);
       loop.publish(channels.global_path, messages.path);

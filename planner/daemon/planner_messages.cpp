@@ -183,6 +183,14 @@ AffordanceUpdate toAffordanceUpdate(const affordance_t& message)
   return update;
 }
 
+BlockedPassage toBlockedPassage(const blocked_passage_t& message)
+{
+  BlockedPassage passage;
+  passage.from = geometry::Point(message.from_x, message.from_y);
+  passage.to = geometry::Point(message.to_x, message.to_y);
+  return passage;
+}
+
 PoseSample toPoseSample(const pose_t& pose)
 {
   PoseSample sample;

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "ifar/affordance_t.hpp"
+#include "ifar/blocked_passage_t.hpp"
 #include "ifar/dv_graph_t.hpp"
 #include "ifar/object_polygons_t.hpp"
 #include "ifar/path_t.hpp"
@@ -41,6 +42,10 @@ PoseSample toPoseSample(const pose_t& pose);
 
 /// The executive's estimate as the planner takes it (values passed through; the planner checks them).
 AffordanceUpdate toAffordanceUpdate(const affordance_t& message);
+
+/// The executive's report of a passage it could not get through (values passed through; the planner
+/// checks them).
+BlockedPassage toBlockedPassage(const blocked_passage_t& message);
 
 /// Outlines of the movable objects a detector published; polygons with fewer than 3 points or with
 /// mismatched coordinate counts are skipped and counted in `skipped`.

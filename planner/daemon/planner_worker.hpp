@@ -21,7 +21,8 @@ struct PlannerJob {
   std::optional<FrameInput> frame;  // nullopt: replan only (a goal or an affordance changed)
   std::optional<Goal> new_goal;
   bool clear_goal = false;
-  std::vector<AffordanceUpdate> affordances;  // applied first, in order
+  std::vector<AffordanceUpdate> affordances;     // applied first, in order
+  std::vector<BlockedPassage> blocked_passages;  // then these, in order
 };
 
 /// `Output` is what the worker hands back, built on the worker thread where the graph lives.
@@ -99,14 +100,17 @@ class PlannerWorker {
     }
     FrameResult result;
     try {
-      std::optional<FrameResult> affordance_result;
+      std::optional<FrameResult> update_result;
       for (const AffordanceUpdate& update : job.affordances) {
-        affordance_result = planner_.applyAffordance(update);
+        update_result = planner_.applyAffordance(update);
+      }
+      for (const BlockedPassage& passage : job.blocked_passages) {
+        update_result = planner_.applyBlockedPassage(passage);
       }
       if (job.frame) {
         result = planner_.processFrame(*job.frame);
-      } else if (affordance_result && !job.new_goal && !job.clear_goal) {
-        result = std::move(*affordance_result);  // already searched again
+      } else if (update_result && !job.new_goal && !job.clear_goal) {
+        result = std::move(*update_result);  // already searched again
       } else {
         result = planner_.replan();
       }

@@ -94,6 +94,7 @@ class Scenario {
   void feedSensors(const sim::StepOutput& output);
   void planFrame(std::int64_t utime);
   void applyAffordance(const executive::AffordanceEvent& event, std::int64_t utime);
+  void applyBlockedPassage(const executive::BlockedPassage& passage, std::int64_t utime);
   void publishPath(const planner::FrameResult& result, std::int64_t utime);
   /// Obstacle points and the pushed object's observation from the executive's own lidar returns.
   void updateObstacleInputs(std::int64_t utime);
@@ -111,6 +112,7 @@ class Scenario {
   executive::Inputs inputs_;
   std::optional<planner::FrameInput> latest_frame_;
   std::optional<executive::AffordanceEvent> pending_affordance_;
+  std::optional<executive::BlockedPassage> pending_blocked_passage_;
   executive::Output last_output_;
   double force_sum_ = 0.0;
   int force_samples_ = 0;
@@ -212,6 +214,16 @@ void Scenario::applyAffordance(const executive::AffordanceEvent& event, std::int
   publishPath(planner_.applyAffordance(update), utime);
 }
 
+void Scenario::applyBlockedPassage(const executive::BlockedPassage& passage, std::int64_t utime)
+{
+  ++summary_.blocked_passages;
+  const planner::FrameResult result = planner_.applyBlockedPassage({passage.from, passage.to});
+  if (progress_) {
+    progress_(fmt::format("blocked passage: {}; planner: {}", passage.text, result.status.message));
+  }
+  publishPath(result, utime);
+}
+
 void Scenario::report(const sim::StepOutput& output, const executive::Output& command) const
 {
   if (!progress_) {
@@ -241,6 +253,9 @@ bool Scenario::control(const sim::StepOutput& output)
   simulator_.setVelocityCommand(result.command.linear, result.command.angular);
   if (result.affordance) {
     pending_affordance_ = result.affordance;  // applied on the next physics step: the replan comes after it
+  }
+  if (result.blocked_passage) {
+    pending_blocked_passage_ = result.blocked_passage;
   }
   last_output_ = result;
   summary_.trajectory.push_back(output.vehicle.pose);
@@ -288,6 +303,10 @@ RunSummary Scenario::run()
     if (pending_affordance_) {
       applyAffordance(*pending_affordance_, output.utime);
       pending_affordance_.reset();
+    }
+    if (pending_blocked_passage_) {
+      applyBlockedPassage(*pending_blocked_passage_, output.utime);
+      pending_blocked_passage_.reset();
     }
     if (output.time_ns >= next_planner_ns) {
       planFrame(output.utime);

@@ -47,6 +47,7 @@ struct RunSummary {
   int pushes = 0;
   int replans = 0;
   int affordance_updates = 0;
+  int blocked_passages = 0;                    // passages the executive gave up and the planner sealed
   double goal_distance_m = 0.0;                // final ground-truth distance to the goal
   std::vector<geometry::Pose2> trajectory;     // ground truth, one per control cycle
   std::vector<geometry::Pose2> final_objects;  // ground truth object poses at the end, world-file order

@@ -21,10 +21,10 @@ std::string summaryJson(const RunSummary& summary)
 {
   return fmt::format(
       "{{\"arrived\":{},\"reason\":{},\"distance_m\":{},\"time_s\":{},\"pushes\":{},\"replans\":{},"
-      "\"affordance_updates\":{},\"goal_distance_m\":{},\"wall_time_s\":{}}}",
+      "\"affordance_updates\":{},\"blocked_passages\":{},\"goal_distance_m\":{},\"wall_time_s\":{}}}",
       summary.arrived ? "true" : "false", common::jsonString(summary.reason), jsonNumber(summary.distance_m),
       jsonNumber(summary.sim_time_s), summary.pushes, summary.replans, summary.affordance_updates,
-      jsonNumber(summary.goal_distance_m), jsonNumber(summary.wall_time_s));
+      summary.blocked_passages, jsonNumber(summary.goal_distance_m), jsonNumber(summary.wall_time_s));
 }
 
 }  // namespace ifar::runner

@@ -101,6 +101,11 @@ class ExecutiveTest : public ::testing::Test {
 
   bool visited(Mode mode) const { return std::find(modes_.begin(), modes_.end(), mode) != modes_.end(); }
 
+  /// Drives `executive` from 1.5 m below a 0.72 m gap (wide enough for the planner's inflated map, too
+  /// narrow for the 0.7 m vehicle plus its clearance) toward a waypoint 1.5 m beyond it, until
+  /// `stop_after` stalls or a blocked-passage report; returns the report (if any) and counts the stalls.
+  std::optional<BlockedPassage> driveAtNarrowGap(Executive& executive, int stop_after, int& stalls);
+
   ExecutiveSettings settings_;
   common::VehicleSettings vehicle_;
   Executive executive_;
@@ -227,19 +232,20 @@ TEST_F(ExecutiveTest, FollowingThatGetsNowhereBacksOffAndTriesAgain)
   EXPECT_LT(lowest_y, stalled_y - settings_.pusher.release_m + 0.05);  // backed up the whole distance
 }
 
-/// A 1.0 m door (x -0.5 .. 0.5) in a 0.2 m wall along y 0 .. 0.2, as obstacle points 5 cm apart.
-std::vector<Point> doorWalls()
+/// A door `width` wide (centred on x = 0) in a 0.2 m wall at y 0 .. 0.2, as obstacle points 5 cm apart.
+std::vector<Point> doorWalls(double width = 1.0)
 {
   std::vector<Point> walls;
+  const double half = 0.5 * width;
   for (double x = -4.0; x <= 4.0; x += 0.05) {
-    if (std::abs(x) >= 0.5) {
+    if (std::abs(x) >= half) {
       walls.emplace_back(x, 0.0);
       walls.emplace_back(x, 0.2);
     }
   }
   for (double y = 0.0; y <= 0.2; y += 0.05) {
-    walls.emplace_back(-0.5, y);
-    walls.emplace_back(0.5, y);
+    walls.emplace_back(-half, y);
+    walls.emplace_back(half, y);
   }
   return walls;
 }
@@ -270,6 +276,56 @@ TEST_F(ExecutiveTest, StalledWithTheBackAgainstADoorPostDrivesAheadInstead)
   EXPECT_TRUE(drove_ahead) << "ended at (" << pose_.x << ", " << pose_.y << ", " << pose_.heading
                            << "): " << last_reason;
   EXPECT_FALSE(backed_up);
+}
+
+std::optional<BlockedPassage> ExecutiveTest::driveAtNarrowGap(Executive& executive, int stop_after,
+                                                              int& stalls)
+{
+  const std::vector<Point> walls = doorWalls(0.72);
+  Path path = straightPath();
+  path.waypoints = {waypoint(0.0, -1.5), waypoint(0.0, 1.5)};
+  pose_ = Pose2{0.0, -1.5, 0.5 * M_PI};
+  std::optional<BlockedPassage> reported;
+  stalls = 0;
+  bool was_stalled = false;
+  for (int cycle = 0; cycle < 3000 && !reported && stalls < stop_after; ++cycle) {
+    now_us_ += kCycleUs;
+    Inputs inputs = freshInputs(now_us_, path);
+    inputs.obstacles = Stamped<std::vector<Point>>{walls, now_us_};
+    const Output output = executive.step(now_us_, inputs);
+    const bool stalled = output.status.reason.find("stalled for") != std::string::npos;
+    stalls += stalled && !was_stalled ? 1 : 0;
+    was_stalled = stalled;
+    reported = output.blocked_passage;
+    pose_ = testing::drive(pose_, output.command, kCycleUs * 1e-6);
+  }
+  return reported;
+}
+
+TEST_F(ExecutiveTest, StallingAgainAndAgainAtAGapTooNarrowReportsTheBlockedPassage)
+{
+  // The third stall within 1 m, toward the same waypoint, reports the passage.
+  int stalls = 0;
+  const std::optional<BlockedPassage> reported = driveAtNarrowGap(executive_, 100, stalls);
+  ASSERT_TRUE(reported) << stalls << " stalls, ended at (" << pose_.x << ", " << pose_.y << ")";
+  // Reported on the cycle the third stall began (its back-off starts on the same cycle).
+  EXPECT_EQ(stalls, settings_.blocked_passage_stalls);
+  EXPECT_LT(pose_.y, 0.2) << "a 0.72 m gap cannot be driven through";
+  EXPECT_EQ(reported->goal_id, 5);
+  EXPECT_EQ(reported->stalls, settings_.blocked_passage_stalls);
+  EXPECT_NEAR(reported->to.x(), 0.0, 1e-9);
+  EXPECT_NEAR(reported->to.y(), 1.5, 1e-9);
+  EXPECT_LT((reported->from - Point(0.0, -0.5)).norm(), 1.0) << reported->text;
+  EXPECT_NE(reported->text.find("stalled 3 times"), std::string::npos) << reported->text;
+}
+
+TEST_F(ExecutiveTest, BlockedPassageReportsCanBeTurnedOff)
+{
+  settings_.blocked_passage_stalls = 0;
+  Executive executive(settings_, vehicle_);
+  int stalls = 0;
+  EXPECT_FALSE(driveAtNarrowGap(executive, 4, stalls));
+  EXPECT_EQ(stalls, 4);
 }
 
 TEST_F(ExecutiveTest, WedgedAtASlantInADoorTurnsToFaceItAndDrivesThrough)

@@ -131,6 +131,22 @@ TEST(LcmConversions, OutputMessagesUseTheWireConstants)
   EXPECT_EQ(affordance.reason, ifar::affordance_t::REASON_NO_MOTION);
   EXPECT_EQ(affordance.pushable, 0);
   EXPECT_EQ(affordance.object_id, 3);
+
+  BlockedPassage passage;
+  passage.goal_id = 4;
+  passage.from = geometry::Point(20.75, 27.67);
+  passage.to = geometry::Point(19.73, 27.97);
+  passage.stalls = 3;
+  passage.text = "stalled 3 times";
+  const ifar::blocked_passage_t blocked = toBlockedPassageMessage(passage, 78);
+  EXPECT_EQ(blocked.utime, 78);
+  EXPECT_EQ(blocked.goal_id, 4);
+  EXPECT_DOUBLE_EQ(blocked.from_x, 20.75);
+  EXPECT_DOUBLE_EQ(blocked.from_y, 27.67);
+  EXPECT_DOUBLE_EQ(blocked.to_x, 19.73);
+  EXPECT_DOUBLE_EQ(blocked.to_y, 27.97);
+  EXPECT_EQ(blocked.stalls, 3);
+  EXPECT_EQ(blocked.reason, "stalled 3 times");
 }
 
 }  // namespace

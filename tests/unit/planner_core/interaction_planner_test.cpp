@@ -287,6 +287,54 @@ TEST(InteractionPlanner, FarModeRemembersABoxOutOfSightLikeAWall)
   }
 }
 
+// BLOCKED_PASSAGE: the vehicle could not get through the east doorway. The planner seals the doorway's
+// narrowest point for good (also without the background memory), and the next frames route elsewhere.
+TEST(InteractionPlanner, ABlockedPassageIsSealedAndRoutedAround)
+{
+  PlannerSettings settings;
+  settings.interaction_enabled = false;  // FAR mode: the box closes the west doorway, the east one is the way
+  settings.perception.remember_background = false;
+  Planner planner{settings};
+  const FrameResult before = runStartThenApproach(planner);
+  const std::optional<double> east = crossingX(before.path, 16.0);
+  ASSERT_TRUE(east.has_value()) << before.status.message;
+  ASSERT_GT(*east, 24.0);
+  ASSERT_LT(*east, 28.0);
+
+  const FrameResult sealed =
+      planner.applyBlockedPassage({geometry::Point(26.0, 13.0), geometry::Point(26.0, 19.0)});
+  EXPECT_EQ(sealed.sequence, before.sequence);  // no frame needed
+  EXPECT_NE(sealed.status.message.find("sealed at (26.00, 1"), std::string::npos) << sealed.status.message;
+  EXPECT_EQ(sealed.status.bad_inputs, before.status.bad_inputs);
+  // The 4 m doorway, 3.3 m between the inflated partition ends: a cell every 0.15 m across it.
+  EXPECT_GE(planner.sealedCells(), 21U);
+
+  // The doorway's old corners go once unseen for graph.votes frames (the approach frames are that long).
+  const FrameResult after = runFrames(planner, approachFrames());
+  const std::optional<double> crossing = crossingX(after.path, 16.0);
+  EXPECT_FALSE(crossing && *crossing > 24.0 && *crossing < 28.0)
+      << "still through the sealed doorway at x = " << *crossing << ": " << after.status.message;
+}
+
+TEST(InteractionPlanner, ABlockedPassageThatCannotBeSealedIsCountedAndChangesNothing)
+{
+  Planner planner{PlannerSettings{}};
+  const FrameResult early =
+      planner.applyBlockedPassage({geometry::Point(1.0, 1.0), geometry::Point(2.0, 2.0)});
+  EXPECT_NE(early.status.message.find("rejected: no frame placed yet"), std::string::npos)
+      << early.status.message;
+  const FrameResult before = runFrames(planner, standingFrames());
+  const FrameResult bad =
+      planner.applyBlockedPassage({geometry::Point(kNaN, 1.0), geometry::Point(2.0, 2.0)});
+  EXPECT_NE(bad.status.message.find("must be finite"), std::string::npos) << bad.status.message;
+  // Shorter than the distance the seal keeps from the vehicle.
+  const FrameResult close =
+      planner.applyBlockedPassage({geometry::Point(8.0, 4.0), geometry::Point(8.0, 4.2)});
+  EXPECT_NE(close.status.message.find("no free point to seal"), std::string::npos) << close.status.message;
+  EXPECT_EQ(planner.sealedCells(), 0U);
+  EXPECT_EQ(planner.badInputs(), before.status.bad_inputs + 2);
+}
+
 TEST(InteractionPlanner, AffordanceChangesTheFrictionAndReplansAtOnce)
 {
   Planner planner{PlannerSettings{}};

@@ -141,6 +141,17 @@ TEST(PlannerMessages, PushPathCarriesWaypointKindsAndPushPlans)
   EXPECT_FALSE(update.pushable);
   EXPECT_DOUBLE_EQ(update.push_force_n, 12.5);
   EXPECT_DOUBLE_EQ(update.affordance, 0.25);
+
+  blocked_passage_t blocked{};
+  blocked.from_x = 20.75;
+  blocked.from_y = 27.67;
+  blocked.to_x = 19.73;
+  blocked.to_y = 27.97;
+  const BlockedPassage passage = toBlockedPassage(blocked);
+  EXPECT_DOUBLE_EQ(passage.from.x(), 20.75);
+  EXPECT_DOUBLE_EQ(passage.from.y(), 27.67);
+  EXPECT_DOUBLE_EQ(passage.to.x(), 19.73);
+  EXPECT_DOUBLE_EQ(passage.to.y(), 27.97);
 }
 
 TEST(PlannerMessages, PoseAndDetectorConversionsSkipMalformedData)

@@ -21,11 +21,13 @@ TEST(RunnerSummaryJson, ExactLine)
   summary.pushes = 1;
   summary.replans = 2;
   summary.affordance_updates = 3;
+  summary.blocked_passages = 1;
   summary.goal_distance_m = 0.42;
   summary.trajectory = {geometry::Pose2{1.0, 2.0, 0.0}};
   EXPECT_EQ(summaryJson(summary),
             "{\"arrived\":true,\"reason\":\"arrived\",\"distance_m\":23.457,\"time_s\":41.200,\"pushes\":1,"
-            "\"replans\":2,\"affordance_updates\":3,\"goal_distance_m\":0.420,\"wall_time_s\":12.500}");
+            "\"replans\":2,\"affordance_updates\":3,\"blocked_passages\":1,\"goal_distance_m\":0.420,\"wall_"
+            "time_s\":12.500}");
 }
 
 TEST(RunnerSummaryJson, ReasonIsEscapedAndNonFiniteIsNull)

@@ -1,0 +1,79 @@
+#include "planner/core/passage_seal.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+namespace ifar::planner {
+
+std::optional<PassageSeal> sealPassage(const graph::ObstacleSet& obstacles, const geometry::Point& from,
+                                       const geometry::Point& to, double inflation_m, double cell_size_m)
+{
+  const geometry::Point along = to - from;
+  const double length = along.norm();
+  if (!from.allFinite() || !to.allFinite() || !(cell_size_m > 0.0) || !(length > 0.0)) {
+    return std::nullopt;
+  }
+  const geometry::Point direction = along / length;
+  const double keep_clear_m = std::max(0.0, inflation_m) + cell_size_m;
+  // Integer steps of half a cell: fine enough to find the narrowest point of a channel a cell wide.
+  const double step_m = 0.5 * cell_size_m;
+  const auto steps = static_cast<int>(std::floor(length / step_m + 1e-9));
+  geometry::Point narrowest_point = from;
+  double narrowest = std::numeric_limits<double>::infinity();
+  for (int step = 0; step <= steps; ++step) {
+    const double travel = static_cast<double>(step) * step_m;
+    if (travel < keep_clear_m) {
+      continue;
+    }
+    const geometry::Point point = from + travel * direction;
+    if (obstacles.isBlocked(point)) {
+      continue;
+    }
+    const double clearance = obstacles.distanceToBoundary(point);
+    if (clearance < narrowest) {
+      narrowest = clearance;
+      narrowest_point = point;
+    }
+  }
+  if (!std::isfinite(narrowest)) {  // no free point, or nothing narrow anywhere near
+    return std::nullopt;
+  }
+  PassageSeal seal;
+  seal.centre = narrowest_point;
+  seal.half_width_m = narrowest;
+  const geometry::Point across(-direction.y(), direction.x());
+  const auto side_cells = static_cast<int>(std::floor(seal.half_width_m / cell_size_m + 1e-9));
+  for (int offset = -side_cells; offset <= side_cells; ++offset) {
+    seal.cells.push_back(seal.centre + static_cast<double>(offset) * cell_size_m * across);
+  }
+  const double reach = static_cast<double>(side_cells) * cell_size_m + std::max(0.0, inflation_m);
+  seal.across.start = seal.centre - reach * across;
+  seal.across.end = seal.centre + reach * across;
+  return seal;
+}
+
+std::size_t removeEdgesThroughSeal(const PassageSeal& seal, graph::DvGraph& graph)
+{
+  std::vector<std::pair<graph::VertexId, graph::VertexId>> crossing;
+  const std::vector<graph::Vertex>& slots = graph.vertexSlots();
+  for (graph::VertexId id = 0; id < slots.size(); ++id) {
+    if (!slots[id].alive) {
+      continue;
+    }
+    for (const graph::VisibilityLink& link : graph.visibilityLinks(id)) {
+      if (link.other > id && graph.contains(link.other) &&
+          geometry::segmentsIntersect(geometry::Segment{slots[id].position, slots[link.other].position},
+                                      seal.across)) {
+        crossing.emplace_back(id, link.other);
+      }
+    }
+  }
+  for (const auto& [first, second] : crossing) {
+    graph.removeVisibilityEdge(first, second);
+  }
+  return crossing.size();
+}
+
+}  // namespace ifar::planner
