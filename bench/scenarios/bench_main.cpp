@@ -4,6 +4,7 @@
 // line, the tables as Markdown and the PNG plots. Exit status: 0 all rows present and no planner error; 2 a
 // planner errored; 3 rows are missing (a kind gave fewer tasks than asked).
 
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -11,8 +12,11 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <memory>
+#include <mutex>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -146,6 +150,14 @@ struct SystemJob {
   scenarios::Task task;
 };
 
+/// One runner run of a job: FAR mode or ours, filled in by whichever worker thread drove it.
+struct SystemSlot {
+  std::size_t job;  // index into the jobs
+  bool ours;        // false: FAR mode
+  scenarios::SystemRun run;
+  bool skipped;  // the --system-budget was spent before it started
+};
+
 struct KeptWorld {
   std::string name;
   ifar::sim::World world;
@@ -180,6 +192,8 @@ int main(int argc, char** argv)
   double system_budget_minutes = 0.0;
   std::string commit = "unknown";
   std::string task_world_dir;
+  const unsigned hardware_threads = std::thread::hardware_concurrency();
+  int jobs_count = hardware_threads > 0 ? static_cast<int>(hardware_threads) : 1;
   app.add_option("--kinds", kind_list, "comma-separated: room,room_objects,office,willow,tunnel")
       ->capture_default_str();
   app.add_option("--tasks", tasks, "tasks per kind")->check(CLI::PositiveNumber)->capture_default_str();
@@ -217,6 +231,11 @@ int main(int argc, char** argv)
          "wall minutes for the whole suite; runner runs that would start later are recorded as skipped "
          "(0: no limit)")
       ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
+  app.add_option("--jobs", jobs_count,
+                 "runner runs driven at once (each is deterministic in simulated time; wall times grow when "
+                 "the cores are shared)")
+      ->check(CLI::PositiveNumber)
       ->capture_default_str();
   app.add_option("--commit", commit, "commit named in the tables' header")->capture_default_str();
   app.add_option("--task-worlds", task_world_dir,
@@ -274,6 +293,17 @@ int main(int argc, char** argv)
   map_settings.vehicle = vehicle;
   map_settings.inflation_m = 0.5 * vehicle.width_m;
   map_settings.interaction.pusher = ifar::interaction::PusherSettings::fromVehicle(vehicle);
+
+  // Read before the search part, so a bad runner config stops the suite at once, and only once.
+  std::unique_ptr<scenarios::SystemRunner> runner;
+  if (!no_system) {
+    try {
+      runner = std::make_unique<scenarios::SystemRunner>(config_dir);
+    } catch (const std::exception& error) {
+      std::cerr << "ifar bench: " << error.what() << "\n";
+      return 1;
+    }
+  }
 
   ifar::baselines::seedSamplingPlanners(seed);
   const std::string machine = machineDescription();
@@ -365,12 +395,10 @@ int main(int argc, char** argv)
     return std::find(system_kinds.begin(), system_kinds.end(), a.kind) <
            std::find(system_kinds.begin(), system_kinds.end(), b.kind);
   });
-  std::map<std::size_t, std::vector<scenarios::PathPair>> driven_pairs;  // kept world -> trajectories
-  int skipped = 0;
-  for (const SystemJob& job : jobs) {
-    const KeptWorld& world = kept[job.world];
-    scenarios::PathPair pair{{}, {}, job.task.start, job.task.goal};
-    if (!task_world_dir.empty()) {
+  // Task worlds first (cheap, and an unwritable folder stops the suite before hours of driving).
+  if (!task_world_dir.empty()) {
+    for (const SystemJob& job : jobs) {
+      const KeptWorld& world = kept[job.world];
       const std::string path = task_world_dir + "/" + world.name + "-" + job.task.id + ".yaml";
       const std::string error = ifar::sim::saveWorldFile(scenarios::taskWorld(world.world, job.task), path);
       if (!error.empty()) {
@@ -378,28 +406,66 @@ int main(int argc, char** argv)
         return 2;
       }
     }
-    for (const std::string planner : {"far", "ours"}) {
+  }
+  // Every (task, mode) run is independent and deterministic in simulated time: `jobs_count` threads take
+  // them in order; the rows keep that order whatever finishes first.
+  std::vector<SystemSlot> slots;
+  for (std::size_t job = 0; job < jobs.size(); ++job) {
+    for (const bool ours : {false, true}) {
+      slots.push_back({job, ours, {}, false});
+    }
+  }
+  std::atomic<std::size_t> next_slot{0};
+  std::mutex print_mutex;
+  const auto drive_slots = [&] {
+    for (std::size_t index = next_slot++; index < slots.size(); index = next_slot++) {
+      SystemSlot& slot = slots[index];
+      const SystemJob& job = jobs[slot.job];
       const double used_minutes = std::chrono::duration<double>(Clock::now() - began).count() / 60.0;
       if (system_budget_minutes > 0.0 && used_minutes > system_budget_minutes &&
           scenarios::systemRunnerAvailable()) {
-        rows.push_back(skippedRow(job.kind, world.name, job.task, planner));
+        slot.skipped = true;
+        continue;
+      }
+      slot.run = runner->run(kept[job.world].world, job.task, slot.ours,
+                             std::min(max_sim_time, sim_base_s + sim_per_metre_s * job.task.optimal));
+      const std::lock_guard<std::mutex> lock(print_mutex);
+      const scenarios::ResultRow row =
+          systemRow(job.kind, kept[job.world].name, job.task, slot.ours ? "ours" : "far", slot.run);
+      std::cerr << scenarios::kindName(job.kind) << " " << kept[job.world].name << " " << job.task.id << " "
+                << row.planner << ": " << row.status << " " << row.reason << " (" << slot.run.distance_m
+                << " m, " << slot.run.sim_time_s << " s simulated, " << slot.run.wall_time_s << " s wall)\n";
+    }
+  };
+  {
+    std::vector<std::thread> workers;
+    for (int worker = 0; worker < jobs_count; ++worker) {
+      workers.emplace_back(drive_slots);
+    }
+    for (std::thread& worker : workers) {
+      worker.join();
+    }
+  }
+  std::map<std::size_t, std::vector<scenarios::PathPair>> driven_pairs;  // kept world -> trajectories
+  int skipped = 0;
+  for (std::size_t job_index = 0; job_index < jobs.size(); ++job_index) {
+    const SystemJob& job = jobs[job_index];
+    scenarios::PathPair pair{{}, {}, job.task.start, job.task.goal};
+    for (const SystemSlot& slot : slots) {
+      if (slot.job != job_index) {
+        continue;
+      }
+      const std::string planner = slot.ours ? "ours" : "far";
+      if (slot.skipped) {
+        rows.push_back(skippedRow(job.kind, kept[job.world].name, job.task, planner));
         ++skipped;
         continue;
       }
-      scenarios::SystemRunSettings system_settings;
-      system_settings.config_dir = config_dir;
-      system_settings.max_sim_time_s =
-          std::min(max_sim_time, sim_base_s + sim_per_metre_s * job.task.optimal);
-      const scenarios::SystemRun run =
-          scenarios::runSystem(world.world, job.task, planner == std::string("ours"), system_settings);
-      rows.push_back(systemRow(job.kind, world.name, job.task, planner, run));
-      std::vector<ifar::geometry::Point>& line = planner == std::string("ours") ? pair.ours : pair.far;
-      for (const ifar::geometry::Pose2& pose : run.trajectory) {
+      rows.push_back(systemRow(job.kind, kept[job.world].name, job.task, planner, slot.run));
+      std::vector<ifar::geometry::Point>& line = slot.ours ? pair.ours : pair.far;
+      for (const ifar::geometry::Pose2& pose : slot.run.trajectory) {
         line.push_back(pose.position());
       }
-      std::cerr << scenarios::kindName(job.kind) << " " << world.name << " " << job.task.id << " " << planner
-                << ": " << rows.back().status << " " << rows.back().reason << " (" << run.distance_m << " m, "
-                << run.sim_time_s << " s simulated, " << run.wall_time_s << " s wall)\n";
     }
     if (!pair.far.empty() || !pair.ours.empty()) {
       driven_pairs[job.world].push_back(pair);

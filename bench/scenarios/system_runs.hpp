@@ -4,6 +4,7 @@
 // exists (system_runs_runner.cpp) and otherwise against a stand-in that reports "runner unavailable"
 // (system_runs_unavailable.cpp), so Tables II and III always come out of the same command.
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -12,11 +13,6 @@
 #include "sim/world/world.hpp"
 
 namespace ifar::scenarios {
-
-struct SystemRunSettings {
-  std::string config_dir;         // holds vehicle.yaml, sim.yaml, planner.yaml, executive.yaml
-  double max_sim_time_s = 600.0;  // per run
-};
 
 struct SystemRun {
   bool ran = false;  // false: the runner is not available (or refused the request); see `reason`
@@ -32,9 +28,26 @@ struct SystemRun {
 /// False when this build has no headless runner.
 bool systemRunnerAvailable();
 
-/// Drives from task.start to task.goal in `world` (its start and goals replaced by the task's).
-/// `interaction_enabled` false is FAR mode.
-SystemRun runSystem(const sim::World& world, const Task& task, bool interaction_enabled,
-                    const SystemRunSettings& settings);
+/// The headless runner with the settings every run of a suite shares, read once: a suite that runs for
+/// an hour must not pick up a config file edited half-way through (nor fail on it run by run).
+class SystemRunner {
+ public:
+  /// Reads vehicle.yaml, sim.yaml, planner.yaml and executive.yaml from `config_dir`. Throws
+  /// std::runtime_error naming the file and key when one is bad (not when the build has no runner).
+  explicit SystemRunner(const std::string& config_dir);
+  ~SystemRunner();
+  SystemRunner(const SystemRunner&) = delete;
+  SystemRunner& operator=(const SystemRunner&) = delete;
+
+  /// Drives from task.start to task.goal in `world` (its start and goals replaced by the task's) for at
+  /// most `max_sim_time_s` simulated seconds. `interaction_enabled` false is FAR mode. Safe to call from
+  /// several threads at once.
+  SystemRun run(const sim::World& world, const Task& task, bool interaction_enabled,
+                double max_sim_time_s) const;
+
+ private:
+  struct Settings;
+  std::unique_ptr<const Settings> settings_;
+};
 
 }  // namespace ifar::scenarios

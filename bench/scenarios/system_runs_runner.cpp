@@ -1,5 +1,6 @@
 // Built when the headless runner (sim/runner, target ifar_runner) exists: Tables II and III for real.
 #include <exception>
+#include <stdexcept>
 
 #include "bench/scenarios/system_runs.hpp"
 #include "sim/runner/run_config.hpp"
@@ -12,21 +13,30 @@ bool systemRunnerAvailable()
   return true;
 }
 
-SystemRun runSystem(const sim::World& world, const Task& task, bool interaction_enabled,
-                    const SystemRunSettings& settings)
+struct SystemRunner::Settings {
+  runner::RunRequest request;  // everything but the world, goal, mode and time cap
+};
+
+SystemRunner::SystemRunner(const std::string& config_dir)
+{
+  try {
+    settings_ = std::make_unique<const Settings>(Settings{runner::loadRunSettings(config_dir)});
+  } catch (const std::exception& error) {
+    throw std::runtime_error(std::string("runner settings: ") + error.what());
+  }
+}
+
+SystemRunner::~SystemRunner() = default;
+
+SystemRun SystemRunner::run(const sim::World& world, const Task& task, bool interaction_enabled,
+                            double max_sim_time_s) const
 {
   SystemRun run;
-  runner::RunRequest request;
-  try {
-    request = runner::loadRunSettings(settings.config_dir);
-  } catch (const std::exception& error) {
-    run.reason = std::string("runner settings: ") + error.what();
-    return run;
-  }
+  runner::RunRequest request = settings_->request;
   request.world = taskWorld(world, task);
   request.goal = task.goal;
   request.planner.interaction_enabled = interaction_enabled;
-  request.max_sim_time_s = settings.max_sim_time_s;
+  request.max_sim_time_s = max_sim_time_s;
   run.ran = true;
   try {
     const runner::RunSummary summary = runner::runScenario(request, {});

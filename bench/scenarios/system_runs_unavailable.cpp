@@ -8,8 +8,14 @@ bool systemRunnerAvailable()
   return false;
 }
 
-SystemRun runSystem(const sim::World& /*world*/, const Task& /*task*/, bool /*interaction_enabled*/,
-                    const SystemRunSettings& /*settings*/)
+struct SystemRunner::Settings {};
+
+SystemRunner::SystemRunner(const std::string& /*config_dir*/) {}
+
+SystemRunner::~SystemRunner() = default;
+
+SystemRun SystemRunner::run(const sim::World& /*world*/, const Task& /*task*/, bool /*interaction_enabled*/,
+                            double /*max_sim_time_s*/) const
 {
   SystemRun run;
   run.reason = "runner unavailable: this build has no sim/runner (target ifar_runner)";

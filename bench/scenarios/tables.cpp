@@ -39,13 +39,15 @@ std::string milliseconds(double value)
   return fixed(value, 4);
 }
 
+/// The rows of `table` and `planner` whose kind is one of `kinds` ("office+willow" names both).
 std::vector<const ResultRow*> select(const std::vector<ResultRow>& rows, const std::string& table,
-                                     const std::string& planner, const std::string& kind)
+                                     const std::string& planner, const std::string& kinds)
 {
   std::vector<const ResultRow*> selected;
   for (const ResultRow& row : rows) {
+    const bool kind_matches = ("+" + kinds + "+").find("+" + row.kind + "+") != std::string::npos;
     // Runner runs skipped for the time budget are left out (the notes count them), not scored as failures.
-    if (row.table == table && row.planner == planner && row.kind == kind && row.status != "skipped") {
+    if (row.table == table && row.planner == planner && kind_matches && row.status != "skipped") {
       selected.push_back(&row);
     }
   }
@@ -240,7 +242,8 @@ std::string targetCheck(const std::vector<ResultRow>& rows)
                                    : "missed") +
             " |\n";
   };
-  for (const std::string kind : {"office", "willow", "tunnel"}) {
+  // The Office is the Willow Garage plan plus the generated offices: "office+willow" pools them.
+  for (const std::string kind : {"office", "willow", "office+willow", "tunnel"}) {
     ratio_line("grid_astar", kind);
     ratio_line("bit_star", kind);
   }
@@ -260,21 +263,29 @@ std::string targetCheck(const std::vector<ResultRow>& rows)
   spl_line("room_objects", 0.80);
   spl_line("office", 0.90);
   spl_line("willow", 0.90);
+  spl_line("office+willow", 0.90);
   spl_line("tunnel", 0.97);
-  if (runner) {
+  for (const std::string kind : {"office", "office+willow"}) {
+    if (!runner) {
+      text +=
+          "| ours travels >= 40% less than FAR mode (" + kind + ") | runner unavailable | not measured |\n";
+      continue;
+    }
     double far_distance = 0.0;
     double ours_distance = 0.0;
-    for (const ResultRow* row : select(rows, "system", "far", "office")) {
+    for (const ResultRow* row : select(rows, "system", "far", kind)) {
       far_distance += std::isfinite(row->length) ? row->length : 0.0;
     }
-    for (const ResultRow* row : select(rows, "system", "ours", "office")) {
+    for (const ResultRow* row : select(rows, "system", "ours", kind)) {
       ours_distance += std::isfinite(row->length) ? row->length : 0.0;
     }
     const double shorter = 1.0 - ours_distance / far_distance;
-    text += "| ours travels >= 40% less than FAR mode (office) | " + fixed(100.0 * shorter, 1) + "%" + " | " +
-            (shorter >= 0.4 ? "met" : "missed") + " |\n";
-  } else {
-    text += "| ours travels >= 40% less than FAR mode (office) | runner unavailable | not measured |\n";
+    text += "| ours travels >= 40% less than FAR mode (" + kind + ") | " +
+            (std::isfinite(shorter) ? fixed(100.0 * shorter, 1) + "%" : std::string("-")) + " | " +
+            (!std::isfinite(shorter) ? "not measured"
+             : shorter >= 0.4        ? "met"
+                                     : "missed") +
+            " |\n";
   }
   return text;
 }

@@ -1,0 +1,97 @@
+// The issue 8 target check: the issue's Office is the Willow Garage plan plus the generated offices, so
+// the check pools their rows ("office+willow") beside the per-kind lines.
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "bench/scenarios/result_row.hpp"
+#include "bench/scenarios/tables.hpp"
+
+namespace ifar::scenarios {
+namespace {
+
+ResultRow row(const std::string& table, const std::string& planner, const std::string& kind, bool success,
+              double length, double optimal, double ms)
+{
+  ResultRow result;
+  result.table = table;
+  result.planner = planner;
+  result.kind = kind;
+  result.world = kind + "-1";
+  result.task = "t0";
+  result.success = success;
+  result.length = length;
+  result.optimal = optimal;
+  result.ms = ms;
+  result.status = success ? "solved" : "no_path";
+  return result;
+}
+
+/// The line of `text` that starts with `start`, or "" when there is none.
+std::string lineStartingWith(const std::string& text, const std::string& start)
+{
+  const std::size_t at = text.find("\n" + start);
+  if (at == std::string::npos) {
+    return "";
+  }
+  return text.substr(at + 1, text.find('\n', at + 1) - at - 1);
+}
+
+TEST(TargetCheck, PoolsTheGeneratedOfficesWithWillowAsTheIssuesOffice)
+{
+  std::vector<ResultRow> rows;
+  // Generated offices: grid A* 10 ms, ours 0.1 ms on each of three tasks.
+  for (int task = 0; task < 3; ++task) {
+    rows.push_back(row("search", "grid_astar", "office", true, 90.0, 90.0, 10.0));
+    rows.push_back(row("search", "ours", "office", true, 90.0, 90.0, 0.1));
+  }
+  // Willow: grid A* solves one task in 0.6 ms and fails two (no path); ours 0.1 ms on all three.
+  rows.push_back(row("search", "grid_astar", "willow", true, 45.0, 45.0, 0.6));
+  rows.push_back(row("search", "grid_astar", "willow", false, NAN, 45.0, 0.5));
+  rows.push_back(row("search", "grid_astar", "willow", false, NAN, 45.0, 0.5));
+  for (int task = 0; task < 3; ++task) {
+    rows.push_back(row("search", "ours", "willow", true, 45.0, 45.0, 0.1));
+  }
+  const std::string check = targetCheck(rows);
+  EXPECT_NE(
+      lineStartingWith(check, "| ours >= 10x faster than grid_astar (willow, median) | 6.0x").find("missed"),
+      std::string::npos)
+      << check;
+  // Pooled: grid A*'s median over its four successful queries is 10 ms, ours over six is 0.1 ms.
+  EXPECT_NE(lineStartingWith(check, "| ours >= 10x faster than grid_astar (office+willow, median) | 100.0x")
+                .find("met"),
+            std::string::npos)
+      << check;
+}
+
+TEST(TargetCheck, PooledOfficeSplAndTravelCountEveryDrivenTaskOfBothKinds)
+{
+  std::vector<ResultRow> rows;
+  rows.push_back(row("system", "ours", "office", true, 100.0, 90.0, 1.0));  // SPL 0.9
+  rows.push_back(row("system", "ours", "willow", false, 60.0, 45.0, 1.0));  // SPL 0
+  rows.push_back(row("system", "far", "office", true, 200.0, 90.0, 1.0));
+  rows.push_back(row("system", "far", "willow", false, 40.0, 45.0, 1.0));
+  const std::string check = targetCheck(rows);
+  EXPECT_NE(lineStartingWith(check, "| SPL office >= 0.90 (driven) | 0.900, success 1/1 | met").size(), 0U)
+      << check;
+  EXPECT_NE(
+      lineStartingWith(check, "| SPL office+willow >= 0.90 (driven) | 0.450, success 1/2 | missed by 0.450")
+          .size(),
+      0U)
+      << check;
+  // 160 m against 240 m.
+  EXPECT_NE(
+      lineStartingWith(check, "| ours travels >= 40% less than FAR mode (office+willow) | 33.3% | missed")
+          .size(),
+      0U)
+      << check;
+  EXPECT_NE(lineStartingWith(check, "| ours travels >= 40% less than FAR mode (office) | 50.0% | met").size(),
+            0U)
+      << check;
+}
+
+}  // namespace
+}  // namespace ifar::scenarios
