@@ -381,6 +381,13 @@ void Planner::search(FrameResult& result)
   } else {
     status.state = PlannerState::NoPath;
     appendMessage(status.message, std::string("search: ") + graph::toString(found.status));
+    if (sealed_.size() > 0) {
+      // A seal is a guess from stalls (the follower may have failed at a passage the vehicle fits): with
+      // no way left at all, trying a sealed passage again beats stopping. From the next frame.
+      appendMessage(status.message, "forgetting " + std::to_string(sealed_.size()) +
+                                        " sealed cells of blocked passages: no path without them");
+      sealed_ = perception::BackgroundMemory(settings_.perception.cell_size_m);
+    }
   }
   last_path_ = path;
   result.path = std::move(path);

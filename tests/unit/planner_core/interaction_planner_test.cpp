@@ -311,9 +311,66 @@ TEST(InteractionPlanner, ABlockedPassageIsSealedAndRoutedAround)
 
   // The doorway's old corners go once unseen for graph.votes frames (the approach frames are that long).
   const FrameResult after = runFrames(planner, approachFrames());
+  ASSERT_TRUE(after.path.valid) << after.status.message;
   const std::optional<double> crossing = crossingX(after.path, 16.0);
   EXPECT_FALSE(crossing && *crossing > 24.0 && *crossing < 28.0)
       << "still through the sealed doorway at x = " << *crossing << ": " << after.status.message;
+}
+
+/// A closed 12 m x 12 m room split at y = 6 by a wall with one 1.0 m door at x = 6; the vehicle stands at
+/// (6, 3) facing it.
+const std::vector<FrameInput>& oneDoorFrames()
+{
+  static const std::vector<FrameInput> frames = [] {
+    const sim::WorldResult world = sim::parseWorld(R"(
+name: one_door
+units: m
+start: {x: 6, y: 3, heading_deg: 90}
+obstacles:
+  - {name: south, polygon: [0, 0, 12, 0, 12, 0.2, 0, 0.2]}
+  - {name: north, polygon: [0, 11.8, 12, 11.8, 12, 12, 0, 12]}
+  - {name: west, polygon: [0, 0.2, 0.2, 0.2, 0.2, 11.8, 0, 11.8]}
+  - {name: east, polygon: [11.8, 0.2, 12, 0.2, 12, 11.8, 11.8, 11.8]}
+  - {name: left_of_door, polygon: [0.2, 5.9, 5.5, 5.9, 5.5, 6.1, 0.2, 6.1]}
+  - {name: right_of_door, polygon: [6.5, 5.9, 11.8, 5.9, 11.8, 6.1, 6.5, 6.1]}
+)",
+                                                   "one_door");
+    EXPECT_TRUE(world.ok()) << world.error();
+    FrameAssembler assembler{InputSettings{}};
+    return world.ok() ? testing::feedAll(testing::recordSimulation(world.world(), 1.25), assembler)
+                      : std::vector<FrameInput>{};
+  }();
+  return frames;
+}
+
+// Seals are guesses from stalls (the follower may fail at a door the vehicle fits): when they leave no way
+// at all, the planner forgets them and the route goes through the door again rather than stop.
+TEST(InteractionPlanner, SealsThatLeaveNoPathAreForgotten)
+{
+  PlannerSettings settings;
+  settings.perception.remember_background = false;
+  Planner planner{settings};
+  ASSERT_TRUE(planner.setGoal(Goal{4, geometry::Point(6.0, 9.0)}));
+  FrameResult result;
+  for (const FrameInput& frame : oneDoorFrames()) {
+    result = planner.processFrame(frame);
+  }
+  ASSERT_TRUE(result.path.valid) << result.status.message;
+
+  result = planner.applyBlockedPassage({geometry::Point(6.0, 4.5), geometry::Point(6.0, 7.5)});
+  ASSERT_GT(planner.sealedCells(), 0U) << result.status.message;
+  // From the next frame the layer holds the seal: no way is left, and the seals go.
+  result = planner.processFrame(oneDoorFrames().front());
+  EXPECT_FALSE(result.path.valid) << "the sealed door was the only way";
+  EXPECT_NE(result.status.message.find("forgetting"), std::string::npos) << result.status.message;
+  EXPECT_EQ(planner.sealedCells(), 0U);
+  for (const FrameInput& frame : oneDoorFrames()) {
+    result = planner.processFrame(frame);
+  }
+  ASSERT_TRUE(result.path.valid) << result.status.message;
+  const std::optional<double> crossing = crossingX(result.path, 6.0);
+  ASSERT_TRUE(crossing);
+  EXPECT_NEAR(*crossing, 6.0, 0.5);
 }
 
 TEST(InteractionPlanner, ABlockedPassageThatCannotBeSealedIsCountedAndChangesNothing)
