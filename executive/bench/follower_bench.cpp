@@ -7,6 +7,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include "executive/doorway/doorway.hpp"
 #include "executive/follower/follower.hpp"
 #include "executive/modes/executive.hpp"
 
@@ -73,5 +74,35 @@ void BM_ExecutiveStepFollowing(benchmark::State& state)
   }
 }
 BENCHMARK(BM_ExecutiveStepFollowing)->Unit(benchmark::kMicrosecond);
+
+/// A 1.0 m door at the origin in a 0.2 m wall along x (lidar-like points 5 cm apart on both faces), plus
+/// `clutter_points` of clutter around it (none within 2 m of the door).
+std::vector<Point> doorAndClutter(int clutter_points)
+{
+  std::vector<Point> points = clutter(clutter_points);
+  for (int step = -80; step <= 80; ++step) {
+    const double x = 0.05 * step;
+    if (std::abs(x) >= 0.5) {
+      points.emplace_back(x, -0.1);
+      points.emplace_back(x, 0.1);
+    }
+  }
+  return points;
+}
+
+/// The executive looks for a doorway on the path ahead every following cycle; this is its cost when
+/// there is one (gap search plus the run fit; the fit is skipped when there is none).
+void BM_FindDoorway(benchmark::State& state)
+{
+  const std::vector<Point> points = doorAndClutter(static_cast<int>(state.range(0)));
+  const std::vector<Point> path{{-2.0, -2.0}, {-0.15, -0.3}, {1.5, 2.5}};
+  const ifar::executive::Footprint footprint;
+  const ifar::executive::DoorwaySettings settings;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(ifar::executive::findDoorway(path, points, footprint, settings));
+  }
+  state.counters["points"] = static_cast<double>(points.size());
+}
+BENCHMARK(BM_FindDoorway)->Arg(500)->Arg(5000)->Unit(benchmark::kMicrosecond);
 
 }  // namespace

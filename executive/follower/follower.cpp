@@ -205,6 +205,29 @@ FollowerResult follow(const geometry::Pose2& pose, const geometry::Point& target
   return result;
 }
 
+FollowerResult followSqueezing(const geometry::Pose2& pose, const geometry::Point& target,
+                               bool stop_at_target, common::Span<const geometry::Point> obstacles,
+                               const FollowerSettings& settings, double squeeze_clearance_m,
+                               const DifferentialDrive& drive)
+{
+  constexpr double kNoProgressM = 0.01;
+  FollowerResult result = follow(pose, target, stop_at_target, obstacles, settings, drive);
+  const bool stuck = result.status == FollowerStatus::Blocked ||
+                     (result.status == FollowerStatus::Moving && result.progress_m <= kNoProgressM);
+  if (!stuck || !(squeeze_clearance_m < settings.clearance_m)) {
+    return result;
+  }
+  FollowerSettings squeezed = settings;
+  squeezed.clearance_m = squeeze_clearance_m;
+  FollowerResult retry = follow(pose, target, stop_at_target, obstacles, squeezed, drive);
+  if (retry.status == FollowerStatus::Moving &&
+      (result.status == FollowerStatus::Blocked || retry.progress_m > result.progress_m + kNoProgressM)) {
+    retry.reason += fmt::format(" (squeezing: clearance {:.2f} m)", squeeze_clearance_m);
+    return retry;
+  }
+  return result;
+}
+
 std::optional<double> facingDirection(const geometry::Pose2& pose, const geometry::Point& target,
                                       bool stop_at_target, common::Span<const geometry::Point> obstacles,
                                       const FollowerSettings& settings, const DifferentialDrive& drive)

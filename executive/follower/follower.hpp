@@ -62,6 +62,15 @@ FollowerResult follow(const geometry::Pose2& pose, const geometry::Point& target
                       common::Span<const geometry::Point> obstacles, const FollowerSettings& settings,
                       const DifferentialDrive& drive);
 
+/// follow(), and when that is stuck (blocked, or moving without progress: hemmed in along a wall at about
+/// the clearance, or lined up with a door only the clearance wider than the vehicle) once more with the
+/// clearance lowered to `squeeze_clearance_m`, taking the retry when it moves (blocked) or gets further;
+/// its reason then ends with "(squeezing: clearance x m)".
+FollowerResult followSqueezing(const geometry::Pose2& pose, const geometry::Point& target,
+                               bool stop_at_target, common::Span<const geometry::Point> obstacles,
+                               const FollowerSettings& settings, double squeeze_clearance_m,
+                               const DifferentialDrive& drive);
+
 /// The heading the follower's cost-to-go falls along at `pose` toward `target` (the bearing of the target
 /// itself when it is near): the way to face before driving on. None when the field has no way there.
 std::optional<double> facingDirection(const geometry::Pose2& pose, const geometry::Point& target,

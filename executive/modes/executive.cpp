@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <fmt/format.h>
 
@@ -30,7 +31,6 @@ struct Executive::Cycle {
 namespace {
 
 /// Metres of cost-to-go below which a follower arc counts as getting nowhere.
-constexpr double kNoProgressM = 0.01;
 /// Metres beyond the goal tolerance within which an arrived vehicle stays arrived for a new plan.
 constexpr double kStayArrivedM = 0.1;
 // After a stall's straight escape the vehicle turns on the spot to the cost-to-go's heading when it is off
@@ -42,6 +42,25 @@ constexpr double kStallEscapeReleases = 3.0;
 /// Stalls within this distance of the first one of a series, toward waypoints this close to each other,
 /// count as the same passage.
 constexpr double kStallSiteRadiusM = 1.0;
+
+/// The approach that drives a doorway's run: to its start, square to the door, along it to its end. No
+/// bumper contact ends it.
+ApproachSettings doorwayRunSettings(const ExecutiveSettings& settings, const DifferentialDrive& drive)
+{
+  ApproachSettings run = settings.approach;
+  // Nothing is pushed: the turn square to the door may use the vehicle's own turn rate.
+  run.control.max_angular_velocity = drive.maxAngularVelocity();
+  run.standoff_m = settings.doorway.approach_m + settings.doorway.exit_m;
+  run.creep_speed = settings.doorway.speed;
+  run.contact_tolerance_m = settings.waypoint_tolerance_m / 4.0;
+  run.contact_force_n = std::numeric_limits<double>::infinity();
+  // Arriving at the run's start at speed and within this of its heading, the lane tracker turns the rest
+  // while moving (a stop and a turn on the spot cost 2-4 s a door).
+  run.stop_at_standoff = false;
+  run.heading_tolerance_rad = 0.3;
+  run.standoff_tolerance_m = std::max(run.standoff_tolerance_m, 0.15);
+  return run;
+}
 
 bool fresh(std::int64_t now_us, std::int64_t stamp_us, double threshold_s)
 {
@@ -65,6 +84,7 @@ Mode Executive::modeOf(Task task)
     case Task::Idle:
       return Mode::Idle;
     case Task::Follow:
+    case Task::Doorway:
       return Mode::Follow;
     case Task::Approach:
       return Mode::Approach;
@@ -178,6 +198,17 @@ void Executive::absorbPath(const Inputs& inputs)
       adoptPath(incoming);
       return;
     }
+    case Task::Doorway:
+      // A run under way goes on while the new path still goes through its door, and once in the door (along
+      // the lane) whatever the new path: stopping there leaves the vehicle wedged between the posts.
+      if (incoming.valid && incoming.goal_id == goal_id_ &&
+          (doorway_run_.phase() == ApproachPhase::Creep || pathCrossesDoorway(incoming))) {
+        path_ = incoming;
+        waypoint_index_ = std::min<std::size_t>(1, path_.waypoints.size() - 1);
+        return;
+      }
+      adoptPath(incoming);
+      return;
     case Task::Arrived:
       // A replanned path to the same goal does not restart following for the centimetres the vehicle
       // coasted after arriving (it stopped 0.31 m from the goal and followed again, in the demo).
@@ -270,10 +301,16 @@ void Executive::stepFollow(Cycle& cycle)
       active_plan_ = *plan;
       startObjectPath();
       approach_.begin(active_plan_.contact_pose, cycle.pose, settings_.approach);
+      anchorMotion(cycle);
       task_ = Task::Approach;
       stepApproach(cycle);
       return;
     }
+  }
+
+  if (const std::optional<Doorway> doorway = doorwayAhead(cycle)) {
+    startDoorway(cycle, *doorway);
+    return;
   }
 
   // The follower stops at its target: at the goal that must be within the arrival tolerance, or the
@@ -281,26 +318,12 @@ void Executive::stepFollow(Cycle& cycle)
   FollowerSettings follower = settings_.follower;
   follower.goal_tolerance_m =
       waypoint_index_ == last ? settings_.goal_tolerance_m : settings_.waypoint_tolerance_m;
-  FollowerResult result =
-      follow(cycle.pose, waypoint.position, waypoint_index_ == last, cycle.obstacles, follower, drive_);
   // Hemmed in at about the clearance (along a wall every arc dips a little below it; turning swings a
   // corner closer), or lined up with a door barely wider than the vehicle plus twice the clearance (only
-  // turning on the spot is left): retry with the clearance lowered to the guard's, and take the retry
-  // when it gets further.
-  const bool stuck = result.status == FollowerStatus::Blocked ||
-                     (result.status == FollowerStatus::Moving && result.progress_m <= kNoProgressM);
-  const double squeeze_m = settings_.pushed_object.guard_clearance_m;
-  if (stuck && squeeze_m < follower.clearance_m) {
-    FollowerSettings squeezed = follower;
-    squeezed.clearance_m = squeeze_m;
-    FollowerResult retry =
-        follow(cycle.pose, waypoint.position, waypoint_index_ == last, cycle.obstacles, squeezed, drive_);
-    if (retry.status == FollowerStatus::Moving &&
-        (result.status == FollowerStatus::Blocked || retry.progress_m > result.progress_m + kNoProgressM)) {
-      retry.reason += fmt::format(" (squeezing: clearance {:.2f} m)", squeeze_m);
-      result = retry;
-    }
-  }
+  // turning on the spot is left): the follower retries with the clearance lowered to the guard's.
+  const FollowerResult result =
+      followSqueezing(cycle.pose, waypoint.position, waypoint_index_ == last, cycle.obstacles, follower,
+                      settings_.pushed_object.guard_clearance_m, drive_);
   cycle.desired = result.command;
   cycle.reason = fmt::format("waypoint {} of {}: {}", waypoint_index_, last, result.reason);
   // Following that gets nowhere (the arcs dither left and right, wedged at a door or beside a wall with
@@ -327,6 +350,136 @@ void Executive::stepFollow(Cycle& cycle)
   if (result.status == FollowerStatus::Arrived && waypoint_index_ < last) {
     ++waypoint_index_;
   }
+}
+
+std::optional<Doorway> Executive::doorwayAhead(const Cycle& cycle) const
+{
+  if (!settings_.doorway.enabled || !cycle.obstacles_fresh) {
+    return std::nullopt;
+  }
+  // The path ahead up to where a push takes over (pushing goes through its own gap).
+  std::vector<geometry::Point> ahead{cycle.pose.position()};
+  for (std::size_t index = waypoint_index_; index < path_.waypoints.size(); ++index) {
+    const Waypoint& waypoint = path_.waypoints[index];
+    if (waypoint.kind == WaypointKind::Push ||
+        (waypoint.kind == WaypointKind::Topological && planForWaypoint(index))) {
+      break;
+    }
+    ahead.push_back(waypoint.position);
+  }
+  std::optional<Doorway> doorway =
+      findDoorway(common::Span<const geometry::Point>(ahead.data(), ahead.size()), cycle.obstacles,
+                  settings_.follower.footprint, settings_.doorway);
+  if (!doorway) {
+    return std::nullopt;
+  }
+  for (const auto& [centre, until_us] : doorways_given_up_) {
+    if (cycle.now_us < until_us && (centre - doorway->centre).norm() < 0.5) {
+      return std::nullopt;
+    }
+  }
+  // A goal in the doorway or on its run is the follower's to reach.
+  const geometry::Point goal = path_.waypoints.back().position;
+  const geometry::Point left(-doorway->heading.y(), doorway->heading.x());
+  if (doorway->along(goal) > -settings_.doorway.approach_m &&
+      doorway->along(goal) < settings_.doorway.exit_m + settings_.goal_tolerance_m &&
+      std::abs(left.dot(goal - doorway->centre)) < doorway->width_m) {
+    return std::nullopt;
+  }
+  return doorway;
+}
+
+void Executive::startDoorway(Cycle& cycle, const Doorway& doorway)
+{
+  doorway_ = doorway;
+  const geometry::Point end = doorway.runEnd(settings_.doorway);
+  ApproachSettings run = doorwayRunSettings(settings_, drive_);
+  doorway_run_.begin({end.x(), end.y(), std::atan2(doorway.heading.y(), doorway.heading.x())}, cycle.pose,
+                     run);
+  doorway_started_us_ = cycle.now_us;
+  anchorMotion(cycle);
+  task_ = Task::Doorway;
+  stepDoorway(cycle);
+}
+
+void Executive::stepDoorway(Cycle& cycle)
+{
+  const Doorway& doorway = *doorway_;
+  const std::string named = fmt::format("doorway at ({:.2f}, {:.2f}), {:.2f} m wide", doorway.centre.x(),
+                                        doorway.centre.y(), doorway.width_m);
+  const double elapsed_s = static_cast<double>(cycle.now_us - doorway_started_us_) * 1e-6;
+  // Standing still (the way to the run's start blocked, the guard stopping the run) gives the run up as
+  // surely as the timeout does.
+  const bool stuck = standingStill(cycle);
+  if (elapsed_s > settings_.doorway.timeout_s || stuck) {
+    // Left to the follower for a while; it may yet find its own way through.
+    doorways_given_up_.emplace_back(
+        doorway.centre, cycle.now_us + static_cast<std::int64_t>(settings_.doorway.retry_after_s * 1e6));
+    task_ = Task::Follow;
+    stall_anchor_us_ = -1;
+    stepFollow(cycle);
+    cycle.reason = fmt::format("{} given up after {:.0f} s{}; {}", named, elapsed_s,
+                               stuck ? " without moving" : "", cycle.reason);
+    return;
+  }
+  cycle.target = doorway.runEnd(settings_.doorway);
+  const ApproachStep result = doorway_run_.step(
+      cycle.pose, 0.0, cycle.obstacles, doorwayRunSettings(settings_, drive_), settings_.follower, drive_);
+  if (result.phase != ApproachPhase::Done) {
+    cycle.desired = result.command;
+    cycle.reason = fmt::format("{}: {}", named, result.reason);
+    if (result.phase != ApproachPhase::ToStandoff) {
+      // Turning square to the door and running through it are not the follower's: the guard checks them.
+      guardCommand(cycle, cycle.obstacles);
+    }
+    return;
+  }
+  // Through: the waypoints at the posts and on the run are behind.
+  const std::size_t last = path_.waypoints.size() - 1;
+  while (waypoint_index_ < last) {
+    const geometry::Point& position = path_.waypoints[waypoint_index_].position;
+    if (doorway.along(position) > settings_.doorway.exit_m + settings_.waypoint_tolerance_m ||
+        (position - doorway.centre).norm() > settings_.doorway.approach_m + settings_.doorway.exit_m + 0.5) {
+      break;
+    }
+    ++waypoint_index_;
+  }
+  doorway_.reset();
+  task_ = Task::Follow;
+  stall_anchor_us_ = -1;
+  stepFollow(cycle);
+}
+
+bool Executive::pathCrossesDoorway(const Path& path) const
+{
+  if (!doorway_ || path.waypoints.size() < 2) {
+    return false;
+  }
+  const geometry::Point left(-doorway_->heading.y(), doorway_->heading.x());
+  const geometry::Segment door{doorway_->centre - doorway_->width_m * left,
+                               doorway_->centre + doorway_->width_m * left};
+  for (std::size_t index = 0; index + 1 < path.waypoints.size(); ++index) {
+    if (geometry::segmentsIntersect(
+            geometry::Segment{path.waypoints[index].position, path.waypoints[index + 1].position}, door)) {
+      return true;
+    }
+  }
+  return false;
+}
+
+void Executive::anchorMotion(const Cycle& cycle)
+{
+  motion_anchor_ = cycle.pose;
+  motion_anchor_us_ = cycle.now_us;
+}
+
+bool Executive::standingStill(const Cycle& cycle)
+{
+  if ((cycle.pose.position() - motion_anchor_.position()).norm() > 0.1 ||
+      std::abs(wrapToPi(cycle.pose.heading - motion_anchor_.heading)) > 0.3) {
+    anchorMotion(cycle);
+  }
+  return static_cast<double>(cycle.now_us - motion_anchor_us_) * 1e-6 > 2.0 * settings_.stall_timeout_s;
 }
 
 void Executive::countStall(Cycle& cycle, const geometry::Point& target)
@@ -361,6 +514,26 @@ void Executive::stepApproach(Cycle& cycle)
   cycle.target = active_plan_.contact_pose.position();
   cycle.target_object_id = active_plan_.object_id;
   const common::Span<const geometry::Point> obstacles = objectFreeObstacles(cycle);
+  if (standingStill(cycle)) {
+    // The contact cannot be reached (the stand-off point boxed in, the guard stopping the creep): the plan
+    // costs more than planned, without bound. Algorithm 2's answer: tell the planner, wait for its replan.
+    AffordanceEvent event;
+    event.object_id = active_plan_.object_id;
+    event.pushable = false;
+    event.planned_cost = active_plan_.expected_cost;
+    event.measured_cost = active_plan_.expected_cost;
+    event.reason = AffordanceReason::CostHigher;
+    event.text = fmt::format("object {}: contact not reached: no motion for {:.1f} s on the way to it",
+                             active_plan_.object_id, 2.0 * settings_.stall_timeout_s);
+    cycle.affordance = event;
+    task_ = Task::ReplanWait;
+    replan_requested_us_ = cycle.now_us;
+    ++replans_;
+    task_reason_ = fmt::format("waiting for replan: {}", event.text);
+    cycle.reason = task_reason_;
+    cycle.desired = {};
+    return;
+  }
   const ApproachStep result =
       approach_.step(cycle.pose, cycle.force_n, obstacles, settings_.approach, settings_.follower, drive_);
   if (result.phase != ApproachPhase::Done) {
@@ -707,8 +880,8 @@ Output Executive::step(std::int64_t now_us, const Inputs& inputs)
   const std::int32_t stale = staleBits(now_us, inputs);
   absorbPath(inputs);
 
-  const bool active = task_ == Task::Follow || task_ == Task::Approach || task_ == Task::Push ||
-                      task_ == Task::ReplanWait || task_ == Task::BackOff;
+  const bool active = task_ == Task::Follow || task_ == Task::Doorway || task_ == Task::Approach ||
+                      task_ == Task::Push || task_ == Task::ReplanWait || task_ == Task::BackOff;
   const bool e_stopped = inputs.e_stop && inputs.e_stop->value.engaged;
   const bool pose_finite =
       std::isfinite(cycle.pose.x) && std::isfinite(cycle.pose.y) && std::isfinite(cycle.pose.heading);
@@ -726,7 +899,7 @@ Output Executive::step(std::int64_t now_us, const Inputs& inputs)
     } else {
       cycle.reason = "pose is not finite";
     }
-    if (task_ == Task::Approach || task_ == Task::Push) {
+    if (task_ == Task::Approach || task_ == Task::Push || task_ == Task::Doorway) {
       // The vehicle may have drifted off the plan while stopped: resume by following the (newest) path,
       // which brings it back to the push through the topological waypoint.
       task_ = Task::Follow;
@@ -736,6 +909,9 @@ Output Executive::step(std::int64_t now_us, const Inputs& inputs)
     switch (task_) {
       case Task::Follow:
         stepFollow(cycle);
+        break;
+      case Task::Doorway:
+        stepDoorway(cycle);
         break;
       case Task::Approach:
         stepApproach(cycle);
@@ -755,9 +931,10 @@ Output Executive::step(std::int64_t now_us, const Inputs& inputs)
         cycle.reason = task_reason_;
         break;
     }
-    moving =
-        task_ == Task::Follow || task_ == Task::Approach || task_ == Task::Push || task_ == Task::BackOff;
-    if (!cycle.obstacles_fresh && (task_ == Task::Follow || task_ == Task::Approach)) {
+    moving = task_ == Task::Follow || task_ == Task::Doorway || task_ == Task::Approach ||
+             task_ == Task::Push || task_ == Task::BackOff;
+    if (!cycle.obstacles_fresh &&
+        (task_ == Task::Follow || task_ == Task::Doorway || task_ == Task::Approach)) {
       cycle.reason += " (no fresh obstacle points)";
     }
   }

@@ -14,6 +14,7 @@
 #include "common/vehicle.hpp"
 #include "executive/affordance/affordance_event.hpp"
 #include "executive/affordance/tactile_monitor.hpp"
+#include "executive/doorway/doorway.hpp"
 #include "executive/kinematics/differential_drive.hpp"
 #include "executive/modes/executive_settings.hpp"
 #include "executive/modes/inputs.hpp"
@@ -75,7 +76,8 @@ class Executive {
   /// BackOff: reversing away from an object whose push was given up, before following a new path
   /// (the follower only plans forward, so with the object on the bumper it would be boxed in), or after
   /// following got nowhere for stall_timeout_s (wedged in a door, dithering beside a wall).
-  enum class Task { Idle, Follow, Approach, Push, ReplanWait, BackOff, Halted, Arrived };
+  /// Doorway: following drives a door barely wider than the vehicle as a straight run (executive/doorway).
+  enum class Task { Idle, Follow, Doorway, Approach, Push, ReplanWait, BackOff, Halted, Arrived };
 
   struct Cycle;  // per-step context
 
@@ -84,6 +86,12 @@ class Executive {
   void absorbPath(const Inputs& inputs);
   void adoptPath(const Path& path);
   void stepFollow(Cycle& cycle);
+  /// The first doorway on the path ahead that is worth a straight run and not given up lately.
+  std::optional<Doorway> doorwayAhead(const Cycle& cycle) const;
+  void startDoorway(Cycle& cycle, const Doorway& doorway);
+  void stepDoorway(Cycle& cycle);
+  /// True when the path from the current waypoint on still goes through the doorway being driven.
+  bool pathCrossesDoorway(const Path& path) const;
   void stepApproach(Cycle& cycle);
   void stepPush(Cycle& cycle);
   void stepReplanWait(Cycle& cycle);
@@ -109,6 +117,11 @@ class Executive {
   /// After a stall's straight escape: the heading the follower's cost-to-go wants, when turning to it on
   /// the spot first is needed and free (a door entered at a slant wedges the corners on its posts).
   std::optional<double> stallTurnHeading(const Cycle& cycle) const;
+  /// Restarts the watch for standing still (entering a doorway run or a push approach).
+  void anchorMotion(const Cycle& cycle);
+  /// True when the vehicle has neither moved 0.1 m nor turned 0.3 rad for twice stall_timeout_s since the
+  /// last anchorMotion or motion.
+  bool standingStill(const Cycle& cycle);
   /// Counts a stall toward `target`; the blocked_passage_stalls-th at one site reports a blocked passage.
   void countStall(Cycle& cycle, const geometry::Point& target);
 
@@ -138,10 +151,17 @@ class Executive {
   bool backoff_after_stall_ = false;              // BackOff because following got nowhere, not after a push
   double stall_escape_sign_ = 0.0;  // after a stall: -1 reversing, +1 driving ahead, 0 not chosen yet
   std::optional<double> stall_turn_heading_;  // after the straight escape: turning on the spot to this
-  std::int64_t stall_turn_since_us_ = 0;      // since then
-  geometry::Pose2 stall_anchor_;              // where following last moved from
-  std::int64_t stall_anchor_us_ = -1;         // and when (-1: not following)
-  std::int64_t last_follow_us_ = 0;           // the last cycle that followed
+  std::optional<Doorway> doorway_;            // being driven through (Task::Doorway)
+  Approach doorway_run_;                      // to the run's start, square to the door, along the run
+  std::int64_t doorway_started_us_ = 0;
+  geometry::Pose2 motion_anchor_;      // where a doorway run or a push approach last moved from ...
+  std::int64_t motion_anchor_us_ = 0;  // ... and when
+  /// Doorways whose run timed out, by centre, and until when (microseconds) they are left to the follower.
+  std::vector<std::pair<geometry::Point, std::int64_t>> doorways_given_up_;
+  std::int64_t stall_turn_since_us_ = 0;                  // since then
+  geometry::Pose2 stall_anchor_;                          // where following last moved from
+  std::int64_t stall_anchor_us_ = -1;                     // and when (-1: not following)
+  std::int64_t last_follow_us_ = 0;                       // the last cycle that followed
   geometry::Point stall_site_ = geometry::Point::Zero();  // where the current series of stalls began
   int stalls_at_site_ = 0;                                // stalls of that series, toward one waypoint
   geometry::Point stall_site_target_ = geometry::Point::Zero();

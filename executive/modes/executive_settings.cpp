@@ -99,6 +99,22 @@ ExecutiveSettings loadExecutiveSettings(const common::ConfigNode& node)
   follower.navigation_proximity_weight = nonNegative(node, "follower.navigation_proximity_weight");
   follower.goal_tolerance_m = settings.waypoint_tolerance_m;
 
+  DoorwaySettings& doorway = settings.doorway;
+  doorway.enabled = node.required<bool>("doorway.enabled");
+  doorway.max_width_m = positive(node, "doorway.max_width_m");
+  doorway.look_ahead_m = positive(node, "doorway.look_ahead_m");
+  doorway.min_ahead_m = nonNegative(node, "doorway.min_ahead_m");
+  if (doorway.min_ahead_m >= doorway.look_ahead_m) {
+    node.fail("doorway.min_ahead_m", "must be less than doorway.look_ahead_m");
+  }
+  doorway.approach_m = positive(node, "doorway.approach_m");
+  doorway.exit_m = positive(node, "doorway.exit_m");
+  doorway.max_skew_rad = nonNegative(node, "doorway.max_skew_rad");
+  doorway.min_clearance_m = nonNegative(node, "doorway.min_clearance_m");
+  doorway.speed = positive(node, "doorway.speed");
+  doorway.timeout_s = positive(node, "doorway.timeout_s");
+  doorway.retry_after_s = nonNegative(node, "doorway.retry_after_s");
+
   const common::ConfigNode control = node.child("control");
   ApproachSettings& approach = settings.approach;
   approach.standoff_m = positive(node, "approach.standoff_m");
@@ -132,6 +148,7 @@ ExecutiveSettings loadExecutiveSettings(const common::ConfigNode& node)
   pushed_object.radius_m = positive(node, "pushed_object.radius_m");
   pushed_object.guard_clearance_m = nonNegative(node, "pushed_object.guard_clearance_m");
   pushed_object.guard_horizon_s = positive(node, "pushed_object.guard_horizon_s");
+  approach.squeeze_clearance_m = pushed_object.guard_clearance_m;
 
   // The daemon and the headless runner read this section with loadObstacleSettings.
   node.acceptAllUnder("obstacles");

@@ -4,6 +4,7 @@
 #include "common/config.hpp"
 #include "common/vehicle.hpp"
 #include "executive/affordance/tactile_monitor.hpp"
+#include "executive/doorway/doorway.hpp"
 #include "executive/follower/follower.hpp"
 #include "executive/follower/footprint.hpp"
 #include "executive/pusher/approach.hpp"
@@ -49,6 +50,7 @@ struct ExecutiveSettings {
   /// The Executive builds the follower's footprint from this and the vehicle's length and width.
   double reference_to_bumper_m = 0.45;
   FollowerSettings follower;
+  DoorwaySettings doorway;
   ApproachSettings approach;
   PushTrackerSettings pusher;
   TactileSettings tactile;

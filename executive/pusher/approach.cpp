@@ -66,7 +66,8 @@ ApproachStep Approach::step(const geometry::Pose2& pose, double force_n,
     } else {
       FollowerSettings toward_standoff = follower;
       toward_standoff.goal_tolerance_m = settings.standoff_tolerance_m;
-      const FollowerResult followed = follow(pose, standoff, true, obstacles, toward_standoff, drive);
+      const FollowerResult followed = followSqueezing(pose, standoff, settings.stop_at_standoff, obstacles,
+                                                      toward_standoff, settings.squeeze_clearance_m, drive);
       if (followed.status == FollowerStatus::Arrived) {
         phase_ = ApproachPhase::Align;
       } else {
@@ -82,7 +83,7 @@ ApproachStep Approach::step(const geometry::Pose2& pose, double force_n,
     if (std::abs(error) > settings.heading_tolerance_rad) {
       result.command = turnToHeading(pose, contact_.heading, settings.control);
       result.phase = phase_;
-      result.reason = fmt::format("approach: turning to push heading, {:.2f} rad off", error);
+      result.reason = fmt::format("approach: turning to the lane's heading, {:.2f} rad off", error);
       return result;
     }
     phase_ = ApproachPhase::Creep;
@@ -98,7 +99,7 @@ ApproachStep Approach::step(const geometry::Pose2& pose, double force_n,
       reference.y += relative.x() * std::sin(contact_.heading);
       result.command = trackReference(pose, reference, settings.creep_speed, 0.0, settings.control);
       result.phase = phase_;
-      result.reason = fmt::format("approach: creeping to contact, {:.2f} m to go", -relative.x());
+      result.reason = fmt::format("approach: creeping along the lane, {:.2f} m to go", -relative.x());
       return result;
     }
   }

@@ -20,6 +20,11 @@ struct ApproachSettings {
   double creep_speed = 0.15;          ///< m/s over the last stand-off distance
   double contact_tolerance_m = 0.03;  ///< the contact pose counts as reached within this (along the heading)
   double contact_force_n = 20.0;      ///< a bumper force above this means contact
+  /// False: the collision-free leg passes through the stand-off point at speed instead of stopping there
+  /// (a doorway run, which tracks its lane from a heading within heading_tolerance_rad while moving).
+  bool stop_at_standoff = true;
+  /// The collision-free leg squeezes down to this clearance when stuck at the follower's (followSqueezing).
+  double squeeze_clearance_m = 0.05;
   PoseControllerSettings control;
 };
 

@@ -138,11 +138,38 @@ TEST_F(ExecutivePushObstaclesTest, WithoutTheObjectRadiusTheObjectWouldStopTheCr
   settings_.pushed_object.radius_m = 0.01;
   executive_ = Executive(settings_, vehicle_);
   Output output;
-  for (int index = 0; index < 500; ++index) {
+  for (int index = 0; index < 300 && output.status.reason.find("stopped: obstacle") == std::string::npos;
+       ++index) {
     output = cycle({});
   }
   EXPECT_EQ(output.status.mode, Mode::Approach);
   EXPECT_NE(output.status.reason.find("stopped: obstacle"), std::string::npos) << output.status.reason;
+}
+
+TEST_F(ExecutivePushObstaclesTest, AContactThatCannotBeReachedIsReportedAndReplanned)
+{
+  // Stopped short of the contact for twice stall_timeout_s (the object's returns counted as obstacles, as
+  // above): the plan cannot be carried out, which the planner hears as an affordance update.
+  settings_.pushed_object.radius_m = 0.01;
+  executive_ = Executive(settings_, vehicle_);
+  Output output;
+  std::optional<AffordanceEvent> event;
+  int cycles = 0;  // since the guard stopped the creep
+  for (int index = 0; index < 800 && !event; ++index) {
+    output = cycle({});
+    event = output.affordance;
+    cycles += cycles > 0 || output.status.reason.find("stopped: obstacle") != std::string::npos ? 1 : 0;
+  }
+  ASSERT_TRUE(event) << output.status.reason;
+  EXPECT_EQ(event->object_id, 9);
+  EXPECT_FALSE(event->pushable);
+  EXPECT_EQ(event->reason, AffordanceReason::CostHigher);
+  EXPECT_NE(event->text.find("contact not reached"), std::string::npos) << event->text;
+  EXPECT_EQ(output.status.mode, Mode::ReplanWait);
+  EXPECT_TRUE(output.command.isZero());
+  // Twice the stall time after the guard stopped the creep (the creep's last centimetres count too).
+  EXPECT_GE(cycles * kCycleUs * 1e-6, 2.0 * settings_.stall_timeout_s - 1.0);
+  EXPECT_LE(cycles * kCycleUs * 1e-6, 2.0 * settings_.stall_timeout_s + 0.1);
 }
 
 TEST_F(ExecutivePushObstaclesTest, APushUnderWayFinishesWhenTheReplannedPathDropsIt)
@@ -220,7 +247,7 @@ TEST_F(ExecutivePushObstaclesTest, SomethingElseBesideTheCreepStopsIt)
   const std::vector<Point> post = {Point(1.5, vehicle_.width_m / 2.0 + 0.02)};
   ASSERT_GT((post[0] - kObjectStart).norm(), settings_.pushed_object.radius_m);
   Output output;
-  for (int index = 0; index < 500; ++index) {
+  for (int index = 0; index < 125; ++index) {  // 2.5 s: stopped, not yet given up
     output = cycle(post);
   }
   EXPECT_EQ(output.status.mode, Mode::Approach);

@@ -31,6 +31,29 @@ TEST(ExecutiveSettings, LoadsShippedConfig)
   EXPECT_EQ(settings.follower.angular_samples, 15);
   EXPECT_DOUBLE_EQ(settings.tactile.no_motion_time_s, 2.0);
   EXPECT_DOUBLE_EQ(settings.tactile.contact_force_n, settings.approach.contact_force_n);
+  EXPECT_TRUE(settings.doorway.enabled);
+  EXPECT_DOUBLE_EQ(settings.doorway.max_width_m, 1.3);
+  EXPECT_DOUBLE_EQ(settings.doorway.speed, 0.6);
+}
+
+TEST(ExecutiveSettings, DoorwaySearchThatStartsBeyondItsEndNamesTheKey)
+{
+  std::ifstream file(kConfigPath);
+  ASSERT_TRUE(file.good()) << kConfigPath;
+  std::stringstream original;
+  original << file.rdbuf();
+  std::string text = original.str();
+  const std::string key = "  min_ahead_m: 0.8";
+  ASSERT_NE(text.find(key), std::string::npos);
+  text.replace(text.find(key), key.size(), "  min_ahead_m: 3.5");
+  try {
+    loadExecutiveSettings(common::ConfigNode::loadString(text, "doorway.yaml"));
+    FAIL() << "accepted a doorway search that starts beyond its end";
+  } catch (const common::ConfigError& error) {
+    EXPECT_NE(std::string(error.what()).find("doorway.min_ahead_m"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("less than doorway.look_ahead_m"), std::string::npos)
+        << error.what();
+  }
 }
 
 TEST(ExecutiveSettings, NegativeThresholdNamesTheKey)

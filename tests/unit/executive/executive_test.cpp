@@ -328,6 +328,76 @@ TEST_F(ExecutiveTest, BlockedPassageReportsCanBeTurnedOff)
   EXPECT_EQ(stalls, 4);
 }
 
+/// Drives `executive` from the corridor below the office's 1.0 m door toward a room beyond it along a
+/// visibility-graph path (bent at the left post's inflated corner, crossing the door at a slant). Returns
+/// the seconds until the vehicle is 1 m beyond the wall (0 when it never is), and counts stalls, cycles
+/// in a doorway run, and the least distance of the footprint to a wall point.
+struct DoorDrive {
+  double seconds_through = 0.0;
+  int stalls = 0;
+  int doorway_cycles = 0;
+  double least_clearance_m = 1e9;
+  std::string last_reason;
+};
+
+DoorDrive driveThroughDoor(Executive& executive, const ExecutiveSettings& settings, Pose2 pose,
+                           std::int64_t& now_us)
+{
+  const std::vector<Point> walls = doorWalls();
+  Path path = straightPath();
+  path.waypoints = {waypoint(pose.x, pose.y), waypoint(-0.15, -0.3), waypoint(1.8, 2.5), waypoint(3.5, 3.0)};
+  DoorDrive result;
+  bool was_stalled = false;
+  const std::int64_t began_us = now_us;
+  for (int cycle = 0; cycle < 3000; ++cycle) {
+    now_us += kCycleUs;
+    Inputs inputs;
+    inputs.pose = Stamped<Pose2>{pose, now_us};
+    inputs.path = Stamped<Path>{path, now_us};
+    inputs.force = Stamped<ForceReading>{ForceReading{0.0, false}, now_us};
+    inputs.motor = Stamped<MotorReading>{MotorReading{true, false, ""}, now_us};
+    inputs.obstacles = Stamped<std::vector<Point>>{walls, now_us};
+    const Output output = executive.step(now_us, inputs);
+    result.last_reason = output.status.reason;
+    const bool stalled = output.status.reason.find("stalled for") != std::string::npos;
+    result.stalls += stalled && !was_stalled ? 1 : 0;
+    was_stalled = stalled;
+    result.doorway_cycles += output.status.reason.rfind("doorway at", 0) == 0 ? 1 : 0;
+    pose = testing::drive(pose, output.command, kCycleUs * 1e-6);
+    for (const Point& point : walls) {
+      result.least_clearance_m =
+          std::min(result.least_clearance_m, settings.follower.footprint.distance(pose, point));
+    }
+    if (pose.y > 1.2) {
+      result.seconds_through = static_cast<double>(now_us - began_us) * 1e-6;
+      break;
+    }
+  }
+  return result;
+}
+
+TEST_F(ExecutiveTest, ADoorBarelyWiderThanTheVehicleIsDrivenAsAStraightRun)
+{
+  // Below the office's 1.0 m door, 2.5 m to the left of it, heading along the corridor.
+  const DoorDrive run = driveThroughDoor(executive_, settings_, Pose2{-2.5, -1.3, 0.0}, now_us_);
+  EXPECT_GT(run.seconds_through, 0.0) << run.last_reason;
+  EXPECT_LT(run.seconds_through, 10.0) << run.last_reason;  // 8.9 s
+  EXPECT_EQ(run.stalls, 0);
+  EXPECT_GT(run.doorway_cycles, 0);
+  EXPECT_GE(run.least_clearance_m, 0.1);  // 0.15 m either side when centred and square
+}
+
+TEST_F(ExecutiveTest, WithoutDoorwayRunsTheFollowerWedgesInTheSameDoor)
+{
+  // The control for the test above: following alone turns into the door at a slant and stalls.
+  settings_.doorway.enabled = false;
+  Executive following(settings_, vehicle_);
+  const DoorDrive run = driveThroughDoor(following, settings_, Pose2{-2.5, -1.3, 0.0}, now_us_);
+  EXPECT_EQ(run.doorway_cycles, 0);
+  EXPECT_GE(run.stalls, 1);
+  EXPECT_GT(run.seconds_through, 12.0);  // 13.8 s
+}
+
 TEST_F(ExecutiveTest, WedgedAtASlantInADoorTurnsToFaceItAndDrivesThrough)
 {
   // The office world's door: 1.0 m wide (x -0.5 .. 0.5) in a 0.2 m wall at y 0 .. 0.2, the vehicle just
