@@ -105,6 +105,7 @@ scenarios::ResultRow systemRow(scenarios::ScenarioKind kind, const std::string& 
   row.world = world;
   row.task = task.id;
   row.optimal = task.optimal;
+  row.achievable = task.achievable;
   row.success = run.ran && run.arrived && task.reachable_with_pushing;
   row.length = run.ran ? run.distance_m : NAN;
   row.ms = run.ran ? 1000.0 * run.wall_time_s : NAN;
@@ -136,6 +137,7 @@ scenarios::ResultRow skippedRow(scenarios::ScenarioKind kind, const std::string&
   row.world = world;
   row.task = task.id;
   row.optimal = task.optimal;
+  row.achievable = task.achievable;
   row.length = NAN;
   row.ms = NAN;
   row.status = "skipped";

@@ -40,6 +40,7 @@ std::string toJsonLine(const ResultRow& row)
   line += std::string(", \"success\": ") + (row.success ? "true" : "false");
   line += ", \"length\": " + number(row.length);
   line += ", \"optimal\": " + number(row.optimal);
+  line += ", \"achievable\": " + number(row.achievable);
   line += ", \"ms\": " + number(row.ms);
   line += ", \"status\": " + common::jsonString(row.status);
   line += ", \"reason\": " + common::jsonString(row.reason);

@@ -2,6 +2,7 @@
 // One row of the evaluation: a planner on one task, as the JSON line written to
 // bench/results/latest.jsonl, and SPL (Anderson et al. 2018).
 
+#include <cmath>
 #include <string>
 
 namespace ifar::scenarios {
@@ -15,6 +16,7 @@ struct ResultRow {
   bool success = false;
   double length = 0.0;          // planned path (search) or travelled distance (system), metres; NaN when none
   double optimal = 0.0;         // ground truth, metres
+  double achievable = NAN;      // Task::achievable: inflated, unpushable objects as obstacles; NaN: unknown
   double ms = 0.0;              // search: planner-thread CPU ms; system: wall ms of the run; NaN when not run
   std::string status;           // solved, no_path, timeout, error, unreachable, runner_unavailable, ...
   std::string reason;           // why it failed; empty on success

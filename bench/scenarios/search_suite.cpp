@@ -146,6 +146,7 @@ std::vector<ResultRow> runSearchSuite(ScenarioKind kind, const std::string& worl
       row.world = world_name;
       row.task = task.id;
       row.optimal = task.optimal;
+      row.achievable = task.achievable;
       if (!task.reachable_with_pushing) {
         row.success = false;
         row.status = "unreachable";

@@ -47,11 +47,13 @@ Optimum exactOptimum(const ScenarioMaps& maps, const geometry::Point& start, con
   return {result.length, std::atan2(first_leg.y(), first_leg.x())};
 }
 
-bool reachableWithPushing(const ScenarioMaps& maps, const geometry::Point& start, const geometry::Point& goal,
-                          graph::SearchScratch& scratch)
+/// Length of the shortest path on the map with only the objects too heavy to push; NaN when there is none.
+double lengthWithPushing(const ScenarioMaps& maps, const geometry::Point& start, const geometry::Point& goal,
+                         graph::SearchScratch& scratch)
 {
-  return graph::findPath(maps.pushing.search, maps.pushing.map.obstacles, start, goal, scratch).status ==
-         graph::SearchStatus::Found;
+  const graph::SearchResult result =
+      graph::findPath(maps.pushing.search, maps.pushing.map.obstacles, start, goal, scratch);
+  return result.status == graph::SearchStatus::Found ? result.length : NAN;
 }
 
 }  // namespace
@@ -85,7 +87,8 @@ std::vector<Task> selectTasks(const sim::World& world, const ScenarioMaps& maps,
     task.start_heading = optimum.heading;
     task.goal = goal;
     task.optimal = optimum.length;
-    task.reachable_with_pushing = reachableWithPushing(maps, start, goal, scratch);
+    task.achievable = lengthWithPushing(maps, start, goal, scratch);
+    task.reachable_with_pushing = std::isfinite(task.achievable);
     task.from_world = from_world;
     tasks.push_back(task);
   };

@@ -22,7 +22,12 @@ struct Task {
   geometry::Point goal = geometry::Point::Zero();
   double optimal = 0.0;                // exact, zero inflation, movable objects removed
   bool reachable_with_pushing = true;  // false: only objects too heavy to push leave no route
-  bool from_world = false;             // the world's own start -> goal
+  /// What a vehicle that knew the map could drive: the shortest path with the static obstacles inflated
+  /// by its half width and the objects too heavy to push as obstacles (pushing the others for free).
+  /// NaN when not reachable with pushing. Not the ground truth (`optimal`); a reference for why
+  /// driven SPL falls short of it.
+  double achievable = 0.0;
+  bool from_world = false;  // the world's own start -> goal
 };
 
 struct TaskSelectionSettings {
