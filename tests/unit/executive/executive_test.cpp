@@ -65,6 +65,15 @@ Path pushPath(std::int64_t sequence = 1, std::int64_t planned_us = 0)
   return path;
 }
 
+/// How a drive through the office's 1.0 m door went (ExecutiveTest::driveThroughDoor).
+struct DoorDrive {
+  double seconds_through = 0.0;  ///< until the vehicle is 1 m beyond the wall; 0 when it never is
+  int stalls = 0;
+  int doorway_cycles = 0;          ///< cycles in a doorway run
+  double least_clearance_m = 1e9;  ///< of the footprint to a wall point
+  std::string last_reason;
+};
+
 class ExecutiveTest : public ::testing::Test {
  protected:
   ExecutiveTest() : executive_(settings_, vehicle_) {}
@@ -105,6 +114,11 @@ class ExecutiveTest : public ::testing::Test {
   /// narrow for the 0.7 m vehicle plus its clearance) toward a waypoint 1.5 m beyond it, until
   /// `stop_after` stalls or a blocked-passage report; returns the report (if any) and counts the stalls.
   std::optional<BlockedPassage> driveAtNarrowGap(Executive& executive, int stop_after, int& stalls);
+
+  /// Drives `executive` from `start` in the corridor below the office's 1.0 m door (doorWalls()) toward a
+  /// room beyond it along a visibility-graph path (bent at the left post's inflated corner, crossing the
+  /// door at a slant).
+  DoorDrive driveThroughDoor(Executive& executive, const Pose2& start);
 
   ExecutiveSettings settings_;
   common::VehicleSettings vehicle_;
@@ -328,48 +342,33 @@ TEST_F(ExecutiveTest, BlockedPassageReportsCanBeTurnedOff)
   EXPECT_EQ(stalls, 4);
 }
 
-/// Drives `executive` from the corridor below the office's 1.0 m door toward a room beyond it along a
-/// visibility-graph path (bent at the left post's inflated corner, crossing the door at a slant). Returns
-/// the seconds until the vehicle is 1 m beyond the wall (0 when it never is), and counts stalls, cycles
-/// in a doorway run, and the least distance of the footprint to a wall point.
-struct DoorDrive {
-  double seconds_through = 0.0;
-  int stalls = 0;
-  int doorway_cycles = 0;
-  double least_clearance_m = 1e9;
-  std::string last_reason;
-};
-
-DoorDrive driveThroughDoor(Executive& executive, const ExecutiveSettings& settings, Pose2 pose,
-                           std::int64_t& now_us)
+DoorDrive ExecutiveTest::driveThroughDoor(Executive& executive, const Pose2& start)
 {
   const std::vector<Point> walls = doorWalls();
   Path path = straightPath();
-  path.waypoints = {waypoint(pose.x, pose.y), waypoint(-0.15, -0.3), waypoint(1.8, 2.5), waypoint(3.5, 3.0)};
+  path.waypoints = {waypoint(start.x, start.y), waypoint(-0.15, -0.3), waypoint(1.8, 2.5),
+                    waypoint(3.5, 3.0)};
+  pose_ = start;
   DoorDrive result;
   bool was_stalled = false;
-  const std::int64_t began_us = now_us;
+  const std::int64_t began_us = now_us_;
   for (int cycle = 0; cycle < 3000; ++cycle) {
-    now_us += kCycleUs;
-    Inputs inputs;
-    inputs.pose = Stamped<Pose2>{pose, now_us};
-    inputs.path = Stamped<Path>{path, now_us};
-    inputs.force = Stamped<ForceReading>{ForceReading{0.0, false}, now_us};
-    inputs.motor = Stamped<MotorReading>{MotorReading{true, false, ""}, now_us};
-    inputs.obstacles = Stamped<std::vector<Point>>{walls, now_us};
-    const Output output = executive.step(now_us, inputs);
+    now_us_ += kCycleUs;
+    Inputs inputs = freshInputs(now_us_, path);
+    inputs.obstacles = Stamped<std::vector<Point>>{walls, now_us_};
+    const Output output = executive.step(now_us_, inputs);
     result.last_reason = output.status.reason;
     const bool stalled = output.status.reason.find("stalled for") != std::string::npos;
     result.stalls += stalled && !was_stalled ? 1 : 0;
     was_stalled = stalled;
     result.doorway_cycles += output.status.reason.rfind("doorway at", 0) == 0 ? 1 : 0;
-    pose = testing::drive(pose, output.command, kCycleUs * 1e-6);
+    pose_ = testing::drive(pose_, output.command, kCycleUs * 1e-6);
     for (const Point& point : walls) {
       result.least_clearance_m =
-          std::min(result.least_clearance_m, settings.follower.footprint.distance(pose, point));
+          std::min(result.least_clearance_m, executive.settings().follower.footprint.distance(pose_, point));
     }
-    if (pose.y > 1.2) {
-      result.seconds_through = static_cast<double>(now_us - began_us) * 1e-6;
+    if (pose_.y > 1.2) {
+      result.seconds_through = static_cast<double>(now_us_ - began_us) * 1e-6;
       break;
     }
   }
@@ -379,7 +378,7 @@ DoorDrive driveThroughDoor(Executive& executive, const ExecutiveSettings& settin
 TEST_F(ExecutiveTest, ADoorBarelyWiderThanTheVehicleIsDrivenAsAStraightRun)
 {
   // Below the office's 1.0 m door, 2.5 m to the left of it, heading along the corridor.
-  const DoorDrive run = driveThroughDoor(executive_, settings_, Pose2{-2.5, -1.3, 0.0}, now_us_);
+  const DoorDrive run = driveThroughDoor(executive_, Pose2{-2.5, -1.3, 0.0});
   EXPECT_GT(run.seconds_through, 0.0) << run.last_reason;
   EXPECT_LT(run.seconds_through, 10.0) << run.last_reason;  // 8.9 s
   EXPECT_EQ(run.stalls, 0);
@@ -392,7 +391,7 @@ TEST_F(ExecutiveTest, WithoutDoorwayRunsTheFollowerWedgesInTheSameDoor)
   // The control for the test above: following alone turns into the door at a slant and stalls.
   settings_.doorway.enabled = false;
   Executive following(settings_, vehicle_);
-  const DoorDrive run = driveThroughDoor(following, settings_, Pose2{-2.5, -1.3, 0.0}, now_us_);
+  const DoorDrive run = driveThroughDoor(following, Pose2{-2.5, -1.3, 0.0});
   EXPECT_EQ(run.doorway_cycles, 0);
   EXPECT_GE(run.stalls, 1);
   EXPECT_GT(run.seconds_through, 12.0);  // 13.8 s
