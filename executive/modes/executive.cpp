@@ -42,6 +42,28 @@ constexpr double kStallEscapeReleases = 3.0;
 /// Stalls within this distance of the first one of a series, toward waypoints this close to each other,
 /// count as the same passage.
 constexpr double kStallSiteRadiusM = 1.0;
+/// A blocked passage is reported toward the path point this far ahead (along the path), not the
+/// waypoint: the planner seals beyond the vehicle's inflation, so a waypoint a step ahead leaves it no
+/// room, and one at the end of a long leg lets the seal land anywhere along it.
+constexpr double kBlockedPassageLookAheadM = 2.5;
+
+/// The point `distance` along the polyline from `position` through `waypoints[next]`, `waypoints[next +
+/// 1]`, ...; the last waypoint when the path is shorter.
+geometry::Point pointAlongPath(const geometry::Point& position, const std::vector<Waypoint>& waypoints,
+                               std::size_t next, double distance)
+{
+  geometry::Point from = position;
+  for (std::size_t index = next; index < waypoints.size(); ++index) {
+    const geometry::Point to = waypoints[index].position;
+    const double leg = (to - from).norm();
+    if (leg >= distance && leg > 0.0) {
+      return from + (to - from) * (distance / leg);
+    }
+    distance -= leg;
+    from = to;
+  }
+  return from;
+}
 
 /// The approach that drives a doorway's run: to its start, square to the door, along it to its end. No
 /// bumper contact ends it.
@@ -337,7 +359,8 @@ void Executive::stepFollow(Cycle& cycle)
     stall_anchor_ = cycle.pose;
     stall_anchor_us_ = cycle.now_us;
   } else if (static_cast<double>(cycle.now_us - stall_anchor_us_) * 1e-6 > settings_.stall_timeout_s) {
-    countStall(cycle, waypoint.position);
+    countStall(cycle, pointAlongPath(cycle.pose.position(), path_.waypoints, waypoint_index_,
+                                     kBlockedPassageLookAheadM));
     task_ = Task::BackOff;
     backoff_after_stall_ = true;
     stall_escape_sign_ = 0.0;

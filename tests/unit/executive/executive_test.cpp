@@ -113,7 +113,8 @@ class ExecutiveTest : public ::testing::Test {
   /// Drives `executive` from 1.5 m below a 0.72 m gap (wide enough for the planner's inflated map, too
   /// narrow for the 0.7 m vehicle plus its clearance) toward a waypoint 1.5 m beyond it, until
   /// `stop_after` stalls or a blocked-passage report; returns the report (if any) and counts the stalls.
-  std::optional<BlockedPassage> driveAtNarrowGap(Executive& executive, int stop_after, int& stalls);
+  std::optional<BlockedPassage> driveAtNarrowGap(Executive& executive, int stop_after, int& stalls,
+                                                 double goal_y = 1.5);
 
   /// Drives `executive` from `start` in the corridor below the office's 1.0 m door (doorWalls()) toward a
   /// room beyond it along a visibility-graph path (bent at the left post's inflated corner, crossing the
@@ -293,11 +294,11 @@ TEST_F(ExecutiveTest, StalledWithTheBackAgainstADoorPostDrivesAheadInstead)
 }
 
 std::optional<BlockedPassage> ExecutiveTest::driveAtNarrowGap(Executive& executive, int stop_after,
-                                                              int& stalls)
+                                                              int& stalls, double goal_y)
 {
   const std::vector<Point> walls = doorWalls(0.72);
   Path path = straightPath();
-  path.waypoints = {waypoint(0.0, -1.5), waypoint(0.0, 1.5)};
+  path.waypoints = {waypoint(0.0, -1.5), waypoint(0.0, goal_y)};
   pose_ = Pose2{0.0, -1.5, 0.5 * M_PI};
   std::optional<BlockedPassage> reported;
   stalls = 0;
@@ -331,6 +332,18 @@ TEST_F(ExecutiveTest, StallingAgainAndAgainAtAGapTooNarrowReportsTheBlockedPassa
   EXPECT_NEAR(reported->to.y(), 1.5, 1e-9);
   EXPECT_LT((reported->from - Point(0.0, -0.5)).norm(), 1.0) << reported->text;
   EXPECT_NE(reported->text.find("stalled 3 times"), std::string::npos) << reported->text;
+}
+
+TEST_F(ExecutiveTest, ABlockedPassageOnALongLegIsReportedTowardThePathPointAFewMetresAhead)
+{
+  // The planner seals the narrowest point between `from` and `to`: with the waypoint 20 m on, that
+  // could be anywhere along the leg; 2.5 m along the path keeps it at the gap the vehicle stalled in.
+  int stalls = 0;
+  const std::optional<BlockedPassage> reported = driveAtNarrowGap(executive_, 100, stalls, 20.0);
+  ASSERT_TRUE(reported) << stalls << " stalls, ended at (" << pose_.x << ", " << pose_.y << ")";
+  EXPECT_NEAR((reported->to - reported->from).norm(), 2.5, 1e-6) << reported->text;
+  const Point toward_goal = (Point(0.0, 20.0) - reported->from).normalized();
+  EXPECT_LT((reported->to - (reported->from + 2.5 * toward_goal)).norm(), 1e-6) << reported->text;
 }
 
 TEST_F(ExecutiveTest, BlockedPassageReportsCanBeTurnedOff)
