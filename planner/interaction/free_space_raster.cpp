@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace ifar::interaction {
 
@@ -56,6 +57,112 @@ void FreeSpaceRaster::fill(const Polygon& polygon, std::uint8_t layer)
   }
 }
 
+std::vector<std::size_t> FreeSpaceRaster::cellsNear(const Polygon& polygon, double distance_m) const
+{
+  std::vector<std::size_t> covered;
+  if (polygon.size() < 3) {
+    return covered;
+  }
+  const Bounds bounds = boundsOf(polygon);
+  const double reach = std::max(0.0, distance_m);
+  const auto cellRange = [&](double low, double high, double origin, int count) {
+    return std::pair<int, int>{
+        std::max(0, static_cast<int>(std::floor((low - reach - origin) / resolution_))),
+        std::min(count - 1, static_cast<int>(std::floor((high + reach - origin) / resolution_)))};
+  };
+  const auto [first_row, last_row] =
+      cellRange(bounds.minimum.y(), bounds.maximum.y(), window_.minimum.y(), rows_);
+  const auto [first_column, last_column] =
+      cellRange(bounds.minimum.x(), bounds.maximum.x(), window_.minimum.x(), columns_);
+  for (int row = first_row; row <= last_row; ++row) {
+    for (int column = first_column; column <= last_column; ++column) {
+      const Point centre(window_.minimum.x() + (column + 0.5) * resolution_,
+                         window_.minimum.y() + (row + 0.5) * resolution_);
+      if (geometry::locatePoint(polygon, centre) != geometry::Containment::Outside ||
+          geometry::distanceToBoundary(polygon, centre) <= reach) {
+        covered.push_back(static_cast<std::size_t>(row) * static_cast<std::size_t>(columns_) +
+                          static_cast<std::size_t>(column));
+      }
+    }
+  }
+  return covered;
+}
+
+void FreeSpaceRaster::mark(const std::vector<std::size_t>& cells, std::uint8_t layer)
+{
+  for (const std::size_t cell : cells) {
+    cells_[cell] |= layer;
+  }
+}
+
+bool FreeSpaceRaster::onBorder(std::size_t cell) const
+{
+  const auto row = static_cast<int>(cell / static_cast<std::size_t>(columns_));
+  const auto column = static_cast<int>(cell % static_cast<std::size_t>(columns_));
+  return row == 0 || row == rows_ - 1 || column == 0 || column == columns_ - 1;
+}
+
+bool FreeSpaceRaster::searchFrom(std::size_t start, std::uint8_t blocked_layers,
+                                 const std::function<bool(std::size_t)>& visit) const
+{
+  if (start >= cells_.size() || (cells_[start] & blocked_layers) != 0) {
+    return false;
+  }
+  std::vector<bool> seen(cells_.size(), false);
+  std::vector<std::size_t> queue{start};
+  seen[start] = true;
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const std::size_t cell = queue[head];
+    if (visit(cell)) {
+      return true;
+    }
+    const int row = static_cast<int>(cell / static_cast<std::size_t>(columns_));
+    const int column = static_cast<int>(cell % static_cast<std::size_t>(columns_));
+    const int neighbours[4][2] = {{row - 1, column}, {row + 1, column}, {row, column - 1}, {row, column + 1}};
+    for (const auto& neighbour : neighbours) {
+      if (neighbour[0] < 0 || neighbour[0] >= rows_ || neighbour[1] < 0 || neighbour[1] >= columns_) {
+        continue;
+      }
+      const std::size_t next = static_cast<std::size_t>(neighbour[0]) * static_cast<std::size_t>(columns_) +
+                               static_cast<std::size_t>(neighbour[1]);
+      if (!seen[next] && (cells_[next] & blocked_layers) == 0) {
+        seen[next] = true;
+        queue.push_back(next);
+      }
+    }
+  }
+  return false;
+}
+
+std::optional<std::size_t> FreeSpaceRaster::nearestFree(const Point& point, std::uint8_t blocked_layers,
+                                                        int radius_cells) const
+{
+  return nearestCell(point, radius_cells,
+                     [&](std::size_t cell) { return (cells_[cell] & blocked_layers) == 0; });
+}
+
+std::vector<std::size_t> FreeSpaceRaster::borderCells() const
+{
+  std::vector<std::size_t> border;
+  const auto at = [&](int row, int column) {
+    return static_cast<std::size_t>(row) * static_cast<std::size_t>(columns_) +
+           static_cast<std::size_t>(column);
+  };
+  for (int column = 0; column < columns_; ++column) {
+    border.push_back(at(0, column));
+    if (rows_ > 1) {
+      border.push_back(at(rows_ - 1, column));
+    }
+  }
+  for (int row = 1; row + 1 < rows_; ++row) {
+    border.push_back(at(row, 0));
+    if (columns_ > 1) {
+      border.push_back(at(row, columns_ - 1));
+    }
+  }
+  return border;
+}
+
 std::vector<int> FreeSpaceRaster::labelComponents(std::uint8_t blocked_layers, int& component_count) const
 {
   std::vector<int> labels(cells_.size(), -1);
@@ -106,6 +213,12 @@ std::optional<std::size_t> FreeSpaceRaster::nearestLabelled(const Point& point,
                                                             const std::vector<int>& labels,
                                                             int radius_cells) const
 {
+  return nearestCell(point, radius_cells, [&](std::size_t cell) { return labels[cell] >= 0; });
+}
+
+std::optional<std::size_t> FreeSpaceRaster::nearestCell(const Point& point, int radius_cells,
+                                                        const std::function<bool(std::size_t)>& accept) const
+{
   const int column = static_cast<int>(std::floor((point.x() - window_.minimum.x()) / resolution_));
   const int row = static_cast<int>(std::floor((point.y() - window_.minimum.y()) / resolution_));
   for (int ring = 0; ring <= radius_cells; ++ring) {
@@ -121,7 +234,7 @@ std::optional<std::size_t> FreeSpaceRaster::nearestLabelled(const Point& point,
         }
         const std::size_t cell =
             static_cast<std::size_t>(r) * static_cast<std::size_t>(columns_) + static_cast<std::size_t>(c);
-        if (labels[cell] >= 0) {
+        if (accept(cell)) {
           return cell;
         }
       }

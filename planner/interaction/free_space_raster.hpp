@@ -4,6 +4,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -23,6 +24,24 @@ class FreeSpaceRaster {
   /// Marks every cell whose centre lies inside `polygon` (even-odd rule) with `layer`.
   void fill(const geometry::Polygon& polygon, std::uint8_t layer);
 
+  /// The cells whose centre lies inside `polygon` or within `distance_m` of its boundary.
+  std::vector<std::size_t> cellsNear(const geometry::Polygon& polygon, double distance_m) const;
+  void mark(const std::vector<std::size_t>& cells, std::uint8_t layer);
+  std::uint8_t layers(std::size_t cell) const { return cells_[cell]; }
+  bool onBorder(std::size_t cell) const;
+
+  /// The cells along the window's edge: where free space leaves the window.
+  std::vector<std::size_t> borderCells() const;
+
+  /// Visits the cells carrying none of `blocked_layers` 4-connected to `start`, nearest first, until
+  /// `visit` returns true; returns whether it did.
+  bool searchFrom(std::size_t start, std::uint8_t blocked_layers,
+                  const std::function<bool(std::size_t)>& visit) const;
+  /// The cell nearest `point` within `radius_cells` (Chebyshev rings) carrying none of `blocked_layers`.
+  std::optional<std::size_t> nearestFree(const geometry::Point& point, std::uint8_t blocked_layers,
+                                         int radius_cells) const;
+  std::size_t cellCount() const { return cells_.size(); }
+
   /// 4-connected components of the cells carrying none of `blocked_layers`; blocked cells get -1.
   std::vector<int> labelComponents(std::uint8_t blocked_layers, int& component_count) const;
 
@@ -33,6 +52,9 @@ class FreeSpaceRaster {
                                              int radius_cells) const;
 
  private:
+  std::optional<std::size_t> nearestCell(const geometry::Point& point, int radius_cells,
+                                         const std::function<bool(std::size_t)>& accept) const;
+
   Bounds window_;
   double resolution_;
   int columns_;

@@ -3,7 +3,10 @@
 // discretised for duplicate detection) x contact edge. Actions: stable push primitives of fixed length
 // (straight, arcs at the edge's smallest stable radius) and contact switches (drive round the object,
 // collision-checked against the obstacles). Goal: the passage between the two waypoints, widened by the
-// vehicle's half width, is clear of the object, and the object never ran into an obstacle on the way.
+// vehicle's half width, is clear of the object, the object leaves the way on open (pushed along a
+// corridor it would close the corridor further on: where either side's free space reached beyond the
+// surroundings before the push, the start waypoint must still reach it), and the object never ran into
+// an obstacle on the way.
 // Heuristic: width of the heuristic polygon (object inside the passage) by rotating calipers, plus an
 // analytic straight push to the goal tried at regular intervals.
 //
@@ -11,10 +14,12 @@
 
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "common/geometry/polygon.hpp"
 #include "planner/interaction/convex_polygon.hpp"
+#include "planner/interaction/free_space_raster.hpp"
 #include "planner/interaction/interaction_settings.hpp"
 #include "planner/interaction/object_model.hpp"
 #include "planner/interaction/push_plan.hpp"
@@ -54,7 +59,14 @@ class PushPlanner {
   geometry::Point standingPoint(std::size_t edge) const;
   geometry::Pose2 vehiclePose(const geometry::Pose2& object_pose, std::size_t edge) const;
   double heuristic(const geometry::Pose2& pose, const Passage& passage) const;
+  /// How far the object's footprint must stay from the passage: the vehicle's half width and a margin.
+  double objectClearance() const;
   bool passageClear(const geometry::Pose2& pose, const Passage& passage) const;
+  /// Where the free space on each side of the object left the window before the push, the pushed
+  /// object must leave a way out from the start waypoint (for the side that had one).
+  void findOutlets(Passage& passage) const;
+  bool onwardOpen(const geometry::Pose2& pose, const Passage& passage) const;
+  bool goalReached(const geometry::Pose2& pose, const Passage& passage) const;
 
   PlanStatus status_ = PlanStatus::Found;
   PusherSettings pusher_;
@@ -65,6 +77,8 @@ class PushPlanner {
   std::vector<geometry::Polygon> obstacles_;
   std::vector<Bounds> obstacle_bounds_;
   std::vector<geometry::Point> boundary_samples_;  ///< body frame
+  /// The obstacles around the object, out to beyond the farthest push, for the onward check.
+  std::optional<FreeSpaceRaster> surroundings_;
   double allowed_depth_m_ = 0.0;  ///< how deep a footprint point may sit inside an inflated obstacle
   double heuristic_per_metre_ = 0.0;
   /// switch_paths_[from][to][direction]: driving counter-clockwise (0) or clockwise (1).

@@ -51,4 +51,16 @@ inline LocalScene tJunctionScene()
   return scene;
 }
 
+/// A corridor along x (real free band 0 < y < 2.5, known 8 m each way) crossed at x = 0 by a wall (real
+/// 0.2 m thick) with a 1.2 m fire door; a box (real 0.5 m x 1.1 m) stands in the door. Pushed straight
+/// along the corridor it leaves 0.7 m each side: the vehicle's width, no room to drive.
+inline LocalScene fireDoorScene()
+{
+  LocalScene scene;
+  scene.background = {rectangle(-8.0, -2.0, 8.0, 0.35), rectangle(-8.0, 2.15, 8.0, 4.0),
+                      rectangle(-0.45, 0.35, 0.45, 1.0), rectangle(-0.45, 1.5, 0.45, 2.15)};
+  scene.movable = {rectangle(-0.6, 0.35, 0.6, 2.15)};
+  return scene;
+}
+
 }  // namespace ifar::interaction::test
