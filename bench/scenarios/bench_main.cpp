@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <ctime>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -16,6 +17,7 @@
 #include <mutex>
 #include <sstream>
 #include <string>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -253,6 +255,21 @@ int main(int argc, char** argv)
     system_kind_list = "room";
     system_tasks = 1;
     max_sim_time = std::min(max_sim_time, 60.0);
+  }
+
+  // Output folders are made now: a missing one found after an hour of driving would lose the results.
+  for (const auto& [option, folder] :
+       {std::pair<std::string, std::string>{"--out",
+                                            std::filesystem::path(jsonl_path).parent_path().string()},
+        {"--tables", std::filesystem::path(tables_path).parent_path().string()},
+        {"--plots", no_plots ? std::string() : plot_dir},
+        {"--task-worlds", task_world_dir}}) {
+    std::error_code error;
+    if (!folder.empty() && !std::filesystem::create_directories(folder, error) && error) {
+      std::cerr << "ifar bench: " << option << ": cannot create folder '" << folder
+                << "': " << error.message() << "\n";
+      return 1;
+    }
   }
 
   std::vector<scenarios::ScenarioKind> kinds;

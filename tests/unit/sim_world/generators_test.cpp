@@ -161,6 +161,24 @@ TEST(SimWorldGenerators, LightAndHeavyObjectsStraddleThePushLimit)
   }
 }
 
+TEST(SimWorldGenerators, OfficeFireDoorBoxIsHeavyForOddSeedsAndLightForEvenOnes)
+{
+  const common::VehicleSettings vehicle;
+  for (std::uint64_t seed = 1; seed <= 6; ++seed) {
+    const World office = generateOffice(seed);
+    // The fire door's box stands in the corridor's middle (y 12), the only object there.
+    int found = 0;
+    for (const auto& object : office.objects) {
+      if (std::abs(object.pose.y - 12.0) < 1e-9) {
+        ++found;
+        EXPECT_EQ(slidingForce(object) > vehicle.maxPushForce(), seed % 2 == 1)
+            << "seed " << seed << " '" << object.name << "' needs " << slidingForce(object) << " N";
+      }
+    }
+    EXPECT_EQ(found, 1) << "seed " << seed;
+  }
+}
+
 TEST(SimWorldGenerators, PathLengthsMatchThePapersPlaces)
 {
   for (std::uint64_t seed = 1; seed <= 3; ++seed) {
