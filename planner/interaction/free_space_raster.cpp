@@ -50,8 +50,7 @@ void FreeSpaceRaster::fill(const Polygon& polygon, std::uint8_t layer)
           columns_ - 1,
           static_cast<int>(std::floor((crossings[pair + 1] - window_.minimum.x()) / resolution_ - 0.5)));
       for (int column = first_column; column <= last_column; ++column) {
-        cells_[static_cast<std::size_t>(row) * static_cast<std::size_t>(columns_) +
-               static_cast<std::size_t>(column)] |= layer;
+        cells_[index(row, column)] |= layer;
       }
     }
   }
@@ -80,8 +79,7 @@ std::vector<std::size_t> FreeSpaceRaster::cellsNear(const Polygon& polygon, doub
                          window_.minimum.y() + (row + 0.5) * resolution_);
       if (geometry::locatePoint(polygon, centre) != geometry::Containment::Outside ||
           geometry::distanceToBoundary(polygon, centre) <= reach) {
-        covered.push_back(static_cast<std::size_t>(row) * static_cast<std::size_t>(columns_) +
-                          static_cast<std::size_t>(column));
+        covered.push_back(index(row, column));
       }
     }
   }
@@ -116,20 +114,12 @@ bool FreeSpaceRaster::searchFrom(std::size_t start, std::uint8_t blocked_layers,
     if (visit(cell)) {
       return true;
     }
-    const int row = static_cast<int>(cell / static_cast<std::size_t>(columns_));
-    const int column = static_cast<int>(cell % static_cast<std::size_t>(columns_));
-    const int neighbours[4][2] = {{row - 1, column}, {row + 1, column}, {row, column - 1}, {row, column + 1}};
-    for (const auto& neighbour : neighbours) {
-      if (neighbour[0] < 0 || neighbour[0] >= rows_ || neighbour[1] < 0 || neighbour[1] >= columns_) {
-        continue;
-      }
-      const std::size_t next = static_cast<std::size_t>(neighbour[0]) * static_cast<std::size_t>(columns_) +
-                               static_cast<std::size_t>(neighbour[1]);
-      if (!seen[next] && (cells_[next] & blocked_layers) == 0) {
+    forEachFreeNeighbour(cell, blocked_layers, [&](std::size_t next) {
+      if (!seen[next]) {
         seen[next] = true;
         queue.push_back(next);
       }
-    }
+    });
   }
   return false;
 }
@@ -144,20 +134,16 @@ std::optional<std::size_t> FreeSpaceRaster::nearestFree(const Point& point, std:
 std::vector<std::size_t> FreeSpaceRaster::borderCells() const
 {
   std::vector<std::size_t> border;
-  const auto at = [&](int row, int column) {
-    return static_cast<std::size_t>(row) * static_cast<std::size_t>(columns_) +
-           static_cast<std::size_t>(column);
-  };
   for (int column = 0; column < columns_; ++column) {
-    border.push_back(at(0, column));
+    border.push_back(index(0, column));
     if (rows_ > 1) {
-      border.push_back(at(rows_ - 1, column));
+      border.push_back(index(rows_ - 1, column));
     }
   }
   for (int row = 1; row + 1 < rows_; ++row) {
-    border.push_back(at(row, 0));
+    border.push_back(index(row, 0));
     if (columns_ > 1) {
-      border.push_back(at(row, columns_ - 1));
+      border.push_back(index(row, columns_ - 1));
     }
   }
   return border;
@@ -177,21 +163,12 @@ std::vector<int> FreeSpaceRaster::labelComponents(std::uint8_t blocked_layers, i
     while (!stack.empty()) {
       const std::size_t cell = stack.back();
       stack.pop_back();
-      const int row = static_cast<int>(cell / static_cast<std::size_t>(columns_));
-      const int column = static_cast<int>(cell % static_cast<std::size_t>(columns_));
-      const int neighbours[4][2] = {
-          {row - 1, column}, {row + 1, column}, {row, column - 1}, {row, column + 1}};
-      for (const auto& neighbour : neighbours) {
-        if (neighbour[0] < 0 || neighbour[0] >= rows_ || neighbour[1] < 0 || neighbour[1] >= columns_) {
-          continue;
-        }
-        const std::size_t next = static_cast<std::size_t>(neighbour[0]) * static_cast<std::size_t>(columns_) +
-                                 static_cast<std::size_t>(neighbour[1]);
-        if ((cells_[next] & blocked_layers) == 0 && labels[next] < 0) {
+      forEachFreeNeighbour(cell, blocked_layers, [&](std::size_t next) {
+        if (labels[next] < 0) {
           labels[next] = component_count;
           stack.push_back(next);
         }
-      }
+      });
     }
     ++component_count;
   }
@@ -205,8 +182,7 @@ std::optional<std::size_t> FreeSpaceRaster::cellOf(const Point& point) const
   if (column < 0 || column >= columns_ || row < 0 || row >= rows_) {
     return std::nullopt;
   }
-  return static_cast<std::size_t>(row) * static_cast<std::size_t>(columns_) +
-         static_cast<std::size_t>(column);
+  return index(row, column);
 }
 
 std::optional<std::size_t> FreeSpaceRaster::nearestLabelled(const Point& point,
@@ -232,8 +208,7 @@ std::optional<std::size_t> FreeSpaceRaster::nearestCell(const Point& point, int 
         if (r < 0 || r >= rows_ || c < 0 || c >= columns_) {
           continue;
         }
-        const std::size_t cell =
-            static_cast<std::size_t>(r) * static_cast<std::size_t>(columns_) + static_cast<std::size_t>(c);
+        const std::size_t cell = index(r, c);
         if (accept(cell)) {
           return cell;
         }

@@ -52,6 +52,27 @@ class FreeSpaceRaster {
                                              int radius_cells) const;
 
  private:
+  std::size_t index(int row, int column) const
+  {
+    return static_cast<std::size_t>(row) * static_cast<std::size_t>(columns_) +
+           static_cast<std::size_t>(column);
+  }
+  /// Calls `step(next)` for each 4-neighbour of `cell` inside the window that carries none of `blocked`.
+  template <typename Step>
+  void forEachFreeNeighbour(std::size_t cell, std::uint8_t blocked, Step&& step) const
+  {
+    const int row = static_cast<int>(cell / static_cast<std::size_t>(columns_));
+    const int column = static_cast<int>(cell % static_cast<std::size_t>(columns_));
+    const int neighbours[4][2] = {{row - 1, column}, {row + 1, column}, {row, column - 1}, {row, column + 1}};
+    for (const auto& neighbour : neighbours) {
+      if (neighbour[0] >= 0 && neighbour[0] < rows_ && neighbour[1] >= 0 && neighbour[1] < columns_) {
+        const std::size_t next = index(neighbour[0], neighbour[1]);
+        if ((cells_[next] & blocked) == 0) {
+          step(next);
+        }
+      }
+    }
+  }
   std::optional<std::size_t> nearestCell(const geometry::Point& point, int radius_cells,
                                          const std::function<bool(std::size_t)>& accept) const;
 

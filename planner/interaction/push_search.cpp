@@ -274,6 +274,12 @@ bool PushPlanner::passageClear(const Pose2& pose, const Passage& passage) const
   return segmentPolygonDistance(passage.segment, transformed(model_.footprint, pose)) >= objectClearance();
 }
 
+int PushPlanner::waypointSearchCells() const
+{
+  // A waypoint sits about the inflation from the object, so its cell may be covered: look that far.
+  return static_cast<int>(std::ceil(pusher_.inflation_m / kSurroundingsResolutionM));
+}
+
 void PushPlanner::findOutlets(Passage& passage) const
 {
   if (!surroundings_) {
@@ -285,9 +291,8 @@ void PushPlanner::findOutlets(Passage& passage) const
   int components = 0;
   const std::vector<int> labels =
       unmoved.labelComponents(FreeSpaceRaster::kObstacle | FreeSpaceRaster::kMovable, components);
-  const int search_cells = static_cast<int>(std::ceil(pusher_.inflation_m / kSurroundingsResolutionM));
-  const auto start_cell = unmoved.nearestLabelled(passage.segment.start, labels, search_cells);
-  const auto goal_cell = unmoved.nearestLabelled(passage.segment.end, labels, search_cells);
+  const auto start_cell = unmoved.nearestLabelled(passage.segment.start, labels, waypointSearchCells());
+  const auto goal_cell = unmoved.nearestLabelled(passage.segment.end, labels, waypointSearchCells());
   if (!start_cell || !goal_cell || labels[*start_cell] == labels[*goal_cell]) {
     return;  // nothing the object separates here: the segment test decides alone
   }
@@ -308,12 +313,11 @@ bool PushPlanner::onwardOpen(const Pose2& pose, const Passage& passage) const
   if (!surroundings_ || passage.needed_outlets == 0) {
     return true;
   }
-  const std::vector<std::size_t> covered =
-      surroundings_->cellsNear(transformed(model_.footprint, pose), objectClearance());
+  const Polygon footprint = transformed(model_.footprint, pose);
   // An object with a free cell between it and every obstacle (and the raster's edge) is an island: it
   // cannot cut free space apart.
-  const std::vector<std::size_t> neighbourhood = surroundings_->cellsNear(
-      transformed(model_.footprint, pose), objectClearance() + 1.5 * kSurroundingsResolutionM);
+  const std::vector<std::size_t> neighbourhood =
+      surroundings_->cellsNear(footprint, objectClearance() + 1.5 * kSurroundingsResolutionM);
   if (std::none_of(neighbourhood.begin(), neighbourhood.end(), [&](std::size_t cell) {
         return (surroundings_->layers(cell) & FreeSpaceRaster::kObstacle) != 0 ||
                surroundings_->onBorder(cell);
@@ -321,10 +325,9 @@ bool PushPlanner::onwardOpen(const Pose2& pose, const Passage& passage) const
     return true;
   }
   FreeSpaceRaster moved = *surroundings_;
-  moved.mark(covered, FreeSpaceRaster::kMovable);
+  moved.mark(moved.cellsNear(footprint, objectClearance()), FreeSpaceRaster::kMovable);
   const std::uint8_t blocked = FreeSpaceRaster::kObstacle | FreeSpaceRaster::kMovable;
-  const int search_cells = static_cast<int>(std::ceil(pusher_.inflation_m / kSurroundingsResolutionM));
-  const auto start_cell = moved.nearestFree(passage.segment.start, blocked, search_cells);
+  const auto start_cell = moved.nearestFree(passage.segment.start, blocked, waypointSearchCells());
   if (!start_cell) {
     return false;
   }

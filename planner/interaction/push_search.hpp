@@ -65,6 +65,8 @@ class PushPlanner {
   /// Where the free space on each side of the object left the window before the push, the pushed
   /// object must leave a way out from the start waypoint (for the side that had one).
   void findOutlets(Passage& passage) const;
+  /// How many raster cells round a waypoint findOutlets and onwardOpen look for its free cell.
+  int waypointSearchCells() const;
   bool onwardOpen(const geometry::Pose2& pose, const Passage& passage) const;
   bool goalReached(const geometry::Pose2& pose, const Passage& passage) const;
 
