@@ -133,18 +133,26 @@ std::optional<std::size_t> FreeSpaceRaster::nearestFree(const Point& point, std:
 
 std::vector<std::size_t> FreeSpaceRaster::borderCells() const
 {
+  // Round the window from cell (row 0, column 0): each cell follows a 4-neighbour, so a run of free
+  // cells in this order is one stretch of the window's edge.
   std::vector<std::size_t> border;
+  if (rows_ == 1 || columns_ == 1) {
+    for (std::size_t cell = 0; cell < cells_.size(); ++cell) {
+      border.push_back(cell);
+    }
+    return border;
+  }
   for (int column = 0; column < columns_; ++column) {
     border.push_back(index(0, column));
-    if (rows_ > 1) {
-      border.push_back(index(rows_ - 1, column));
-    }
   }
-  for (int row = 1; row + 1 < rows_; ++row) {
+  for (int row = 1; row < rows_; ++row) {
+    border.push_back(index(row, columns_ - 1));
+  }
+  for (int column = columns_ - 2; column >= 0; --column) {
+    border.push_back(index(rows_ - 1, column));
+  }
+  for (int row = rows_ - 2; row >= 1; --row) {
     border.push_back(index(row, 0));
-    if (columns_ > 1) {
-      border.push_back(index(row, columns_ - 1));
-    }
   }
   return border;
 }

@@ -62,8 +62,8 @@ class PushPlanner {
   /// How far the object's footprint must stay from the passage: the vehicle's half width and a margin.
   double objectClearance() const;
   bool passageClear(const geometry::Pose2& pose, const Passage& passage) const;
-  /// Where the free space on each side of the object left the window before the push, the pushed
-  /// object must leave a way out from the start waypoint (for the side that had one).
+  /// Each stretch of the window's edge where the free space on either side of the unmoved object
+  /// leaves the window: the pushed object must leave every one reachable from the start waypoint.
   void findOutlets(Passage& passage) const;
   /// How many raster cells round a waypoint findOutlets and onwardOpen look for its free cell.
   int waypointSearchCells() const;

@@ -147,32 +147,35 @@ TEST(PushSearchTest, ABoxIsNotPushedAlongACorridorItWouldCloseFurtherOn)
 {
   // The segment between the waypoints clears after a straight push of a metre or two, but the box then
   // stands across the corridor beyond the waypoint: a plan must leave a lane at least the vehicle's width
-  // plus the passage margin beside the box (real corridor 0 < y < 2.5), or there is no plan.
-  const LocalScene scene = test::fireDoorScene();
+  // plus the passage margin beside the box (real corridor 0 < y < 2.5), or there is no plan. A side door
+  // beyond the fire door keeps the east side open when the box closes the corridor, and must not count.
   const InteractionSettings settings = defaultSettings();
-  const ObjectInteractions result = planObjectInteractions(scene, 0, ObjectPhysics{0.4, 20.0}, settings);
-  ASSERT_EQ(result.connectivity.waypoints.size(), 2U);
-  ASSERT_EQ(result.plans.size(), 2U);
   const double lane = 2.0 * settings.pusher.inflation_m + settings.search.passage_margin_m;
-  int found = 0;
-  for (const PairPlan& pair : result.plans) {
-    if (pair.plan.status != PlanStatus::Found) {
-      continue;
+  for (const LocalScene& scene : {test::fireDoorScene(), test::fireDoorWithSideDoorScene()}) {
+    const ObjectInteractions result = planObjectInteractions(scene, 0, ObjectPhysics{0.4, 20.0}, settings);
+    ASSERT_EQ(result.connectivity.waypoints.size(), 2U);
+    ASSERT_EQ(result.plans.size(), 2U);
+    int found = 0;
+    for (const PairPlan& pair : result.plans) {
+      if (pair.plan.status != PlanStatus::Found) {
+        continue;
+      }
+      ++found;
+      const Pose2 end = pair.plan.controls.back().object_pose;
+      double low = std::numeric_limits<double>::infinity();
+      double high = -std::numeric_limits<double>::infinity();
+      for (const Point& vertex : pair.plan.footprint) {
+        low = std::min(low, end.transform(vertex).y());
+        high = std::max(high, end.transform(vertex).y());
+      }
+      const bool beside_wall = std::abs(end.x) < 0.8;  // still in the door's wall: the lane is the door
+      EXPECT_TRUE(beside_wall || low >= lane - 0.03 || 2.5 - high >= lane - 0.03)
+          << "box ends at (" << end.x << ", " << end.y << ", " << end.heading << ") spanning y " << low
+          << " .. " << high;
     }
-    ++found;
-    const Pose2 end = pair.plan.controls.back().object_pose;
-    double low = std::numeric_limits<double>::infinity();
-    double high = -std::numeric_limits<double>::infinity();
-    for (const Point& vertex : pair.plan.footprint) {
-      low = std::min(low, end.transform(vertex).y());
-      high = std::max(high, end.transform(vertex).y());
-    }
-    const bool beside_wall = std::abs(end.x) < 0.8;  // still in the door's wall: the lane is the door
-    EXPECT_TRUE(beside_wall || low >= lane - 0.03 || 2.5 - high >= lane - 0.03)
-        << "box ends at (" << end.x << ", " << end.y << ", " << end.heading << ") spanning y " << low
-        << " .. " << high;
+    EXPECT_EQ(found, 2) << "the box can be turned out of the door and pushed against a corridor wall";
   }
-  EXPECT_EQ(found, 2) << "the box can be turned out of the door and pushed against a corridor wall";
+  const LocalScene scene = test::fireDoorScene();
   // With the corridor's walls not seen (only the door's wall, long), a straight push through is enough.
   LocalScene unknown_beyond;
   unknown_beyond.background = {test::rectangle(-0.45, -8.0, 0.45, 1.0),

@@ -63,4 +63,15 @@ inline LocalScene fireDoorScene()
   return scene;
 }
 
+/// The fire door with a side door (real 1.0 < x < 2.2) in the corridor's south wall (real 0.1 m thick)
+/// just beyond it, to unseen space: pushed straight east past that door the box still closes the
+/// corridor, though the east side of the fire door keeps a way out through the side door.
+inline LocalScene fireDoorWithSideDoorScene()
+{
+  LocalScene scene = fireDoorScene();
+  scene.background[0] = rectangle(-8.0, -0.45, 1.35, 0.35);
+  scene.background.push_back(rectangle(1.85, -0.45, 8.0, 0.35));
+  return scene;
+}
+
 }  // namespace ifar::interaction::test
