@@ -342,8 +342,17 @@ void Planner::search(FrameResult& result)
   }
   const Clock::time_point start = Clock::now();
   const graph::SearchGraph search_graph = graph::SearchGraph::fromDvGraph(global_);
+  graph::RoutePreference preference;
+  if (last_path_.valid && last_path_.goal_id == goal_->id) {
+    preference.discount = settings_.graph.route_preference;
+    for (const graph::PathPoint& point : last_path_.waypoints) {
+      if (point.vertex != graph::kNoVertex) {
+        preference.route.push_back(point.vertex);
+      }
+    }
+  }
   const graph::SearchResult found =
-      graph::findPath(search_graph, *obstacles_, *robot_, goal_->position, scratch_);
+      graph::findPath(search_graph, *obstacles_, *robot_, goal_->position, scratch_, preference);
   status.timings.search_ms = millisecondsSince(start);
 
   PlannedPath path;

@@ -93,6 +93,10 @@ SearchGraph SearchGraph::fromDvGraph(const DvGraph& graph)
       continue;
     }
     dense[vertex.id] = static_cast<std::uint32_t>(result.ids_.size());
+    if (result.index_of_.size() <= vertex.id) {
+      result.index_of_.resize(static_cast<std::size_t>(vertex.id) + 1, kNone);
+    }
+    result.index_of_[vertex.id] = dense[vertex.id];
     result.ids_.push_back(vertex.id);
     result.positions_.push_back(vertex.position);
     result.previous_.push_back(vertex.previous);
@@ -183,7 +187,7 @@ void SearchGraph::buildVertexGrid()
 
 SearchResult AStarSearch::run(const SearchGraph& graph, const ObstacleSet& obstacles,
                               const geometry::Point& start_in, const geometry::Point& goal_in,
-                              SearchScratch& scratch)
+                              SearchScratch& scratch, const RoutePreference& preference)
 {
   SearchResult result;
   if (!start_in.allFinite()) {
@@ -311,6 +315,31 @@ SearchResult AStarSearch::run(const SearchGraph& graph, const ObstacleSet& obsta
     return (!corner || isTangent(geometry, position - goal)) && obstacles.visibleFrom(position, goal_cache);
   };
   const auto heuristic = [&](std::uint32_t vertex) { return (goal - graph.positions_[vertex]).norm(); };
+  // The preferred route's arcs, as "next vertex" per vertex (a route passes each vertex once). Their
+  // discount makes the heuristic inconsistent there, so a closed vertex may not be final and the path
+  // may be a little longer than the best under the discount; it is still a valid path, at its true cost.
+  const double kept_fraction = 1.0 - std::clamp(preference.discount, 0.0, 0.9);
+  const bool preferring = kept_fraction < 1.0 && preference.route.size() >= 2;
+  if (preferring) {
+    scratch.preferred_next_.assign(count, kNone);
+    const auto indexOf = [&](VertexId id) {
+      return id < graph.index_of_.size() ? graph.index_of_[id] : kNone;
+    };
+    for (std::size_t step = 1; step < preference.route.size(); ++step) {
+      const std::uint32_t from = indexOf(preference.route[step - 1]);
+      const std::uint32_t to = indexOf(preference.route[step]);
+      if (from != kNone && to != kNone) {
+        scratch.preferred_next_[from] = to;
+      }
+    }
+  }
+  const auto preferred = [&](std::uint32_t from, std::uint32_t to) {
+    return preferring && scratch.preferred_next_[from] == to;
+  };
+  const auto arcCost = [&](std::uint32_t from, std::uint32_t arc) {
+    const double cost = graph.costs_[arc];
+    return preferred(from, graph.targets_[arc]) ? cost * kept_fraction : cost;
+  };
   auto& queue = scratch.queue_;
   queue.clear();
   const auto relax = [&](std::uint32_t from, std::uint32_t to, double cost) {
@@ -382,7 +411,7 @@ SearchResult AStarSearch::run(const SearchGraph& graph, const ObstacleSet& obsta
       break;
     }
     for (std::uint32_t arc = graph.offsets_[vertex]; arc < graph.offsets_[vertex + 1]; ++arc) {
-      relax(vertex, graph.targets_[arc], graph.costs_[arc]);
+      relax(vertex, graph.targets_[arc], arcCost(vertex, arc));
     }
     // The goal is attached lazily: its link from a vertex only matters once that vertex is expanded,
     // so testing visibility here gives the same result as attaching it to every vertex up front.
@@ -414,15 +443,21 @@ SearchResult AStarSearch::run(const SearchGraph& graph, const ObstacleSet& obsta
       point.vertex = graph.ids_[vertex];
     }
     if (index > 0 && chain[index - 1] < count && vertex < count) {
+      // The arc the search took: an interaction arc when one gave this cost, else the visibility link.
       const std::uint32_t from = chain[index - 1];
       for (std::uint32_t arc = graph.offsets_[from]; arc < graph.offsets_[from + 1]; ++arc) {
         if (graph.targets_[arc] == vertex && graph.interaction_[arc] != kNoInteraction &&
-            std::abs(scratch.states_[from].cost + graph.costs_[arc] - scratch.states_[vertex].cost) < 1e-9) {
+            std::abs(scratch.states_[from].cost + arcCost(from, arc) - scratch.states_[vertex].cost) < 1e-9) {
           point.interaction = graph.interaction_[arc];
           point.object_id = graph.interaction_objects_[point.interaction];
           point.push_plan = graph.interaction_plans_[point.interaction];
           break;
         }
+      }
+      if (preferred(from, vertex)) {
+        // Report the true cost: add back what the preference took off this step.
+        const double discounted = scratch.states_[vertex].cost - scratch.states_[from].cost;
+        result.cost += discounted / kept_fraction - discounted;
       }
     }
     if (!result.path.empty()) {

@@ -35,6 +35,7 @@ class SearchGraph {
   void buildVertexGrid();
 
   std::vector<VertexId> ids_;
+  std::vector<std::uint32_t> index_of_;  // VertexId -> dense index; the uint32 maximum for dead ids
   std::vector<geometry::Point> positions_;
   std::vector<geometry::Point> previous_;
   std::vector<geometry::Point> next_;
@@ -88,6 +89,14 @@ struct SearchResult {
   std::size_t goal_links = 0;   // expanded vertices found to see the goal (tested lazily)
 };
 
+/// The route the previous search chose, kept when a new one is not clearly better: its arcs cost
+/// `discount` (a fraction) less. Without it the route flips between two ways of nearly equal length as
+/// each frame moves a vertex a little, and the vehicle turns back and forth between them.
+struct RoutePreference {
+  std::vector<VertexId> route;  // graph vertices in path order; ids no longer in the graph are skipped
+  double discount = 0.0;        // 0 .. 0.9 (larger values count as 0.9)
+};
+
 /// Search state, reusable across searches of any graph; not shared between threads.
 class SearchScratch {
  private:
@@ -110,23 +119,27 @@ class SearchScratch {
   std::vector<std::uint32_t> cell_seen_stamp_;
   std::vector<std::uint32_t> cell_done_stamp_;
   std::vector<QueueEntry> queue_;
+  std::vector<std::uint32_t> preferred_next_;  // per vertex: the next vertex on the preferred route
   std::uint32_t generation_ = 0;
 };
 
 class AStarSearch {
  public:
   /// Plans from `start` to `goal`. A start or goal inside an obstacle is snapped to the nearest
-  /// boundary point and flagged; one off a bounded map or not finite is refused with a status.
+  /// boundary point and flagged; one off a bounded map or not finite is refused with a status. With a
+  /// preference the result's cost is still the true one (no discount), and A* may return a path up to
+  /// 1 / (1 - discount) times the shortest.
   static SearchResult run(const SearchGraph& graph, const ObstacleSet& obstacles,
-                          const geometry::Point& start, const geometry::Point& goal, SearchScratch& scratch);
+                          const geometry::Point& start, const geometry::Point& goal, SearchScratch& scratch,
+                          const RoutePreference& preference = {});
 };
 
 /// Convenience wrapper around AStarSearch::run.
 inline SearchResult findPath(const SearchGraph& graph, const ObstacleSet& obstacles,
                              const geometry::Point& start, const geometry::Point& goal,
-                             SearchScratch& scratch)
+                             SearchScratch& scratch, const RoutePreference& preference = {})
 {
-  return AStarSearch::run(graph, obstacles, start, goal, scratch);
+  return AStarSearch::run(graph, obstacles, start, goal, scratch, preference);
 }
 
 }  // namespace ifar::graph

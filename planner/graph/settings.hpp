@@ -15,6 +15,9 @@ struct GraphSettings {
   double view_radius_m = 25.0;
   /// Side of the visibility index's buckets (metres); 0 picks one from the obstacle edges.
   double bucket_size_m = 0.0;
+  /// The previous route's edges cost this fraction less in the next search (0 .. 0.5): a new route must
+  /// be clearly shorter to replace it, so two ways of nearly equal length do not take turns.
+  double route_preference = 0.1;
 };
 
 /// Reads the `graph` section (`node` is that section). Every key is optional with the defaults above;

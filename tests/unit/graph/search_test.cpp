@@ -135,6 +135,53 @@ TEST(Search, InteractionEdgeTakenWhenCheaper)
   EXPECT_NEAR(plan(prior, Point(0, 0), Point(0, 3)).cost, detour.cost, 1e-12);
 }
 
+std::vector<VertexId> routeOf(const SearchResult& result)
+{
+  std::vector<VertexId> route;
+  for (const PathPoint& point : result.path) {
+    if (point.vertex != kNoVertex) {
+      route.push_back(point.vertex);
+    }
+  }
+  return route;
+}
+
+TEST(Search, ThePreviousRouteStaysUntilAnotherIsClearlyShorter)
+{
+  // A block with a way round either side; the start and goal sit 0.05 m off its middle line, so one
+  // side is 0.17 m shorter than the other.
+  const PriorMap prior = buildPriorMap(mapFromRows({".....", ".@@@.", ".@@@.", ".@@@.", "....."}), 0.0);
+  const SearchGraph graph = SearchGraph::fromDvGraph(prior.graph);
+  SearchScratch scratch;
+  const SearchResult shortest = findPath(graph, prior.obstacles, Point(0, 2.45), Point(5, 2.45), scratch);
+  const SearchResult other_side = findPath(graph, prior.obstacles, Point(0, 2.55), Point(5, 2.55), scratch);
+  ASSERT_EQ(shortest.status, SearchStatus::Found);
+  ASSERT_EQ(other_side.status, SearchStatus::Found);
+  const std::vector<VertexId> other_route = routeOf(other_side);
+  ASSERT_EQ(other_route.size(), 2U);
+  ASSERT_NE(routeOf(shortest), other_route);
+  const double long_way = 2.0 * std::hypot(1.0, 1.55) + 3.0;
+  EXPECT_NEAR(shortest.cost, 2.0 * std::hypot(1.0, 1.45) + 3.0, 1e-9);
+
+  // Preferring the other side by 10 % of its 3 m edge (0.3 m) outweighs 0.17 m: the route stays, and
+  // the cost reported is the true one.
+  const SearchResult kept = findPath(graph, prior.obstacles, Point(0, 2.45), Point(5, 2.45), scratch,
+                                     RoutePreference{other_route, 0.1});
+  ASSERT_EQ(kept.status, SearchStatus::Found);
+  EXPECT_EQ(routeOf(kept), other_route);
+  EXPECT_NEAR(kept.cost, long_way, 1e-9);
+  EXPECT_NEAR(kept.length, long_way, 1e-9);
+  // By 2 % (0.06 m) it does not: the shorter side wins.
+  const SearchResult switched = findPath(graph, prior.obstacles, Point(0, 2.45), Point(5, 2.45), scratch,
+                                         RoutePreference{other_route, 0.02});
+  EXPECT_EQ(routeOf(switched), routeOf(shortest));
+  EXPECT_NEAR(switched.cost, shortest.cost, 1e-9);
+  // Vertices the graph no longer has are skipped, not trusted.
+  const SearchResult stale = findPath(graph, prior.obstacles, Point(0, 2.45), Point(5, 2.45), scratch,
+                                      RoutePreference{{other_route[0], 100000U, other_route[1]}, 0.1});
+  EXPECT_EQ(routeOf(stale), routeOf(shortest));
+}
+
 TEST(Search, ScratchReusedAcrossGraphs)
 {
   const PriorMap small = buildPriorMap(mapFromRows({"...", ".@.", "..."}), 0.0);

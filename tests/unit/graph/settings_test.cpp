@@ -30,6 +30,22 @@ TEST(GraphSettings, BadValuesNamed)
   EXPECT_THROW(loadGraphSettings(unknown.child("graph")), common::ConfigError);
 }
 
+TEST(GraphSettings, RoutePreferenceIsAFractionUpToAHalf)
+{
+  const auto root = common::ConfigNode::loadString("graph:\n  route_preference: 0.25\n", "planner.yaml");
+  EXPECT_DOUBLE_EQ(loadGraphSettings(root.child("graph")).route_preference, 0.25);
+  for (const char* bad : {"-0.1", "0.6", ".nan"}) {
+    const auto wrong = common::ConfigNode::loadString(
+        std::string("graph:\n  route_preference: ") + bad + "\n", "planner.yaml");
+    try {
+      loadGraphSettings(wrong.child("graph"));
+      ADD_FAILURE() << "route_preference " << bad << " was accepted";
+    } catch (const common::ConfigError& error) {
+      EXPECT_NE(std::string(error.what()).find("route_preference"), std::string::npos) << error.what();
+    }
+  }
+}
+
 TEST(GraphSettings, ShippedConfigLoads)
 {
   const auto root = common::ConfigNode::loadFile(std::string(IFAR_SOURCE_DIR) + "/config/planner.yaml");
