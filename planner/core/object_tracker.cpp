@@ -90,7 +90,8 @@ bool ObjectTracker::forget(std::int64_t id)
 }
 
 TrackingResult ObjectTracker::update(const std::vector<geometry::Polygon>& outlines,
-                                     const geometry::Point& vehicle)
+                                     const geometry::Point& vehicle,
+                                     const std::function<bool(const geometry::Point&)>& in_sight)
 {
   TrackingResult result;
   constexpr std::size_t kUnassigned = std::numeric_limits<std::size_t>::max();
@@ -184,7 +185,8 @@ TrackingResult ObjectTracker::update(const std::vector<geometry::Polygon>& outli
       kept.push_back(std::move(current));
       continue;
     }
-    const bool in_view = (current.centroid - vehicle).norm() <= settings_.view_radius_m;
+    const bool in_view = (current.centroid - vehicle).norm() <= settings_.view_radius_m &&
+                         (!in_sight || in_sight(current.centroid));
     if (!track_covered[track] && in_view) {
       ++current.misses;
     }

@@ -4,10 +4,12 @@
 // and bounding-box overlap, so the id the graph loops, the interaction edges and the daemon's messages
 // carry stays the same while the vehicle moves. Outlines the sensor split (several near one object) keep
 // the object's id; objects whose outlines touch (one outline covering several objects) are not counted
-// as missing. An object unseen while in view for `drop_after_frames` frames is dropped.
+// as missing. An object unseen while in view (within the radius and, when the caller can tell, in sight)
+// for `drop_after_frames` frames is dropped.
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -38,8 +40,11 @@ class ObjectTracker {
  public:
   explicit ObjectTracker(const TrackerSettings& settings);
 
-  /// Associates this frame's movable outlines (world frame) with the tracked objects.
-  TrackingResult update(const std::vector<geometry::Polygon>& outlines, const geometry::Point& vehicle);
+  /// Associates this frame's movable outlines (world frame) with the tracked objects. `in_sight` tells
+  /// whether an unseen object's centroid could have been seen from the vehicle (empty: always): an
+  /// object behind a wall is not missing, and must keep its id, edges and plans until it comes back.
+  TrackingResult update(const std::vector<geometry::Polygon>& outlines, const geometry::Point& vehicle,
+                        const std::function<bool(const geometry::Point&)>& in_sight = {});
 
   /// Removes an object now (e.g. its outline left the map); false for an unknown id.
   bool forget(std::int64_t id);

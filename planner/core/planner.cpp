@@ -13,6 +13,7 @@
 #include "planner/graph/graph_file.hpp"
 #include "planner/graph/merge.hpp"
 #include "planner/graph/visibility_builder.hpp"
+#include "planner/perception/line_of_sight.hpp"
 #include "planner/perception/motion_compensation.hpp"
 #include "planner/perception/perception_pipeline.hpp"
 
@@ -232,7 +233,12 @@ FrameResult Planner::processFrame(const FrameInput& frame)
       movable_polygons.push_back(index);
     }
   }
-  TrackingResult tracked = tracker_.update(movable_outlines, robot);
+  // An object behind a wall or door post is not missing: it keeps its id (and its waypoints, edges and
+  // plans) while the vehicle drives round through a side room, instead of coming back as a new object.
+  constexpr double kSightSkipM = 0.5;
+  TrackingResult tracked = tracker_.update(movable_outlines, robot, [&](const geometry::Point& centroid) {
+    return perception::backgroundClearAlong(perceived.layer, robot, centroid, kSightSkipM);
+  });
   result.polygon_ids.assign(result.polygons.size(), 0);
   for (std::size_t outline = 0; outline < movable_polygons.size(); ++outline) {
     result.polygon_ids[movable_polygons[outline]] = tracked.polygon_ids[outline];

@@ -95,6 +95,25 @@ TEST(ObjectTracker, DropsObjectsUnseenInViewOnlyAfterSeveralFrames)
   EXPECT_FALSE(tracker.forget(2));
 }
 
+TEST(ObjectTracker, AnObjectOutOfSightIsNotMissing)
+{
+  TrackerSettings settings;
+  settings.drop_after_frames = 2;
+  ObjectTracker tracker{settings};
+  tracker.update({box(5.0, 0.0, 0.4, 0.4)}, kVehicle);
+  // Behind a wall for many frames: kept, and found again under its id.
+  const auto behind_wall = [](const geometry::Point&) { return false; };
+  for (int frame = 0; frame < 10; ++frame) {
+    EXPECT_TRUE(tracker.update({}, kVehicle, behind_wall).dropped.empty()) << "frame " << frame;
+  }
+  EXPECT_EQ(tracker.update({box(5.1, 0.0, 0.4, 0.4)}, kVehicle, behind_wall).polygon_ids,
+            (std::vector<std::int64_t>{1}));
+  // In sight and not seen: missing, dropped after two frames.
+  const auto in_the_open = [](const geometry::Point&) { return true; };
+  EXPECT_TRUE(tracker.update({}, kVehicle, in_the_open).dropped.empty());
+  EXPECT_EQ(tracker.update({}, kVehicle, in_the_open).dropped, (std::vector<std::int64_t>{1}));
+}
+
 TEST(OccupancyRectangles, CoverExactlyTheOccupiedCellsInTheRegion)
 {
   perception::LayerGrid grid;
