@@ -127,8 +127,8 @@ class AStarSearch {
  public:
   /// Plans from `start` to `goal`. A start or goal inside an obstacle is snapped to the nearest
   /// boundary point and flagged; one off a bounded map or not finite is refused with a status. With a
-  /// preference the result's cost is still the true one (no discount), and A* may return a path up to
-  /// 1 / (1 - discount) times the shortest.
+  /// preference the result's cost is still the true one (no discount), and the path may be the preferred
+  /// one where another is shorter by less than about the discount on the preferred arcs.
   static SearchResult run(const SearchGraph& graph, const ObstacleSet& obstacles,
                           const geometry::Point& start, const geometry::Point& goal, SearchScratch& scratch,
                           const RoutePreference& preference = {});

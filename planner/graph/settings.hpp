@@ -15,9 +15,10 @@ struct GraphSettings {
   double view_radius_m = 25.0;
   /// Side of the visibility index's buckets (metres); 0 picks one from the obstacle edges.
   double bucket_size_m = 0.0;
-  /// The previous route's edges cost this fraction less in the next search (0 .. 0.5): a new route must
-  /// be clearly shorter to replace it, so two ways of nearly equal length do not take turns.
-  double route_preference = 0.1;
+  /// The previous route's edges cost this fraction less in the next search (0 .. 0.5, 0 = off): a new
+  /// route must be clearly shorter to replace it, so two ways of nearly equal length do not take turns.
+  /// Off by default: a fraction of a long route is too much (docs/graph.md, Global search 5.).
+  double route_preference = 0.0;
 };
 
 /// Reads the `graph` section (`node` is that section). Every key is optional with the defaults above;

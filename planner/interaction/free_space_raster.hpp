@@ -30,8 +30,8 @@ class FreeSpaceRaster {
   std::uint8_t layers(std::size_t cell) const { return cells_[cell]; }
   bool onBorder(std::size_t cell) const;
 
-  /// The cells along the window's edge, in order round it (each a 4-neighbour of the one before and
-  /// the last of the first): where free space leaves the window.
+  /// The cells along the window's edge in order round it (each a 4-neighbour of the one before it, the
+  /// last one of the first): where free space leaves the window.
   std::vector<std::size_t> borderCells() const;
 
   /// Visits the cells carrying none of `blocked_layers` 4-connected to `start`, nearest first, until
