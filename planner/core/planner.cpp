@@ -349,7 +349,7 @@ void Planner::search(FrameResult& result)
   const Clock::time_point start = Clock::now();
   const graph::SearchGraph search_graph = graph::SearchGraph::fromDvGraph(global_);
   graph::RoutePreference preference;
-  if (last_path_.valid && last_path_.goal_id == goal_->id) {
+  if (settings_.graph.route_preference > 0.0 && last_path_.valid && last_path_.goal_id == goal_->id) {
     preference.discount = settings_.graph.route_preference;
     for (const graph::PathPoint& point : last_path_.waypoints) {
       if (point.vertex != graph::kNoVertex) {

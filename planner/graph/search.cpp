@@ -93,10 +93,6 @@ SearchGraph SearchGraph::fromDvGraph(const DvGraph& graph)
       continue;
     }
     dense[vertex.id] = static_cast<std::uint32_t>(result.ids_.size());
-    if (result.index_of_.size() <= vertex.id) {
-      result.index_of_.resize(static_cast<std::size_t>(vertex.id) + 1, kNone);
-    }
-    result.index_of_[vertex.id] = dense[vertex.id];
     result.ids_.push_back(vertex.id);
     result.positions_.push_back(vertex.position);
     result.previous_.push_back(vertex.previous);
@@ -135,6 +131,7 @@ SearchGraph SearchGraph::fromDvGraph(const DvGraph& graph)
     result.interaction_objects_.push_back(edge.object_id);
     result.interaction_plans_.push_back(edge.push_plan);
   }
+  result.index_of_ = std::move(dense);
   return result;
 }
 

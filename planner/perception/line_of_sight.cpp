@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <cstddef>
+#include <optional>
+#include <utility>
 
 namespace ifar::perception {
 
@@ -19,14 +21,9 @@ bool backgroundClearAlong(const LocalLayer& layer, const geometry::Point& from, 
   // Half-cell steps: no cell the segment crosses by more than a corner is missed.
   const double step = 0.5 * grid.cell_size_m;
   for (double along = skip_m; along <= length - skip_m; along += step) {
-    const geometry::Point point = from + direction * along;
-    const double column = std::floor((point.x() - grid.origin.x()) / grid.cell_size_m);
-    const double row = std::floor((point.y() - grid.origin.y()) / grid.cell_size_m);
-    if (column < 0.0 || row < 0.0 || column >= grid.cells || row >= grid.cells) {
-      continue;
-    }
-    if (layer.background_occupancy[static_cast<std::size_t>(row) * cells +
-                                   static_cast<std::size_t>(column)] != 0) {
+    const std::optional<std::pair<int, int>> cell = grid.cellOf(from + direction * along);
+    if (cell && layer.background_occupancy[static_cast<std::size_t>(cell->second) * cells +
+                                           static_cast<std::size_t>(cell->first)] != 0) {
       return false;
     }
   }

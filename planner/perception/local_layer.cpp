@@ -32,15 +32,13 @@ cv::Mat discKernel(double radius_cells)
 std::size_t rasterise(const std::vector<geometry::Point>& points, const LayerGrid& grid, cv::Mat& image)
 {
   std::size_t outside = 0;
-  const double inverse_cell = 1.0 / grid.cell_size_m;
   for (const geometry::Point& point : points) {
-    const double column = std::floor((point.x() - grid.origin.x()) * inverse_cell);
-    const double row = std::floor((point.y() - grid.origin.y()) * inverse_cell);
-    if (column < 0.0 || row < 0.0 || column >= grid.cells || row >= grid.cells) {
+    const std::optional<std::pair<int, int>> cell = grid.cellOf(point);
+    if (!cell) {
       ++outside;
       continue;
     }
-    image.at<std::uint8_t>(static_cast<int>(row), static_cast<int>(column)) = 255;
+    image.at<std::uint8_t>(cell->second, cell->first) = 255;
   }
   return outside;
 }
@@ -90,6 +88,17 @@ std::vector<std::uint8_t> occupancyOf(const cv::Mat& image)
 geometry::Point LayerGrid::cellCentre(int column, int row) const
 {
   return geometry::Point(origin.x() + (column + 0.5) * cell_size_m, origin.y() + (row + 0.5) * cell_size_m);
+}
+
+std::optional<std::pair<int, int>> LayerGrid::cellOf(const geometry::Point& point) const
+{
+  const double inverse_cell = 1.0 / cell_size_m;
+  const double column = std::floor((point.x() - origin.x()) * inverse_cell);
+  const double row = std::floor((point.y() - origin.y()) * inverse_cell);
+  if (!(column >= 0.0 && row >= 0.0 && column < cells && row < cells)) {
+    return std::nullopt;
+  }
+  return std::make_pair(static_cast<int>(column), static_cast<int>(row));
 }
 
 LayerGrid makeLayerGrid(const geometry::Point& centre, const PerceptionSettings& settings)

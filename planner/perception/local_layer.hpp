@@ -5,6 +5,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include "common/geometry/polygon.hpp"
@@ -34,6 +36,8 @@ struct LayerGrid {
   int cells = 0;
 
   geometry::Point cellCentre(int column, int row) const;
+  /// The (column, row) of the cell holding `point`; empty outside the grid.
+  std::optional<std::pair<int, int>> cellOf(const geometry::Point& point) const;
   /// Size of one side in metres.
   double sideLength() const { return cells * cell_size_m; }
 };
