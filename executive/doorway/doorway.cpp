@@ -19,9 +19,23 @@ geometry::Point leftOf(const geometry::Point& direction)
   return {-direction.y(), direction.x()};
 }
 
+/// The obstacle points within `reach` of `centre`.
+std::vector<geometry::Point> pointsNear(common::Span<const geometry::Point> points,
+                                        const geometry::Point& centre, double reach)
+{
+  std::vector<geometry::Point> near;
+  for (const geometry::Point& point : points) {
+    if ((point - centre).norm() <= reach) {
+      near.push_back(point);
+    }
+  }
+  return near;
+}
+
 struct PathSample {
   geometry::Point position;
   geometry::Point direction;  // unit
+  double along_m = 0.0;       // path length from path[0]
 };
 
 /// Points along `path` every kSampleStepM from `from_m` to `to_m` of arc length.
@@ -39,7 +53,7 @@ std::vector<PathSample> samplePath(common::Span<const geometry::Point> path, dou
     const geometry::Point direction = leg / length;
     for (double at = step * kSampleStepM; at <= travelled + length + 1e-9 && at <= to_m + 1e-9;
          at = ++step * kSampleStepM) {
-      samples.push_back({path[index] + (at - travelled) * direction, direction});
+      samples.push_back({path[index] + (at - travelled) * direction, direction, at});
     }
     travelled += length;
     if (travelled > to_m) {
@@ -128,12 +142,7 @@ Run bestRun(const Gap& gap, const std::vector<geometry::Point>& points, const Fo
   const double free_half = std::max(0.0, 0.5 * gap.width_m - footprint.half_width_m);
   // Farther points lie beyond the run's ends or farther to its side than the gap is wide.
   const double reach = std::max(behind_m, ahead_m) + gap.width_m + turn_radius;
-  std::vector<geometry::Point> near;
-  for (const geometry::Point& point : points) {
-    if ((point - middle).norm() <= reach) {
-      near.push_back(point);
-    }
-  }
+  const std::vector<geometry::Point> near = pointsNear(points, middle, reach);
   Run best;
   double best_score = -std::numeric_limits<double>::infinity();
   const auto consider = [&](double skew, double offset) {
@@ -188,7 +197,40 @@ Run bestRun(const Gap& gap, const std::vector<geometry::Point>& points, const Fo
   return best;
 }
 
+/// Whether `position` lies between the posts: its foot on the line through them falls between them and it
+/// is at most `off_line_m` from that line. A gap the path passes beside is not one it goes through.
+bool between(const geometry::Point& position, const Gap& gap, double off_line_m)
+{
+  const geometry::Point across = gap.second_post - gap.first_post;
+  const double fraction = across.dot(position - gap.first_post) / across.squaredNorm();
+  const geometry::Point foot = gap.first_post + fraction * across;
+  return fraction >= 0.0 && fraction <= 1.0 && (position - foot).norm() <= off_line_m;
+}
+
 }  // namespace
+
+std::optional<ImpassableGap> findImpassableGap(common::Span<const geometry::Point> path,
+                                               common::Span<const geometry::Point> obstacles,
+                                               const Footprint& footprint, const DoorwaySettings& settings)
+{
+  if (path.size() < 2 || obstacles.empty() || footprint.front_m >= settings.look_ahead_m) {
+    return std::nullopt;
+  }
+  // The same bound on what the footprint fits through as the doorway run's: a narrower gap is no doorway.
+  const double passable_m = 2.0 * (footprint.half_width_m + settings.min_clearance_m);
+  const std::vector<geometry::Point> near =
+      pointsNear(obstacles, path[0], settings.look_ahead_m + passable_m);
+  if (near.empty()) {
+    return std::nullopt;
+  }
+  for (const PathSample& sample : samplePath(path, footprint.front_m, settings.look_ahead_m)) {
+    const std::optional<Gap> gap = gapAt(sample, near, passable_m);
+    if (gap && gap->width_m < passable_m && between(sample.position, *gap, footprint.half_width_m)) {
+      return ImpassableGap{gap->first_post, gap->second_post, gap->width_m, sample.along_m};
+    }
+  }
+  return std::nullopt;
+}
 
 std::optional<Doorway> findDoorway(common::Span<const geometry::Point> path,
                                    common::Span<const geometry::Point> obstacles, const Footprint& footprint,
@@ -198,13 +240,8 @@ std::optional<Doorway> findDoorway(common::Span<const geometry::Point> path,
     return std::nullopt;
   }
   // Only points that can belong to a gap on the searched stretch or to the run through it.
-  const double reach = settings.look_ahead_m + settings.max_width_m + settings.exit_m + footprint.front_m;
-  std::vector<geometry::Point> near;
-  for (const geometry::Point& point : obstacles) {
-    if ((point - path[0]).norm() <= reach) {
-      near.push_back(point);
-    }
-  }
+  const std::vector<geometry::Point> near = pointsNear(
+      obstacles, path[0], settings.look_ahead_m + settings.max_width_m + settings.exit_m + footprint.front_m);
   if (near.empty()) {
     return std::nullopt;
   }

@@ -48,6 +48,23 @@ struct Doorway {
   double along(const geometry::Point& point) const { return heading.dot(point - centre); }
 };
 
+/// A gap across the path too narrow for the footprint however it is driven (narrower than its width plus
+/// twice the doorway clearance): the planner's inflation by the half width can leave such a gap open, e.g.
+/// beside a box pushed into a corridor, and following stalls in it.
+struct ImpassableGap {
+  geometry::Point first_post = geometry::Point::Zero();
+  geometry::Point second_post = geometry::Point::Zero();
+  double width_m = 0.0;  ///< distance between the posts
+  double along_m = 0.0;  ///< path length from path[0] to where the path crosses the gap
+};
+
+/// The first impassable gap the path crosses between the footprint's front and `settings.look_ahead_m`
+/// ahead of path[0], where the path runs between the two posts (not past their ends); None when there is
+/// none. Independent of `settings.enabled` (only min_clearance_m and look_ahead_m are used).
+std::optional<ImpassableGap> findImpassableGap(common::Span<const geometry::Point> path,
+                                               common::Span<const geometry::Point> obstacles,
+                                               const Footprint& footprint, const DoorwaySettings& settings);
+
 /// The first doorway the path crosses between `settings.min_ahead_m` and `settings.look_ahead_m` ahead of
 /// path[0] (the vehicle's position; then the waypoints still ahead, in order), with the straight run
 /// through it that keeps the swept `footprint` furthest from `obstacles` (world-frame points). None when

@@ -330,6 +330,7 @@ void Executive::stepFollow(Cycle& cycle)
     }
   }
 
+  reportImpassableGap(cycle);
   if (const std::optional<Doorway> doorway = doorwayAhead(cycle)) {
     startDoorway(cycle, *doorway);
     return;
@@ -375,12 +376,8 @@ void Executive::stepFollow(Cycle& cycle)
   }
 }
 
-std::optional<Doorway> Executive::doorwayAhead(const Cycle& cycle) const
+std::vector<geometry::Point> Executive::pathAhead(const Cycle& cycle) const
 {
-  if (!settings_.doorway.enabled || !cycle.obstacles_fresh) {
-    return std::nullopt;
-  }
-  // The path ahead up to where a push takes over (pushing goes through its own gap).
   std::vector<geometry::Point> ahead{cycle.pose.position()};
   for (std::size_t index = waypoint_index_; index < path_.waypoints.size(); ++index) {
     const Waypoint& waypoint = path_.waypoints[index];
@@ -390,6 +387,50 @@ std::optional<Doorway> Executive::doorwayAhead(const Cycle& cycle) const
     }
     ahead.push_back(waypoint.position);
   }
+  return ahead;
+}
+
+void Executive::reportImpassableGap(Cycle& cycle)
+{
+  if (!settings_.blocked_passage_on_sight || !cycle.obstacles_fresh) {
+    return;
+  }
+  const std::vector<geometry::Point> ahead = pathAhead(cycle);
+  const std::optional<ImpassableGap> gap =
+      findImpassableGap(common::Span<const geometry::Point>(ahead.data(), ahead.size()), cycle.obstacles,
+                        settings_.follower.footprint, settings_.doorway);
+  if (!gap) {
+    return;
+  }
+  // The planner answers within a cycle or two; until then the same path still crosses the gap.
+  const geometry::Point middle = 0.5 * (gap->first_post + gap->second_post);
+  if (gap_reported_us_ >= 0 && (middle - gap_reported_at_).norm() < kStallSiteRadiusM &&
+      static_cast<double>(cycle.now_us - gap_reported_us_) * 1e-6 < settings_.gap_report_repeat_s) {
+    return;
+  }
+  gap_reported_at_ = middle;
+  gap_reported_us_ = cycle.now_us;
+  // Toward a point beyond the gap: the planner seals the narrowest free point between the two.
+  BlockedPassage passage;
+  passage.goal_id = goal_id_;
+  passage.from = cycle.pose.position();
+  passage.to = pointAlongPath(passage.from, path_.waypoints, waypoint_index_,
+                              std::max(kBlockedPassageLookAheadM, gap->along_m + 1.0));
+  passage.stalls = 0;
+  passage.text = fmt::format(
+      "gap of {:.2f} m between ({:.2f}, {:.2f}) and ({:.2f}, {:.2f}), {:.1f} m ahead: narrower than the "
+      "vehicle can pass ({:.2f} m)",
+      gap->width_m, gap->first_post.x(), gap->first_post.y(), gap->second_post.x(), gap->second_post.y(),
+      gap->along_m, 2.0 * (settings_.follower.footprint.half_width_m + settings_.doorway.min_clearance_m));
+  cycle.blocked_passage = std::move(passage);
+}
+
+std::optional<Doorway> Executive::doorwayAhead(const Cycle& cycle) const
+{
+  if (!settings_.doorway.enabled || !cycle.obstacles_fresh) {
+    return std::nullopt;
+  }
+  const std::vector<geometry::Point> ahead = pathAhead(cycle);
   std::optional<Doorway> doorway =
       findDoorway(common::Span<const geometry::Point>(ahead.data(), ahead.size()), cycle.obstacles,
                   settings_.follower.footprint, settings_.doorway);

@@ -43,9 +43,9 @@ struct Status {
 struct BlockedPassage {
   std::int64_t goal_id = -1;
   geometry::Point from = geometry::Point::Zero();  ///< the vehicle, world frame
-  geometry::Point to = geometry::Point::Zero();    ///< the waypoint it could not reach
-  int stalls = 0;
-  std::string text;  ///< for people
+  geometry::Point to = geometry::Point::Zero();    ///< the path point it could not reach
+  int stalls = 0;                                  ///< 0: an impassable gap seen ahead, no stall
+  std::string text;                                ///< for people
 };
 
 struct Output {
@@ -53,8 +53,9 @@ struct Output {
   WheelSpeeds wheels;       ///< the same command as wheel speeds
   Status status;
   bool mode_changed = false;
-  std::optional<AffordanceEvent> affordance;      ///< set on the cycle the tactile monitor found something
-  std::optional<BlockedPassage> blocked_passage;  ///< set on the cycle repeated stalls gave a passage up
+  std::optional<AffordanceEvent> affordance;  ///< set on the cycle the tactile monitor found something
+  /// Set on the cycle repeated stalls gave a passage up, or an impassable gap ahead was seen.
+  std::optional<BlockedPassage> blocked_passage;
 };
 
 class Executive {
@@ -86,8 +87,14 @@ class Executive {
   void absorbPath(const Inputs& inputs);
   void adoptPath(const Path& path);
   void stepFollow(Cycle& cycle);
+  /// The vehicle's position, then the waypoints ahead up to where a push takes over (pushing goes through
+  /// its own gap).
+  std::vector<geometry::Point> pathAhead(const Cycle& cycle) const;
   /// The first doorway on the path ahead that is worth a straight run and not given up lately.
   std::optional<Doorway> doorwayAhead(const Cycle& cycle) const;
+  /// Reports a blocked passage when the path ahead crosses a gap the footprint cannot get through
+  /// (blocked_passage_on_sight), at most once per gap_report_repeat_s at one site.
+  void reportImpassableGap(Cycle& cycle);
   void startDoorway(Cycle& cycle, const Doorway& doorway);
   void stepDoorway(Cycle& cycle);
   /// True when the path from the current waypoint on still goes through the doorway being driven.
@@ -165,6 +172,8 @@ class Executive {
   geometry::Point stall_site_ = geometry::Point::Zero();  // where the current series of stalls began
   int stalls_at_site_ = 0;                                // stalls of that series, toward one waypoint
   geometry::Point stall_site_target_ = geometry::Point::Zero();
+  geometry::Point gap_reported_at_ = geometry::Point::Zero();  // the last impassable gap reported ...
+  std::int64_t gap_reported_us_ = -1;                          // ... and when (-1: none yet)
 
   VelocityCommand last_command_;
   std::int64_t last_step_us_ = 0;

@@ -78,6 +78,8 @@ ExecutiveSettings loadExecutiveSettings(const common::ConfigNode& node)
   settings.replan_timeout_s = positive(node, "replan_timeout_s");
   settings.stall_timeout_s = positive(node, "stall_timeout_s");
   settings.blocked_passage_stalls = positiveCount(node, "blocked_passage_stalls", 0);
+  settings.blocked_passage_on_sight = node.required<bool>("blocked_passage_on_sight");
+  settings.gap_report_repeat_s = positive(node, "gap_report_repeat_s");
 
   settings.reference_to_bumper_m = positive(node, "footprint.reference_to_bumper_m");
 

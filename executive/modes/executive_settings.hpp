@@ -46,6 +46,10 @@ struct ExecutiveSettings {
   double stall_timeout_s = 1.5;    ///< following without moving this long: back off and try again
   /// This many stalls at one site toward one waypoint report the passage as blocked (0: never).
   int blocked_passage_stalls = 3;
+  /// A gap on the path ahead (within doorway.look_ahead_m) narrower than the vehicle plus twice
+  /// doorway.min_clearance_m is reported as a blocked passage on sight, without stalling in it first.
+  bool blocked_passage_on_sight = true;
+  double gap_report_repeat_s = 2.0;  ///< the same gap (within 1 m) is reported again after this long
   /// Vehicle reference point (the pose) to the bumper face; the rest of the vehicle length is behind.
   /// The Executive builds the follower's footprint from this and the vehicle's length and width.
   double reference_to_bumper_m = 0.45;

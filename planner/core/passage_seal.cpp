@@ -44,13 +44,31 @@ std::optional<PassageSeal> sealPassage(const graph::ObstacleSet& obstacles, cons
   seal.centre = narrowest_point;
   seal.half_width_m = narrowest;
   const geometry::Point across(-direction.y(), direction.x());
-  const auto side_cells = static_cast<int>(std::floor(seal.half_width_m / cell_size_m + 1e-9));
-  for (int offset = -side_cells; offset <= side_cells; ++offset) {
+  // Across the free width and on into the inflation up to a cell short of the obstacle itself: the
+  // obstacles here are the planner's picture (a box seen from one side is modelled thin, a raster edge
+  // is a cell off), and a seal as wide as the picture's gap alone left the real lane open a little to one
+  // side; the next path went through there and stalled again (office: up to 7 seals beside one box).
+  const double deepest_m = std::max(0.0, inflation_m - cell_size_m);
+  const auto sealable = [&](const geometry::Point& point) {
+    return !obstacles.isBlocked(point) || obstacles.distanceToBoundary(point) <= deepest_m + 1e-9;
+  };
+  const auto most_cells = static_cast<int>(std::ceil((seal.half_width_m + inflation_m) / cell_size_m));
+  const auto cellsToward = [&](double side) {
+    int count = 0;
+    while (count < most_cells &&
+           sealable(seal.centre + side * static_cast<double>(count + 1) * cell_size_m * across)) {
+      ++count;
+    }
+    return count;
+  };
+  const int right_cells = cellsToward(-1.0);
+  const int left_cells = cellsToward(1.0);
+  for (int offset = -right_cells; offset <= left_cells; ++offset) {
     seal.cells.push_back(seal.centre + static_cast<double>(offset) * cell_size_m * across);
   }
-  const double reach = static_cast<double>(side_cells) * cell_size_m + std::max(0.0, inflation_m);
-  seal.across.start = seal.centre - reach * across;
-  seal.across.end = seal.centre + reach * across;
+  const double inflation = std::max(0.0, inflation_m);
+  seal.across.start = seal.centre - (static_cast<double>(right_cells) * cell_size_m + inflation) * across;
+  seal.across.end = seal.centre + (static_cast<double>(left_cells) * cell_size_m + inflation) * across;
   return seal;
 }
 

@@ -19,14 +19,16 @@ struct PassageSeal {
   geometry::Point centre = geometry::Point::Zero();  // the narrowest free point, world frame
   double half_width_m = 0.0;                         // its distance to the nearest (inflated) obstacle
   std::vector<geometry::Point> cells;                // background cells to remember, across the segment
+                                                     // from its right to its left
   geometry::Segment
       across;  // the closed line: through the cells, reaching the inflation beyond the outer ones
 };
 
 /// The seal of the segment `from` -> `to` in `obstacles` (inflated by `inflation_m`): the free point of the
 /// segment at least `inflation_m` + `cell_size_m` from `from` (so the vehicle is not sealed in) with the
-/// least distance to an obstacle, and cells `cell_size_m` apart across the segment within that distance
-/// of it. Empty when the segment has no such free point (too short, or blocked all along).
+/// least distance to an obstacle, and cells `cell_size_m` apart across the segment through it, out to both
+/// sides while a cell is free or at most `inflation_m` - `cell_size_m` inside the inflated obstacles (short
+/// of the obstacle itself). Empty when the segment has no such free point (too short, or blocked all along).
 std::optional<PassageSeal> sealPassage(const graph::ObstacleSet& obstacles, const geometry::Point& from,
                                        const geometry::Point& to, double inflation_m, double cell_size_m);
 

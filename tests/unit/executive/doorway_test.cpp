@@ -125,5 +125,75 @@ TEST(Doorway, NoRunWhenSomethingStandsOnItsLineBeyondTheDoor)
   EXPECT_FALSE(findDoorway(path, walls, vehicle(), DoorwaySettings{}));
 }
 
+/// A 2.5 m corridor (walls at y = 0 and 2.5, x -3 .. 5) with a 0.5 m x 1.1 m box across it at x 1 .. 1.5,
+/// y 0.7 .. 1.8: a lane 0.7 m wide either side, as a fire-door box pushed into a corridor leaves.
+std::vector<Point> corridorWithBox()
+{
+  std::vector<Point> points;
+  for (int step = -60; step <= 100; ++step) {
+    points.emplace_back(0.05 * step, 0.0);
+    points.emplace_back(0.05 * step, 2.5);
+  }
+  for (int step = 0; step <= 10; ++step) {
+    points.emplace_back(1.0 + 0.05 * step, 0.7);
+    points.emplace_back(1.0 + 0.05 * step, 1.8);
+  }
+  for (int step = 0; step <= 22; ++step) {
+    points.emplace_back(1.0, 0.7 + 0.05 * step);
+    points.emplace_back(1.5, 0.7 + 0.05 * step);
+  }
+  return points;
+}
+
+TEST(ImpassableGap, ADoorNarrowerThanTheVehicleAndItsClearanceIsImpassable)
+{
+  const std::vector<Point> path{{0.0, -2.5}, {0.0, 2.5}};
+  const std::vector<Point> too_narrow = wallWithDoor(0.78);
+  const std::optional<ImpassableGap> gap = findImpassableGap(path, too_narrow, vehicle(), {});
+  ASSERT_TRUE(gap);
+  EXPECT_NEAR(gap->width_m, 0.78, 0.03);
+  EXPECT_NEAR(gap->along_m, 2.4, 0.1);  // the wall's near face
+  EXPECT_NEAR(std::abs(gap->first_post.x()), 0.39, 0.03);
+  EXPECT_NEAR(gap->second_post.x(), -gap->first_post.x(), 0.03);
+  // 0.82 m is driven as a doorway; 1.0 m and a wide opening are plain passages.
+  for (const double width : {0.82, 1.0, 2.0}) {
+    const std::vector<Point> walls = wallWithDoor(width);
+    EXPECT_FALSE(findImpassableGap(path, walls, vehicle(), {})) << width;
+  }
+}
+
+TEST(ImpassableGap, OnlyGapsBetweenTheBumperAndTheLookAheadCount)
+{
+  const std::vector<Point> walls = wallWithDoor(0.78);
+  // 4 m before the door (beyond look_ahead_m), and with the bumper already past the posts.
+  const std::vector<Point> far_before{{0.0, -4.0}, {0.0, 2.5}};
+  EXPECT_FALSE(findImpassableGap(far_before, walls, vehicle(), {}));
+  const std::vector<Point> in_door{{0.0, 0.0}, {0.0, 2.5}};
+  EXPECT_FALSE(findImpassableGap(in_door, walls, vehicle(), {}));
+}
+
+TEST(ImpassableGap, TheLanesBesideABoxInACorridorAreImpassableTheCorridorBeforeItIsNot)
+{
+  const std::vector<Point> points = corridorWithBox();
+  // Through the north lane, as a graph that inflates by the half width only may route it.
+  const std::vector<Point> north{{-1.0, 1.25}, {0.7, 2.15}, {1.8, 2.15}, {4.0, 1.25}};
+  const std::optional<ImpassableGap> gap = findImpassableGap(north, points, vehicle(), {});
+  ASSERT_TRUE(gap);
+  // Found where the lane begins: from the wall to the box's corner, a little wider than the lane.
+  EXPECT_GE(gap->width_m, 0.7 - 1e-9);
+  EXPECT_LT(gap->width_m, 0.8);
+  const Point on_box = gap->first_post.y() < gap->second_post.y() ? gap->first_post : gap->second_post;
+  const Point on_wall = gap->first_post.y() < gap->second_post.y() ? gap->second_post : gap->first_post;
+  EXPECT_NEAR(on_box.y(), 1.8, 1e-9);
+  EXPECT_NEAR(on_box.x(), 1.0, 1e-9);
+  EXPECT_NEAR(on_wall.y(), 2.5, 1e-9);
+  EXPECT_LE(gap->along_m, 2.2);  // before the path's corner at the lane's west end
+  // Up the corridor's middle to 0.8 m before the box, and along it beside the box's far end.
+  const std::vector<Point> before{{-2.5, 1.25}, {0.2, 1.25}};
+  EXPECT_FALSE(findImpassableGap(before, points, vehicle(), {}));
+  const std::vector<Point> past_the_end{{3.0, 0.6}, {3.0, 2.0}};
+  EXPECT_FALSE(findImpassableGap(past_the_end, points, vehicle(), {}));
+}
+
 }  // namespace
 }  // namespace ifar::executive

@@ -34,6 +34,8 @@ TEST(ExecutiveSettings, LoadsShippedConfig)
   EXPECT_TRUE(settings.doorway.enabled);
   EXPECT_DOUBLE_EQ(settings.doorway.max_width_m, 1.3);
   EXPECT_DOUBLE_EQ(settings.doorway.speed, 0.6);
+  EXPECT_TRUE(settings.blocked_passage_on_sight);
+  EXPECT_DOUBLE_EQ(settings.gap_report_repeat_s, 2.0);
 }
 
 TEST(ExecutiveSettings, DoorwaySearchThatStartsBeyondItsEndNamesTheKey)

@@ -317,11 +317,63 @@ std::optional<BlockedPassage> ExecutiveTest::driveAtNarrowGap(Executive& executi
   return reported;
 }
 
+TEST_F(ExecutiveTest, AGapTooNarrowAheadIsReportedOnSightOncePerRepeatInterval)
+{
+  // A 0.72 m gap 1.5 m ahead: narrower than the vehicle and 5 cm either side. Reported on the first
+  // cycle, before the vehicle gets there, toward the path point 1 m beyond the gap.
+  const std::vector<Point> walls = doorWalls(0.72);
+  Path path = straightPath();
+  path.waypoints = {waypoint(0.0, -1.5), waypoint(0.0, 1.5)};
+  pose_ = Pose2{0.0, -1.5, 0.5 * M_PI};
+  std::vector<std::int64_t> reported_us;
+  std::optional<BlockedPassage> first;
+  for (int cycle = 0; cycle < 125; ++cycle) {  // 2.5 s
+    now_us_ += kCycleUs;
+    Inputs inputs = freshInputs(now_us_, path);
+    inputs.obstacles = Stamped<std::vector<Point>>{walls, now_us_};
+    const Output output = executive_.step(now_us_, inputs);
+    if (output.blocked_passage) {
+      reported_us.push_back(now_us_);
+      if (!first) {
+        first = output.blocked_passage;
+      }
+    }
+    pose_ = testing::drive(pose_, output.command, kCycleUs * 1e-6);
+  }
+  ASSERT_TRUE(first);
+  EXPECT_EQ(first->stalls, 0);
+  EXPECT_EQ(first->goal_id, 5);
+  EXPECT_LT((first->from - Point(0.0, -1.5)).norm(), 0.05) << first->text;
+  EXPECT_NEAR(first->to.x(), 0.0, 1e-9);
+  EXPECT_NEAR(first->to.y(), 1.0, 0.1) << first->text;  // the gap's near face 1.5 m on, then 1 m more
+  EXPECT_NE(first->text.find("gap of 0.72 m"), std::string::npos) << first->text;
+  // The same gap again only after gap_report_repeat_s (2 s): twice in 2.5 s.
+  ASSERT_EQ(reported_us.size(), 2U);
+  EXPECT_EQ(reported_us[0], now_us_ - 124 * kCycleUs);
+  EXPECT_GE(static_cast<double>(reported_us[1] - reported_us[0]) * 1e-6, settings_.gap_report_repeat_s);
+  EXPECT_LT(static_cast<double>(reported_us[1] - reported_us[0]) * 1e-6,
+            settings_.gap_report_repeat_s + 0.05);
+}
+
+TEST_F(ExecutiveTest, AGapTheVehicleFitsThroughIsNotReportedOnSight)
+{
+  const std::vector<Point> walls = doorWalls(1.0);
+  Path path = straightPath();
+  path.waypoints = {waypoint(0.0, -1.5), waypoint(0.0, 1.5)};
+  pose_ = Pose2{0.0, -1.5, 0.5 * M_PI};
+  Inputs inputs = freshInputs(now_us_ + kCycleUs, path);
+  inputs.obstacles = Stamped<std::vector<Point>>{walls, now_us_ + kCycleUs};
+  EXPECT_FALSE(executive_.step(now_us_ + kCycleUs, inputs).blocked_passage);
+}
+
 TEST_F(ExecutiveTest, StallingAgainAndAgainAtAGapTooNarrowReportsTheBlockedPassage)
 {
-  // The third stall within 1 m, toward the same waypoint, reports the passage.
+  // The third stall within 1 m, toward the same waypoint, reports the passage (the report on sight off,
+  // as where the obstacle points do not show the gap narrow).
+  settings_.blocked_passage_on_sight = false;
+  Executive executive(settings_, vehicle_);
   int stalls = 0;
-  const std::optional<BlockedPassage> reported = driveAtNarrowGap(executive_, 100, stalls);
+  const std::optional<BlockedPassage> reported = driveAtNarrowGap(executive, 100, stalls);
   ASSERT_TRUE(reported) << stalls << " stalls, ended at (" << pose_.x << ", " << pose_.y << ")";
   // Reported on the cycle the third stall began (its back-off starts on the same cycle).
   EXPECT_EQ(stalls, settings_.blocked_passage_stalls);
@@ -338,8 +390,10 @@ TEST_F(ExecutiveTest, ABlockedPassageOnALongLegIsReportedTowardThePathPointAFewM
 {
   // The planner seals the narrowest point between `from` and `to`: with the waypoint 20 m on, that
   // could be anywhere along the leg; 2.5 m along the path keeps it at the gap the vehicle stalled in.
+  settings_.blocked_passage_on_sight = false;
+  Executive executive(settings_, vehicle_);
   int stalls = 0;
-  const std::optional<BlockedPassage> reported = driveAtNarrowGap(executive_, 100, stalls, 20.0);
+  const std::optional<BlockedPassage> reported = driveAtNarrowGap(executive, 100, stalls, 20.0);
   ASSERT_TRUE(reported) << stalls << " stalls, ended at (" << pose_.x << ", " << pose_.y << ")";
   EXPECT_NEAR((reported->to - reported->from).norm(), 2.5, 1e-6) << reported->text;
   const Point toward_goal = (Point(0.0, 20.0) - reported->from).normalized();
@@ -349,6 +403,7 @@ TEST_F(ExecutiveTest, ABlockedPassageOnALongLegIsReportedTowardThePathPointAFewM
 TEST_F(ExecutiveTest, BlockedPassageReportsCanBeTurnedOff)
 {
   settings_.blocked_passage_stalls = 0;
+  settings_.blocked_passage_on_sight = false;
   Executive executive(settings_, vehicle_);
   int stalls = 0;
   EXPECT_FALSE(driveAtNarrowGap(executive, 4, stalls));

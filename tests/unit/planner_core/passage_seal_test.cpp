@@ -17,21 +17,44 @@ graph::ObstacleSet channel()
   return graph::ObstacleSet(std::move(loops));
 }
 
-TEST(PassageSeal, ClosesTheNarrowestPointAcrossTheSegment)
+/// Two blocks pinching to a 0.3 m gap at (2.15, 0.5): vertices at (2.0, 0.5) and (2.3, 0.5), the gap
+/// wider above and below.
+graph::ObstacleSet pinch()
 {
+  std::vector<graph::ObstacleLoop> loops;
+  loops.push_back(graph::loopFromPolygon({{0.0, 0.0}, {1.9, 0.0}, {2.0, 0.5}, {1.9, 1.0}, {0.0, 1.0}}));
+  loops.push_back(graph::loopFromPolygon({{2.4, 0.0}, {4.0, 0.0}, {4.0, 1.0}, {2.4, 1.0}, {2.3, 0.5}}));
+  return graph::ObstacleSet(std::move(loops));
+}
+
+TEST(PassageSeal, ClosesTheNarrowestPointAcrossTheSegmentIntoTheInflation)
+{
+  const graph::ObstacleSet obstacles = pinch();
   const std::optional<PassageSeal> seal =
-      sealPassage(channel(), geometry::Point(2.15, -1.5), geometry::Point(2.15, 2.5), 0.35, 0.1);
+      sealPassage(obstacles, geometry::Point(2.15, -1.5), geometry::Point(2.15, 2.5), 0.35, 0.1);
   ASSERT_TRUE(seal);
   EXPECT_NEAR(seal->centre.x(), 2.15, 1e-9);
-  EXPECT_GE(seal->centre.y(), 0.0);
-  EXPECT_LE(seal->centre.y(), 1.0);
+  EXPECT_NEAR(seal->centre.y(), 0.5, 1e-9);
   EXPECT_NEAR(seal->half_width_m, 0.15, 1e-9);
-  // floor(0.15 / 0.1) = 1 cell each side of the centre, across the segment.
-  ASSERT_EQ(seal->cells.size(), 3U);
-  EXPECT_NEAR(seal->cells.front().x(), 2.25, 1e-9);
-  EXPECT_NEAR(seal->cells.back().x(), 2.05, 1e-9);
-  for (const geometry::Point& cell : seal->cells) {
-    EXPECT_NEAR(cell.y(), seal->centre.y(), 1e-9);
+  // A row across (along x), 0.1 m apart, through the centre, from right (+x) to left.
+  ASSERT_GE(seal->cells.size(), 3U);
+  for (std::size_t index = 0; index < seal->cells.size(); ++index) {
+    EXPECT_NEAR(seal->cells[index].y(), 0.5, 1e-9);
+    if (index > 0) {
+      EXPECT_NEAR(seal->cells[index - 1].x() - seal->cells[index].x(), 0.1, 1e-9);
+    }
+    // Free, or inside an inflated block by at most the inflation less a cell.
+    const geometry::Point& cell = seal->cells[index];
+    EXPECT_TRUE(!obstacles.isBlocked(cell) || obstacles.distanceToBoundary(cell) <= 0.25 + 1e-9) << cell.x();
+  }
+  // Into both blocks (past the free gap the picture shows), and no cell beyond stays short of the obstacle.
+  EXPECT_GT(seal->cells.front().x(), 2.3 + 0.1);
+  EXPECT_LT(seal->cells.back().x(), 2.0 - 0.1);
+  const std::vector<geometry::Point> beyond_ends{seal->cells.front() + geometry::Point(0.1, 0.0),
+                                                 seal->cells.back() - geometry::Point(0.1, 0.0)};
+  for (const geometry::Point& beyond : beyond_ends) {
+    EXPECT_TRUE(obstacles.isBlocked(beyond));
+    EXPECT_GT(obstacles.distanceToBoundary(beyond), 0.25) << beyond.x();
   }
 }
 
@@ -62,10 +85,11 @@ TEST(PassageSeal, NothingToSealGivesNoSeal)
 TEST(PassageSeal, RemovesTheEdgesThroughIt)
 {
   const std::optional<PassageSeal> seal =
-      sealPassage(channel(), geometry::Point(2.15, -1.5), geometry::Point(2.15, 2.5), 0.35, 0.1);
+      sealPassage(pinch(), geometry::Point(2.15, -1.5), geometry::Point(2.15, 2.5), 0.35, 0.1);
   ASSERT_TRUE(seal);
-  // The line across reaches the inflation beyond the outer cells: 0.1 + 0.35 m each side of the centre.
-  EXPECT_NEAR((seal->across.end - seal->across.start).norm(), 0.9, 1e-9);
+  // The line across reaches the inflation beyond the outer cells.
+  EXPECT_NEAR(seal->across.start.x() - seal->cells.front().x(), 0.35, 1e-9);
+  EXPECT_NEAR(seal->cells.back().x() - seal->across.end.x(), 0.35, 1e-9);
   graph::DvGraph graph;
   const auto vertexAt = [&graph](double x, double y) {
     graph::Vertex vertex;
