@@ -218,6 +218,11 @@ std::optional<ImpassableGap> findImpassableGap(common::Span<const geometry::Poin
   }
   // The same bound on what the footprint fits through as the doorway run's: a narrower gap is no doorway.
   const double passable_m = 2.0 * (footprint.half_width_m + settings.min_clearance_m);
+  // A gap narrower than the vehicle by more than the clearance is one the planner's inflation by the half
+  // width closes once its scans show it: a path through it runs where the planner has not seen (two
+  // points of one wall a few centimetres apart) and changes by itself. Reported, its seal closed the way
+  // round the wall's end as well (willow: 11 reports in one run, the goal not reached).
+  const double narrowest_m = 2.0 * (footprint.half_width_m - settings.min_clearance_m);
   const std::vector<geometry::Point> near =
       pointsNear(obstacles, path[0], settings.look_ahead_m + passable_m);
   if (near.empty()) {
@@ -225,7 +230,8 @@ std::optional<ImpassableGap> findImpassableGap(common::Span<const geometry::Poin
   }
   for (const PathSample& sample : samplePath(path, footprint.front_m, settings.look_ahead_m)) {
     const std::optional<Gap> gap = gapAt(sample, near, passable_m);
-    if (gap && gap->width_m < passable_m && between(sample.position, *gap, footprint.half_width_m)) {
+    if (gap && gap->width_m < passable_m && gap->width_m >= narrowest_m &&
+        between(sample.position, *gap, footprint.half_width_m)) {
       return ImpassableGap{gap->first_post, gap->second_post, gap->width_m, sample.along_m};
     }
   }

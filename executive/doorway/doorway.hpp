@@ -49,8 +49,9 @@ struct Doorway {
 };
 
 /// A gap across the path too narrow for the footprint however it is driven (narrower than its width plus
-/// twice the doorway clearance): the planner's inflation by the half width can leave such a gap open, e.g.
-/// beside a box pushed into a corridor, and following stalls in it.
+/// twice the doorway clearance) but not by more than that clearance narrower than its width: the planner's
+/// inflation by the half width leaves such a gap open, e.g. beside a box pushed into a corridor, and
+/// following stalls in it. Narrower ones the inflation closes as soon as the planner sees them.
 struct ImpassableGap {
   geometry::Point first_post = geometry::Point::Zero();
   geometry::Point second_post = geometry::Point::Zero();

@@ -410,12 +410,12 @@ void Executive::reportImpassableGap(Cycle& cycle)
   }
   gap_reported_at_ = middle;
   gap_reported_us_ = cycle.now_us;
-  // Toward a point beyond the gap: the planner seals the narrowest free point between the two.
+  // Toward the path point 1 m beyond the gap: the planner seals the narrowest free point between the
+  // vehicle and it, and a farther point let that land at another gap on a straight line cutting corners.
   BlockedPassage passage;
   passage.goal_id = goal_id_;
   passage.from = cycle.pose.position();
-  passage.to = pointAlongPath(passage.from, path_.waypoints, waypoint_index_,
-                              std::max(kBlockedPassageLookAheadM, gap->along_m + 1.0));
+  passage.to = pointAlongPath(passage.from, path_.waypoints, waypoint_index_, gap->along_m + 1.0);
   passage.stalls = 0;
   passage.text = fmt::format(
       "gap of {:.2f} m between ({:.2f}, {:.2f}) and ({:.2f}, {:.2f}), {:.1f} m ahead: narrower than the "

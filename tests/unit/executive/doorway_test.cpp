@@ -155,6 +155,14 @@ TEST(ImpassableGap, ADoorNarrowerThanTheVehicleAndItsClearanceIsImpassable)
   EXPECT_NEAR(gap->along_m, 2.4, 0.1);  // the wall's near face
   EXPECT_NEAR(std::abs(gap->first_post.x()), 0.39, 0.03);
   EXPECT_NEAR(gap->second_post.x(), -gap->first_post.x(), 0.03);
+  // 0.62 m still is; 0.55 m and a path through a wall (returns 0.05 m apart) are the planner's to see:
+  // its inflation by the half width closes them.
+  const std::vector<Point> barely = wallWithDoor(0.62);
+  EXPECT_TRUE(findImpassableGap(path, barely, vehicle(), {}));
+  for (const double width : {0.55, 0.05}) {
+    const std::vector<Point> walls = wallWithDoor(width);
+    EXPECT_FALSE(findImpassableGap(path, walls, vehicle(), {})) << width;
+  }
   // 0.82 m is driven as a doorway; 1.0 m and a wide opening are plain passages.
   for (const double width : {0.82, 1.0, 2.0}) {
     const std::vector<Point> walls = wallWithDoor(width);
