@@ -217,7 +217,7 @@ std::optional<ImpassableGap> findImpassableGap(common::Span<const geometry::Poin
     return std::nullopt;
   }
   // The same bound on what the footprint fits through as the doorway run's: a narrower gap is no doorway.
-  const double passable_m = 2.0 * (footprint.half_width_m + settings.min_clearance_m);
+  const double passable_m = passableWidth(footprint, settings);
   // A gap narrower than the vehicle by more than the clearance is one the planner's inflation by the half
   // width closes once its scans show it: a path through it runs where the planner has not seen (two
   // points of one wall a few centimetres apart) and changes by itself. Reported, its seal closed the way
@@ -265,7 +265,7 @@ std::optional<Doorway> findDoorway(common::Span<const geometry::Point> path,
       narrowest = gap;
     }
   }
-  if (!narrowest || narrowest->width_m < 2.0 * (footprint.half_width_m + settings.min_clearance_m)) {
+  if (!narrowest || narrowest->width_m < passableWidth(footprint, settings)) {
     return std::nullopt;
   }
   const Run run = bestRun(*narrowest, near, footprint, settings);

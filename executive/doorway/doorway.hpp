@@ -48,6 +48,13 @@ struct Doorway {
   double along(const geometry::Point& point) const { return heading.dot(point - centre); }
 };
 
+/// The narrowest gap (post to post) the footprint is driven through: its width plus twice the doorway
+/// clearance. Doorway runs and impassable-gap reports share it.
+inline double passableWidth(const Footprint& footprint, const DoorwaySettings& settings)
+{
+  return 2.0 * (footprint.half_width_m + settings.min_clearance_m);
+}
+
 /// A gap across the path too narrow for the footprint however it is driven (narrower than its width plus
 /// twice the doorway clearance) but not by more than that clearance narrower than its width: the planner's
 /// inflation by the half width leaves such a gap open, e.g. beside a box pushed into a corridor, and

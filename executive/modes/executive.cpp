@@ -421,7 +421,7 @@ void Executive::reportImpassableGap(Cycle& cycle)
       "gap of {:.2f} m between ({:.2f}, {:.2f}) and ({:.2f}, {:.2f}), {:.1f} m ahead: narrower than the "
       "vehicle can pass ({:.2f} m)",
       gap->width_m, gap->first_post.x(), gap->first_post.y(), gap->second_post.x(), gap->second_post.y(),
-      gap->along_m, 2.0 * (settings_.follower.footprint.half_width_m + settings_.doorway.min_clearance_m));
+      gap->along_m, passableWidth(settings_.follower.footprint, settings_.doorway));
   cycle.blocked_passage = std::move(passage);
 }
 
