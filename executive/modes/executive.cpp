@@ -42,6 +42,7 @@ constexpr double kStallEscapeReleases = 3.0;
 /// Stalls within this distance of the first one of a series, toward waypoints this close to each other,
 /// count as the same passage.
 constexpr double kStallSiteRadiusM = 1.0;
+constexpr std::size_t kPushedObjectsRemembered = 8;
 /// A blocked passage is reported toward the path point this far ahead (along the path), not the
 /// waypoint: the planner seals beyond the vehicle's inflation, so a waypoint a step ahead leaves it no
 /// room, and one at the end of a long leg lets the seal land anywhere along it.
@@ -392,7 +393,9 @@ std::vector<geometry::Point> Executive::pathAhead(const Cycle& cycle) const
 
 void Executive::reportImpassableGap(Cycle& cycle)
 {
-  if (!settings_.blocked_passage_on_sight || !cycle.obstacles_fresh) {
+  const GapReportScope scope = settings_.blocked_passage_on_sight;
+  if (scope == GapReportScope::Off || !cycle.obstacles_fresh ||
+      (scope == GapReportScope::NearPushedObjects && pushed_objects_left_at_.empty())) {
     return;
   }
   const std::vector<geometry::Point> ahead = pathAhead(cycle);
@@ -400,6 +403,12 @@ void Executive::reportImpassableGap(Cycle& cycle)
       findImpassableGap(common::Span<const geometry::Point>(ahead.data(), ahead.size()), cycle.obstacles,
                         settings_.follower.footprint, settings_.doorway);
   if (!gap) {
+    return;
+  }
+  // A static gap the follower may still find a way past by itself (furniture seen at a slant looks
+  // narrower than it is); a pushed object left across a corridor is what the planner's inflation cannot
+  // see through, and what costs a stall series per lane beside it.
+  if (scope == GapReportScope::NearPushedObjects && !besidePushedObject(*gap)) {
     return;
   }
   // The planner answers within a cycle or two; until then the same path still crosses the gap.
@@ -423,6 +432,29 @@ void Executive::reportImpassableGap(Cycle& cycle)
       gap->width_m, gap->first_post.x(), gap->first_post.y(), gap->second_post.x(), gap->second_post.y(),
       gap->along_m, passableWidth(settings_.follower.footprint, settings_.doorway));
   cycle.blocked_passage = std::move(passage);
+}
+
+bool Executive::besidePushedObject(const ImpassableGap& gap) const
+{
+  const double radius = settings_.pushed_object.radius_m;
+  return std::any_of(pushed_objects_left_at_.begin(), pushed_objects_left_at_.end(),
+                     [&gap, radius](const geometry::Point& object) {
+                       return (gap.first_post - object).norm() <= radius ||
+                              (gap.second_post - object).norm() <= radius;
+                     });
+}
+
+void Executive::rememberPushedObject(const std::optional<geometry::Point>& observed)
+{
+  const std::optional<ObjectObservation> expected = pushedObjectEstimate();
+  if (!observed && !expected) {
+    return;
+  }
+  // Bounded: only recent pushes matter to the lanes the vehicle is about to drive.
+  if (pushed_objects_left_at_.size() >= kPushedObjectsRemembered) {
+    pushed_objects_left_at_.erase(pushed_objects_left_at_.begin());
+  }
+  pushed_objects_left_at_.push_back(observed ? *observed : expected->position);
 }
 
 std::optional<Doorway> Executive::doorwayAhead(const Cycle& cycle) const
@@ -639,6 +671,7 @@ void Executive::stepPush(Cycle& cycle)
     cycle.affordance = event;
     if (!event->pushable || event->reason == AffordanceReason::CostHigher) {
       // Algorithm 2: the plan no longer holds; stop and wait for the planner to use the new estimate.
+      rememberPushedObject(object_position);
       task_ = Task::ReplanWait;
       replan_requested_us_ = cycle.now_us;
       ++replans_;
@@ -653,6 +686,7 @@ void Executive::stepPush(Cycle& cycle)
 
   if (result.phase == PushPhase::Finished) {
     ++pushes_;
+    rememberPushedObject(object_position);
     const int push_waypoint = pushWaypointIndex(active_plan_.object_id);
     waypoint_index_ = push_waypoint >= 0 ? static_cast<std::size_t>(push_waypoint)
                                          : std::min<std::size_t>(1, path_.waypoints.size() - 1);

@@ -95,6 +95,11 @@ class Executive {
   /// Reports a blocked passage when the path ahead crosses a gap the footprint cannot get through
   /// (blocked_passage_on_sight), at most once per gap_report_repeat_s at one site.
   void reportImpassableGap(Cycle& cycle);
+  /// True when a post of `gap` is within pushed_object.radius_m of where a push left an object.
+  bool besidePushedObject(const ImpassableGap& gap) const;
+  /// Where the push just finished or abandoned left its object: `observed` when given, else the expected
+  /// centroid at the current primitive (call while still pushing).
+  void rememberPushedObject(const std::optional<geometry::Point>& observed);
   void startDoorway(Cycle& cycle, const Doorway& doorway);
   void stepDoorway(Cycle& cycle);
   /// True when the path from the current waypoint on still goes through the doorway being driven.
@@ -174,6 +179,7 @@ class Executive {
   geometry::Point stall_site_target_ = geometry::Point::Zero();
   geometry::Point gap_reported_at_ = geometry::Point::Zero();  // the last impassable gap reported ...
   std::int64_t gap_reported_us_ = -1;                          // ... and when (-1: none yet)
+  std::vector<geometry::Point> pushed_objects_left_at_;        // where the last few pushes left their objects
 
   VelocityCommand last_command_;
   std::int64_t last_step_us_ = 0;

@@ -33,6 +33,21 @@ int positiveCount(const common::ConfigNode& node, const std::string& key, int mi
   return value;
 }
 
+GapReportScope gapReportScope(const common::ConfigNode& node, const std::string& key)
+{
+  const auto value = node.required<std::string>(key);
+  if (value == "off") {
+    return GapReportScope::Off;
+  }
+  if (value == "near_pushed_objects") {
+    return GapReportScope::NearPushedObjects;
+  }
+  if (value == "everywhere") {
+    return GapReportScope::Everywhere;
+  }
+  node.fail(key, "must be off, near_pushed_objects or everywhere, not '" + value + "'");
+}
+
 PoseControllerSettings loadControl(const common::ConfigNode& node)
 {
   PoseControllerSettings control;
@@ -78,7 +93,7 @@ ExecutiveSettings loadExecutiveSettings(const common::ConfigNode& node)
   settings.replan_timeout_s = positive(node, "replan_timeout_s");
   settings.stall_timeout_s = positive(node, "stall_timeout_s");
   settings.blocked_passage_stalls = positiveCount(node, "blocked_passage_stalls", 0);
-  settings.blocked_passage_on_sight = node.required<bool>("blocked_passage_on_sight");
+  settings.blocked_passage_on_sight = gapReportScope(node, "blocked_passage_on_sight");
   settings.gap_report_repeat_s = positive(node, "gap_report_repeat_s");
 
   settings.reference_to_bumper_m = positive(node, "footprint.reference_to_bumper_m");

@@ -33,6 +33,9 @@ struct PushedObjectSettings {
   double guard_horizon_s = 0.5;  ///< how far ahead the command is checked, seconds
 };
 
+/// Where a gap too narrow for the vehicle is reported as a blocked passage on sight.
+enum class GapReportScope { Off, NearPushedObjects, Everywhere };
+
 struct ExecutiveSettings {
   StaleThresholds stale;
   double waypoint_tolerance_m = 0.4;  ///< an intermediate waypoint counts as passed within this
@@ -47,8 +50,10 @@ struct ExecutiveSettings {
   /// This many stalls at one site toward one waypoint report the passage as blocked (0: never).
   int blocked_passage_stalls = 3;
   /// A gap on the path ahead (within doorway.look_ahead_m) narrower than the vehicle plus twice
-  /// doorway.min_clearance_m is reported as a blocked passage on sight, without stalling in it first.
-  bool blocked_passage_on_sight = true;
+  /// doorway.min_clearance_m is reported as a blocked passage on sight, without stalling in it first:
+  /// never, only beside an object this executive pushed (within pushed_object.radius_m of where the
+  /// push left it), or everywhere.
+  GapReportScope blocked_passage_on_sight = GapReportScope::NearPushedObjects;
   double gap_report_repeat_s = 2.0;  ///< the same gap (within 1 m) is reported again after this long
   /// Vehicle reference point (the pose) to the bumper face; the rest of the vehicle length is behind.
   /// The Executive builds the follower's footprint from this and the vehicle's length and width.

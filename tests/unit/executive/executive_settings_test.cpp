@@ -34,7 +34,7 @@ TEST(ExecutiveSettings, LoadsShippedConfig)
   EXPECT_TRUE(settings.doorway.enabled);
   EXPECT_DOUBLE_EQ(settings.doorway.max_width_m, 1.3);
   EXPECT_DOUBLE_EQ(settings.doorway.speed, 0.6);
-  EXPECT_TRUE(settings.blocked_passage_on_sight);
+  EXPECT_EQ(settings.blocked_passage_on_sight, GapReportScope::NearPushedObjects);
   EXPECT_DOUBLE_EQ(settings.gap_report_repeat_s, 2.0);
 }
 
@@ -54,6 +54,26 @@ TEST(ExecutiveSettings, DoorwaySearchThatStartsBeyondItsEndNamesTheKey)
   } catch (const common::ConfigError& error) {
     EXPECT_NE(std::string(error.what()).find("doorway.min_ahead_m"), std::string::npos) << error.what();
     EXPECT_NE(std::string(error.what()).find("less than doorway.look_ahead_m"), std::string::npos)
+        << error.what();
+  }
+}
+
+TEST(ExecutiveSettings, AnUnknownGapReportScopeNamesTheKeyAndTheChoices)
+{
+  std::ifstream file(kConfigPath);
+  ASSERT_TRUE(file.good()) << kConfigPath;
+  std::stringstream original;
+  original << file.rdbuf();
+  std::string text = original.str();
+  const std::string key = "blocked_passage_on_sight: near_pushed_objects";
+  ASSERT_NE(text.find(key), std::string::npos);
+  text.replace(text.find(key), key.size(), "blocked_passage_on_sight: true");
+  try {
+    loadExecutiveSettings(common::ConfigNode::loadString(text, "scope.yaml"));
+    FAIL() << "accepted blocked_passage_on_sight: true";
+  } catch (const common::ConfigError& error) {
+    EXPECT_NE(std::string(error.what()).find("blocked_passage_on_sight"), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find("off, near_pushed_objects or everywhere"), std::string::npos)
         << error.what();
   }
 }

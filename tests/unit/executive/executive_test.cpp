@@ -320,7 +320,10 @@ std::optional<BlockedPassage> ExecutiveTest::driveAtNarrowGap(Executive& executi
 TEST_F(ExecutiveTest, AGapTooNarrowAheadIsReportedOnSightOncePerRepeatInterval)
 {
   // A 0.72 m gap 1.5 m ahead: narrower than the vehicle and 5 cm either side. Reported on the first
-  // cycle, before the vehicle gets there, toward the path point 1 m beyond the gap.
+  // cycle, before the vehicle gets there, toward the path point 1 m beyond the gap (everywhere: no
+  // object has been pushed here).
+  settings_.blocked_passage_on_sight = GapReportScope::Everywhere;
+  Executive executive(settings_, vehicle_);
   const std::vector<Point> walls = doorWalls(0.72);
   Path path = straightPath();
   path.waypoints = {waypoint(0.0, -1.5), waypoint(0.0, 1.5)};
@@ -331,7 +334,7 @@ TEST_F(ExecutiveTest, AGapTooNarrowAheadIsReportedOnSightOncePerRepeatInterval)
     now_us_ += kCycleUs;
     Inputs inputs = freshInputs(now_us_, path);
     inputs.obstacles = Stamped<std::vector<Point>>{walls, now_us_};
-    const Output output = executive_.step(now_us_, inputs);
+    const Output output = executive.step(now_us_, inputs);
     if (output.blocked_passage) {
       reported_us.push_back(now_us_);
       if (!first) {
@@ -360,20 +363,63 @@ TEST_F(ExecutiveTest, AGapTooNarrowAheadIsReportedOnSightOncePerRepeatInterval)
 
 TEST_F(ExecutiveTest, AGapTheVehicleFitsThroughIsNotReportedOnSight)
 {
+  settings_.blocked_passage_on_sight = GapReportScope::Everywhere;
+  Executive executive(settings_, vehicle_);
   const std::vector<Point> walls = doorWalls(1.0);
   Path path = straightPath();
   path.waypoints = {waypoint(0.0, -1.5), waypoint(0.0, 1.5)};
   pose_ = Pose2{0.0, -1.5, 0.5 * M_PI};
   Inputs inputs = freshInputs(now_us_ + kCycleUs, path);
   inputs.obstacles = Stamped<std::vector<Point>>{walls, now_us_ + kCycleUs};
-  EXPECT_FALSE(executive_.step(now_us_ + kCycleUs, inputs).blocked_passage);
+  EXPECT_FALSE(executive.step(now_us_ + kCycleUs, inputs).blocked_passage);
+}
+
+TEST_F(ExecutiveTest, OnlyAGapBesideAnObjectThisExecutivePushedIsReportedOnSightByDefault)
+{
+  // pushPath's object 9 is expected at (3.1, 0) after its push. Once the push has finished, a 0.72 m
+  // gap across the rest of the path at x = 3.6, its posts 0.62 m from the object, is reported at once.
+  // The same gap ahead of an executive that has pushed nothing is left to the follower and the stalls.
+  ASSERT_EQ(settings_.blocked_passage_on_sight, GapReportScope::NearPushedObjects);
+  Path path = pushPath();
+  path.push_plans[0].controls[0].expected_object_pose = {3.1, 0.0, 0.0};
+  std::vector<Point> gap_across_x;  // doorWalls turned to run along y at x = 3.6 .. 3.8
+  for (const Point& point : doorWalls(0.72)) {
+    gap_across_x.emplace_back(3.6 + point.y(), -point.x());
+  }
+
+  Executive pushed_nothing(settings_, vehicle_);
+  pose_ = {2.4, 0.0, 0.0};
+  Inputs inputs = freshInputs(now_us_ + kCycleUs, straightPath());
+  inputs.path->value.waypoints = {waypoint(2.4, 0.0), waypoint(5.0, 0.0)};
+  inputs.obstacles = Stamped<std::vector<Point>>{gap_across_x, now_us_ + kCycleUs};
+  EXPECT_FALSE(pushed_nothing.step(now_us_ + kCycleUs, inputs).blocked_passage);
+
+  pose_ = {-2.0, 0.0, 0.0};
+  Output output;
+  for (int cycle = 0; cycle < 3000 && output.status.pushes == 0; ++cycle) {
+    output = run(1, path, executive_.mode() == Mode::Push ? 100.0 : 0.0);
+    ASSERT_FALSE(output.blocked_passage) << "no walls yet";
+  }
+  ASSERT_EQ(output.status.pushes, 1) << output.status.reason;
+  ASSERT_LT(pose_.x, 3.0) << "the vehicle is still before the gap";
+  // The planner's next path, the object moved: from the vehicle on to the goal.
+  Path replanned = straightPath(2);
+  replanned.waypoints = {waypoint(pose_.x, pose_.y), waypoint(5.0, 0.0)};
+  now_us_ += kCycleUs;
+  inputs = freshInputs(now_us_, replanned);
+  inputs.obstacles = Stamped<std::vector<Point>>{gap_across_x, now_us_};
+  output = executive_.step(now_us_, inputs);
+  ASSERT_TRUE(output.blocked_passage);
+  EXPECT_EQ(output.blocked_passage->stalls, 0);
+  EXPECT_NE(output.blocked_passage->text.find("gap of 0.72 m"), std::string::npos)
+      << output.blocked_passage->text;
 }
 
 TEST_F(ExecutiveTest, StallingAgainAndAgainAtAGapTooNarrowReportsTheBlockedPassage)
 {
   // The third stall within 1 m, toward the same waypoint, reports the passage (the report on sight off,
   // as where the obstacle points do not show the gap narrow).
-  settings_.blocked_passage_on_sight = false;
+  settings_.blocked_passage_on_sight = GapReportScope::Off;
   Executive executive(settings_, vehicle_);
   int stalls = 0;
   const std::optional<BlockedPassage> reported = driveAtNarrowGap(executive, 100, stalls);
@@ -393,7 +439,7 @@ TEST_F(ExecutiveTest, ABlockedPassageOnALongLegIsReportedTowardThePathPointAFewM
 {
   // The planner seals the narrowest point between `from` and `to`: with the waypoint 20 m on, that
   // could be anywhere along the leg; 2.5 m along the path keeps it at the gap the vehicle stalled in.
-  settings_.blocked_passage_on_sight = false;
+  settings_.blocked_passage_on_sight = GapReportScope::Off;
   Executive executive(settings_, vehicle_);
   int stalls = 0;
   const std::optional<BlockedPassage> reported = driveAtNarrowGap(executive, 100, stalls, 20.0);
@@ -406,7 +452,7 @@ TEST_F(ExecutiveTest, ABlockedPassageOnALongLegIsReportedTowardThePathPointAFewM
 TEST_F(ExecutiveTest, BlockedPassageReportsCanBeTurnedOff)
 {
   settings_.blocked_passage_stalls = 0;
-  settings_.blocked_passage_on_sight = false;
+  settings_.blocked_passage_on_sight = GapReportScope::Off;
   Executive executive(settings_, vehicle_);
   int stalls = 0;
   EXPECT_FALSE(driveAtNarrowGap(executive, 4, stalls));
