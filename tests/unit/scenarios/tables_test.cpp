@@ -107,5 +107,28 @@ TEST(TableTwo, DrivenSplIsAlsoGivenAgainstWhatTheWorldAllows)
       << table;
 }
 
+TEST(TableTwo, DrivenSplIsAlsoGivenForTheArrivalsWithinAStricterBudget)
+{
+  // Two office runs of ours, 90 m optima: one arrived at 200 s (within 60 s + 2 s/m = 240 s), one at
+  // 300 s (within the runner's 60 s + 4 s/m = 420 s only).
+  ResultRow early = row("system", "ours", "office", true, 100.0, 90.0, 1.0);
+  early.sim_time_s = 200.0;
+  ResultRow late = row("system", "ours", "office", true, 90.0, 90.0, 1.0);
+  late.task = "t1";
+  late.sim_time_s = 300.0;
+  SimTimeBudget stricter;
+  stricter.per_metre_s = 2.0;
+  EXPECT_DOUBLE_EQ(stricter.seconds(90.0), 240.0);
+  const std::string table = tableTwoSpl({early, late}, stricter);
+  EXPECT_NE(table.find("| ours (driven) | not run | not run | 0.950 (2/2) | not run | not run |"),
+            std::string::npos)
+      << table;
+  EXPECT_NE(table.find("| ours (driven, arrived within 60 s + 2 s/m) | not run | not run | 0.450 (1/2) | not "
+                       "run | not run |"),
+            std::string::npos)
+      << table;
+  EXPECT_EQ(tableTwoSpl({early, late}).find("arrived within"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace ifar::scenarios
