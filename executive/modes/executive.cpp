@@ -405,9 +405,9 @@ void Executive::reportImpassableGap(Cycle& cycle)
   if (!gap) {
     return;
   }
-  // A static gap the follower may still find a way past by itself (furniture seen at a slant looks
-  // narrower than it is); a pushed object left across a corridor is what the planner's inflation cannot
-  // see through, and what costs a stall series per lane beside it.
+  // Static gaps are left to the follower, which drives round many of them locally (Willow's furniture:
+  // each one reported was sealed and changed the route); a pushed object left across a corridor leaves
+  // lanes the planner's inflation shows open, each costing a stall series to report.
   if (scope == GapReportScope::NearPushedObjects && !besidePushedObject(*gap)) {
     return;
   }
