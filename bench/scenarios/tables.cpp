@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "bench/scenarios/scenario_kind.hpp"
 #include "bench/scenarios/search_suite.hpp"
@@ -54,10 +57,17 @@ std::vector<const ResultRow*> select(const std::vector<ResultRow>& rows, const s
   return selected;
 }
 
-int successes(const std::vector<const ResultRow*>& rows)
+/// A success, and with `within` one that also arrived within that budget (driven rows).
+bool succeeded(const ResultRow& row, const std::optional<SimTimeBudget>& within)
 {
-  return static_cast<int>(
-      std::count_if(rows.begin(), rows.end(), [](const ResultRow* row) { return row->success; }));
+  return row.success && (!within || row.sim_time_s <= within->seconds(row.optimal));
+}
+
+int successes(const std::vector<const ResultRow*>& rows,
+              const std::optional<SimTimeBudget>& within = std::nullopt)
+{
+  return static_cast<int>(std::count_if(rows.begin(), rows.end(),
+                                        [&within](const ResultRow* row) { return succeeded(*row, within); }));
 }
 
 double medianMs(const std::vector<const ResultRow*>& rows)
@@ -71,16 +81,18 @@ double medianMs(const std::vector<const ResultRow*>& rows)
   return nearestRankPercentile(times, 50.0);
 }
 
-/// Mean SPL against the ground truth, or (`achievable`) against Task::achievable.
-double meanSpl(const std::vector<const ResultRow*>& rows, bool achievable = false)
+/// Mean SPL against the ground truth, or (`achievable`) against Task::achievable; with `within`,
+/// an arrival later than that budget counts as a failure.
+double meanSpl(const std::vector<const ResultRow*>& rows, bool achievable = false,
+               const std::optional<SimTimeBudget>& within = std::nullopt)
 {
   if (rows.empty()) {
     return NAN;
   }
   double sum = 0.0;
   for (const ResultRow* row : rows) {
-    sum +=
-        successWeightedByPathLength(row->success, achievable ? row->achievable : row->optimal, row->length);
+    sum += successWeightedByPathLength(succeeded(*row, within), achievable ? row->achievable : row->optimal,
+                                       row->length);
   }
   return sum / static_cast<double>(rows.size());
 }
@@ -176,9 +188,19 @@ std::string tableTwoSpl(const std::vector<ResultRow>& rows, const std::optional<
     text += "\n";
   }
   const bool runner = anyRunnerRows(rows);
-  for (const bool achievable : {false, true}) {
+  struct DrivenVariant {
+    std::string label;
+    bool achievable;
+    std::optional<SimTimeBudget> within;
+  };
+  std::vector<DrivenVariant> variants{{" (driven)", false, std::nullopt},
+                                      {" (driven, vs achievable)", true, std::nullopt}};
+  if (stricter && runner) {
+    variants.push_back({" (driven, arrived within " + stricter->describe() + ")", false, stricter});
+  }
+  for (const DrivenVariant& variant : variants) {
     for (const std::string planner : {"far", "ours"}) {
-      text += "| " + planner + (achievable ? " (driven, vs achievable)" : " (driven)") + " |";
+      text += "| " + planner + variant.label + " |";
       for (const ScenarioKind kind : allKinds()) {
         const auto selected = select(rows, "system", planner, kindName(kind));
         if (!runner) {
@@ -186,33 +208,10 @@ std::string tableTwoSpl(const std::vector<ResultRow>& rows, const std::optional<
         } else if (selected.empty()) {
           text += " not run |";
         } else {
-          text += " " + fixed(meanSpl(selected, achievable), 3) + " (" + std::to_string(successes(selected)) +
-                  "/" + std::to_string(selected.size()) + ") |";
+          text += " " + fixed(meanSpl(selected, variant.achievable, variant.within), 3) + " (" +
+                  std::to_string(successes(selected, variant.within)) + "/" +
+                  std::to_string(selected.size()) + ") |";
         }
-      }
-      text += "\n";
-    }
-  }
-  if (stricter && runner) {
-    for (const std::string planner : {"far", "ours"}) {
-      text += "| " + planner + " (driven, arrived within " + stricter->describe() + ") |";
-      for (const ScenarioKind kind : allKinds()) {
-        const auto selected = select(rows, "system", planner, kindName(kind));
-        if (selected.empty()) {
-          text += " not run |";
-          continue;
-        }
-        std::vector<ResultRow> within;
-        for (const ResultRow* row : selected) {
-          within.push_back(*row);
-          within.back().success = row->success && row->sim_time_s <= stricter->seconds(row->optimal);
-        }
-        std::vector<const ResultRow*> within_rows;
-        for (const ResultRow& row : within) {
-          within_rows.push_back(&row);
-        }
-        text += " " + fixed(meanSpl(within_rows), 3) + " (" + std::to_string(successes(within_rows)) + "/" +
-                std::to_string(within_rows.size()) + ") |";
       }
       text += "\n";
     }
