@@ -160,8 +160,10 @@ PushPlanner::PushPlanner(const PushProblemObject& problem, const PusherSettings&
     }
   }
 
+  // Beyond the farthest a push takes the object (its centroid stays within search_radius_m), so a
+  // corridor it is pushed along is still closed at the raster's edge.
   Bounds surroundings = boundsOf(problem.object);
-  const double reach = surroundingsReach(limits, search);
+  const double reach = std::max(limits.window_margin_m, search.search_radius_m + 1.0);
   surroundings.minimum -= Point::Constant(reach);
   surroundings.maximum += Point::Constant(reach);
   surroundings_.emplace(surroundings, kSurroundingsResolutionM);
@@ -475,17 +477,12 @@ PushPlan PushPlanner::plan(const Point& start, const Point& goal) const
     }
     return control;
   };
-  // An object pose no push may reach: in an obstacle, or beyond the search radius, where the object would
-  // leave the surroundings the onward check sees (a box pushed on along a corridor would look as if it had
-  // left the corridor).
-  const auto ruledOut = [&](const Pose2& pose) {
-    return (pose.position() - model_.pose.position()).norm() > search_.search_radius_m ||
-           objectCollides(pose);
-  };
   const auto pushAllowed = [&](const std::function<Pose2(double)>& along_motion, double distance) {
     const int steps = std::max(1, static_cast<int>(std::ceil(distance / search_.collision_step_m)));
     for (int step = 1; step <= steps; ++step) {
-      if (ruledOut(along_motion(distance * step / steps))) {
+      const Pose2 pose = along_motion(distance * step / steps);
+      if ((pose.position() - model_.pose.position()).norm() > search_.search_radius_m ||
+          objectCollides(pose)) {
         return false;
       }
     }
@@ -542,7 +539,7 @@ PushPlan PushPlanner::plan(const Point& start, const Point& goal) const
       for (int step = 1; step <= steps; ++step) {
         const double distance = step * search_.collision_step_m;
         const Pose2 pose = straightPose(current.pose, current.edge, distance);
-        if (ruledOut(pose)) {
+        if (objectCollides(pose)) {
           break;
         }
         if (goalReached(pose, passage)) {
