@@ -293,9 +293,7 @@ FrameResult Planner::processFrame(const FrameInput& frame)
     }
     if (region_minimum.allFinite()) {
       // Everything the connectivity window and the push search can reach around the objects.
-      const interaction::InteractionSettings& planning = settings_.interaction;
-      const double margin = std::max(planning.connectivity.window_margin_m, planning.search.search_radius_m) +
-                            planning.pusher.bumper_to_axle_m + planning.pusher.inflation_m;
+      const double margin = interaction::sceneMargin(settings_.interaction);
       interaction_frame.scene.background = occupancyRectangles(
           grid, perceived.layer.background_occupancy, region_minimum - geometry::Point::Constant(margin),
           region_maximum + geometry::Point::Constant(margin));

@@ -1,5 +1,7 @@
 #include "planner/interaction/interaction_settings.hpp"
 
+#include <algorithm>
+
 namespace ifar::interaction {
 
 PusherSettings PusherSettings::fromVehicle(const common::VehicleSettings& vehicle)
@@ -11,6 +13,17 @@ PusherSettings PusherSettings::fromVehicle(const common::VehicleSettings& vehicl
   pusher.inflation_m = vehicle.width_m / 2.0;
   pusher.max_push_force_n = vehicle.maxPushForce();
   return pusher;
+}
+
+double surroundingsReach(const ConnectivitySettings& connectivity, const SearchSettings& search)
+{
+  return std::max(connectivity.window_margin_m, search.search_radius_m + 1.0);
+}
+
+double sceneMargin(const InteractionSettings& settings)
+{
+  return surroundingsReach(settings.connectivity, settings.search) + settings.pusher.bumper_to_axle_m +
+         settings.pusher.inflation_m;
 }
 
 }  // namespace ifar::interaction

@@ -84,4 +84,14 @@ struct InteractionSettings {
   PlanningLoopSettings loop;
 };
 
+/// How far beyond the pushed object's bounds the push search's onward check looks: past the farthest a
+/// push takes the object (its centroid stays within search_radius_m), so a corridor it is pushed along is
+/// still closed at the edge of what is checked.
+double surroundingsReach(const ConnectivitySettings& connectivity, const SearchSettings& search);
+
+/// How far beyond the objects' bounds the scene's background must reach: the surroundings, plus the
+/// vehicle standing behind an object pushed to their edge. A scene cut off closer leaves open space
+/// along the surroundings' edge, through which every side of the object looks connected.
+double sceneMargin(const InteractionSettings& settings);
+
 }  // namespace ifar::interaction

@@ -160,10 +160,8 @@ PushPlanner::PushPlanner(const PushProblemObject& problem, const PusherSettings&
     }
   }
 
-  // Beyond the farthest a push takes the object (its centroid stays within search_radius_m), so a
-  // corridor it is pushed along is still closed at the raster's edge.
   Bounds surroundings = boundsOf(problem.object);
-  const double reach = std::max(limits.window_margin_m, search.search_radius_m + 1.0);
+  const double reach = surroundingsReach(limits, search);
   surroundings.minimum -= Point::Constant(reach);
   surroundings.maximum += Point::Constant(reach);
   surroundings_.emplace(surroundings, kSurroundingsResolutionM);
@@ -292,9 +290,11 @@ void PushPlanner::findOutlets(Passage& passage) const
       unmoved.labelComponents(FreeSpaceRaster::kObstacle | FreeSpaceRaster::kMovable, components);
   const auto start_cell = unmoved.nearestLabelled(passage.segment.start, labels, waypointSearchCells());
   const auto goal_cell = unmoved.nearestLabelled(passage.segment.end, labels, waypointSearchCells());
-  if (!start_cell || !goal_cell || labels[*start_cell] == labels[*goal_cell]) {
-    return;  // nothing the object separates here: the segment test decides alone
+  if (!start_cell || !goal_cell) {
+    return;
   }
+  // The waypoints may share one component, joined round the object (through a room, or a stretch of
+  // wall not seen yet): a push can still close the way on beyond them, so their outlets count all the same.
   // Each stretch of free edge cells is an outlet of its own: a push that closes the corridor on one
   // side of the object while a side room keeps the same side open still cuts a way on.
   const std::vector<std::size_t> ring = unmoved.borderCells();
@@ -477,12 +477,17 @@ PushPlan PushPlanner::plan(const Point& start, const Point& goal) const
     }
     return control;
   };
+  // An object pose no push may reach: in an obstacle, or beyond the search radius, where the object would
+  // leave the surroundings the onward check sees (a box pushed on along a corridor would look as if it had
+  // left the corridor).
+  const auto ruledOut = [&](const Pose2& pose) {
+    return (pose.position() - model_.pose.position()).norm() > search_.search_radius_m ||
+           objectCollides(pose);
+  };
   const auto pushAllowed = [&](const std::function<Pose2(double)>& along_motion, double distance) {
     const int steps = std::max(1, static_cast<int>(std::ceil(distance / search_.collision_step_m)));
     for (int step = 1; step <= steps; ++step) {
-      const Pose2 pose = along_motion(distance * step / steps);
-      if ((pose.position() - model_.pose.position()).norm() > search_.search_radius_m ||
-          objectCollides(pose)) {
+      if (ruledOut(along_motion(distance * step / steps))) {
         return false;
       }
     }
@@ -539,7 +544,7 @@ PushPlan PushPlanner::plan(const Point& start, const Point& goal) const
       for (int step = 1; step <= steps; ++step) {
         const double distance = step * search_.collision_step_m;
         const Pose2 pose = straightPose(current.pose, current.edge, distance);
-        if (objectCollides(pose)) {
+        if (ruledOut(pose)) {
           break;
         }
         if (goalReached(pose, passage)) {

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -143,6 +145,18 @@ TEST(PushSearchTest, WallBehindTheDoorForcesATurnedPush)
   }
 }
 
+/// The lowest and highest y of `footprint` placed at `pose`.
+std::pair<double, double> spanInY(const geometry::Polygon& footprint, const Pose2& pose)
+{
+  double low = std::numeric_limits<double>::infinity();
+  double high = -std::numeric_limits<double>::infinity();
+  for (const Point& vertex : footprint) {
+    low = std::min(low, pose.transform(vertex).y());
+    high = std::max(high, pose.transform(vertex).y());
+  }
+  return {low, high};
+}
+
 TEST(PushSearchTest, ABoxIsNotPushedAlongACorridorItWouldCloseFurtherOn)
 {
   // The segment between the waypoints clears after a straight push of a metre or two, but the box then
@@ -162,12 +176,7 @@ TEST(PushSearchTest, ABoxIsNotPushedAlongACorridorItWouldCloseFurtherOn)
       }
       ++found;
       const Pose2 end = pair.plan.controls.back().object_pose;
-      double low = std::numeric_limits<double>::infinity();
-      double high = -std::numeric_limits<double>::infinity();
-      for (const Point& vertex : pair.plan.footprint) {
-        low = std::min(low, end.transform(vertex).y());
-        high = std::max(high, end.transform(vertex).y());
-      }
+      const auto [low, high] = spanInY(pair.plan.footprint, end);
       const bool beside_wall = std::abs(end.x) < 0.8;  // still in the door's wall: the lane is the door
       EXPECT_TRUE(beside_wall || low >= lane - 0.03 || 2.5 - high >= lane - 0.03)
           << "box ends at (" << end.x << ", " << end.y << ", " << end.heading << ") spanning y " << low
@@ -189,6 +198,107 @@ TEST(PushSearchTest, ABoxIsNotPushedAlongACorridorItWouldCloseFurtherOn)
     EXPECT_TRUE(
         std::all_of(pair.plan.controls.begin(), pair.plan.controls.end(),
                     [](const PushControl& control) { return control.kind == ControlKind::Straight; }));
+  }
+}
+
+TEST(PushSearchTest, AWayRoundTheFireDoorDoesNotLetTheBoxCloseTheCorridorBeyondIt)
+{
+  // Through the room the two sides of the fire door are one space in the surroundings. The check once
+  // stopped there ("nothing separated"), and a straight push east that closes the corridor beyond the
+  // room's door passed (in the office, stretches of wall not yet seen joined the rooms either side).
+  const InteractionSettings settings = defaultSettings();
+  const double lane = 2.0 * settings.pusher.inflation_m + settings.search.passage_margin_m;
+  const ObjectInteractions result =
+      planObjectInteractions(test::fireDoorBesideARoomScene(), 0, ObjectPhysics{0.4, 20.0}, settings);
+  ASSERT_EQ(result.connectivity.waypoints.size(), 2U);
+  ASSERT_EQ(result.plans.size(), 2U);
+  for (const PairPlan& pair : result.plans) {
+    const bool eastward = result.connectivity.waypoints[pair.pair.from].position.x() < 0.0;
+    if (!eastward) {
+      // West, the box may close the corridor: the room's doors lead round it to the corridor beyond.
+      EXPECT_EQ(pair.plan.status, PlanStatus::Found) << toString(pair.plan.status);
+      continue;
+    }
+    ASSERT_EQ(pair.plan.status, PlanStatus::Found) << toString(pair.plan.status);
+    const Pose2 end = pair.plan.controls.back().object_pose;
+    const auto [low, high] = spanInY(pair.plan.footprint, end);
+    EXPECT_TRUE(low >= lane - 0.03 || 2.5 - high >= lane - 0.03)
+        << "box ends at (" << end.x << ", " << end.y << ", " << end.heading << ") spanning y " << low
+        << " .. " << high;
+  }
+}
+
+/// A 3.6 m x 1.2 m box across a 4 m corridor running south from an east-west corridor (y 1.4 .. 5.4, as in
+/// the generated tunnel), inflated like the planner's scene; each wall is cut off `margin` beyond the box.
+LocalScene boxAcrossACorridorScene(double margin)
+{
+  const double inflation = 0.35;
+  const geometry::Polygon box =
+      rectangle(-1.8 - inflation, -0.6 - inflation, 1.8 + inflation, 0.6 + inflation);
+  const double low_x = -1.8 - inflation - margin;
+  const double high_x = 1.8 + inflation + margin;
+  const double low_y = -0.6 - inflation - margin;
+  const double high_y = 0.6 + inflation + margin;
+  LocalScene scene;
+  scene.background = {rectangle(low_x, low_y, -2.0 + inflation, 1.4 + inflation),
+                      rectangle(2.0 - inflation, low_y, high_x, 1.4 + inflation),
+                      rectangle(low_x, 5.4 - inflation, high_x, high_y)};
+  scene.movable = {box};
+  return scene;
+}
+
+/// The plans that push the box from the junction (north) down the corridor (south).
+std::vector<PushPlan> plansDownTheCorridor(const ObjectInteractions& interactions)
+{
+  std::vector<PushPlan> down;
+  for (const PairPlan& pair : interactions.plans) {
+    const Point from = interactions.connectivity.waypoints[pair.pair.from].position;
+    const Point to = interactions.connectivity.waypoints[pair.pair.to].position;
+    if (from.y() > to.y()) {
+      down.push_back(pair.plan);
+    }
+  }
+  return down;
+}
+
+TEST(PushSearchTest, TheStraightPushToTheGoalKeepsTheObjectWithinTheSearchRadius)
+{
+  // Walls far beyond the search: only the search radius keeps the box near enough for the onward check to
+  // see that it still closes the corridor. The straight push tried towards the goal once went 7 m down.
+  const InteractionSettings settings = defaultSettings();
+  const ObjectInteractions result =
+      planObjectInteractions(boxAcrossACorridorScene(40.0), 0, ObjectPhysics{0.5, 32.0}, settings);
+  ASSERT_EQ(result.connectivity.waypoints.size(), 2U);
+  for (const PairPlan& pair : result.plans) {
+    for (const PushControl& control : pair.plan.controls) {
+      EXPECT_LE(control.object_pose.position().norm(), settings.search.search_radius_m + 1e-9)
+          << toString(pair.plan.status);
+    }
+  }
+  const std::vector<PushPlan> down = plansDownTheCorridor(result);
+  ASSERT_EQ(down.size(), 1U);
+  EXPECT_NE(down.front().status, PlanStatus::Found) << "a push of 4 m or less leaves the corridor closed";
+}
+
+TEST(PushSearchTest, WallsCutOffAtTheSceneMarginStillCloseTheCorridor)
+{
+  // The planner hands the interaction planner its walls only out to sceneMargin round the objects. Cut
+  // off nearer than the onward check looks, free space ran round the check's edge, both sides of the
+  // box looked connected, and a 2 m push down the corridor counted as opening it (in the tunnel, 22
+  // pushes 40 m down a corridor, each planned as the last).
+  const InteractionSettings settings = defaultSettings();
+  ASSERT_GT(sceneMargin(settings), surroundingsReach(settings.connectivity, settings.search));
+  const ObjectInteractions result = planObjectInteractions(boxAcrossACorridorScene(sceneMargin(settings)), 0,
+                                                           ObjectPhysics{0.5, 32.0}, settings);
+  ASSERT_EQ(result.connectivity.waypoints.size(), 2U);
+  const std::vector<PushPlan> down = plansDownTheCorridor(result);
+  ASSERT_EQ(down.size(), 1U);
+  EXPECT_NE(down.front().status, PlanStatus::Found) << "pushed on down the corridor";
+  // Into the junction the box can go: it leaves a lane beside it there.
+  for (const PairPlan& pair : result.plans) {
+    if (result.connectivity.waypoints[pair.pair.from].position.y() < 0.0) {
+      EXPECT_EQ(pair.plan.status, PlanStatus::Found) << toString(pair.plan.status);
+    }
   }
 }
 

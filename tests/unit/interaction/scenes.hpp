@@ -74,4 +74,18 @@ inline LocalScene fireDoorWithSideDoorScene()
   return scene;
 }
 
+/// The fire door with a room along the corridor's north side (wall real 2.5 < y < 2.6), its doors at
+/// real -4.8 < x < -3.6 (west of the fire door, beyond the connectivity window but within the push
+/// search's surroundings) and 0.6 < x < 1.6 (just east of the fire door): the two sides of the fire door
+/// are joined round it through the room, yet a box pushed straight east past the room's east door closes
+/// the corridor beyond it.
+inline LocalScene fireDoorBesideARoomScene()
+{
+  LocalScene scene = fireDoorScene();
+  scene.background[1] = rectangle(-8.0, 2.15, -4.45, 2.95);
+  scene.background.push_back(rectangle(-3.95, 2.15, 0.95, 2.95));
+  scene.background.push_back(rectangle(1.25, 2.15, 8.0, 2.95));
+  return scene;
+}
+
 }  // namespace ifar::interaction::test
