@@ -37,6 +37,7 @@
 #include "bench/scenarios/task_selection.hpp"
 #include "common/config.hpp"
 #include "common/vehicle.hpp"
+#include "planner/interaction/settings_loader.hpp"
 #include "sim/world/world_file.hpp"
 
 namespace {
@@ -322,6 +323,23 @@ int main(int argc, char** argv)
   map_settings.vehicle = vehicle;
   map_settings.inflation_m = 0.5 * vehicle.width_m;
   map_settings.interaction.pusher = ifar::interaction::PusherSettings::fromVehicle(vehicle);
+  // The planned rows of ours search with the interaction settings the driven runs use.
+  const std::string planner_path = config_dir + "/planner.yaml";
+  if (std::ifstream(planner_path).good()) {
+    try {
+      const ifar::common::ConfigNode planner_root = ifar::common::ConfigNode::loadFile(planner_path);
+      if (planner_root.has("interaction")) {
+        const ifar::common::ConfigNode interaction = planner_root.child("interaction");
+        interaction.optional<bool>("enabled", true);  // the suite runs FAR mode and ours either way
+        map_settings.interaction = ifar::interaction::loadInteractionSettings(interaction, vehicle);
+      }
+    } catch (const std::exception& error) {
+      std::cerr << "ifar bench: " << error.what() << "\n";
+      return 1;
+    }
+  } else {
+    std::cerr << "ifar bench: " << planner_path << " not found, using the default interaction settings\n";
+  }
 
   // Read before the search part, so a bad runner config stops the suite at once, and only once.
   std::unique_ptr<scenarios::SystemRunner> runner;
