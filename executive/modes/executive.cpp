@@ -804,6 +804,37 @@ void Executive::guardCommand(Cycle& cycle, common::Span<const geometry::Point> o
   }
 }
 
+void Executive::guardedEscape(Cycle& cycle, double linear,
+                              common::Span<const geometry::Point> obstacles) const
+{
+  const std::string reason = cycle.reason;
+  cycle.desired = {linear, 0.0};
+  guardCommand(cycle, obstacles);
+  if (!cycle.desired.isZero()) {
+    return;
+  }
+  const std::string stopped = cycle.reason;
+  // A gentle arc (half the approach's turning rate) before a tight one (its full rate), each turning first
+  // the way the follower wants to face.
+  const std::optional<double> wanted = stallTurnHeading(cycle);
+  const double first_sign = wanted && wrapToPi(*wanted - cycle.pose.heading) < 0.0 ? -1.0 : 1.0;
+  const double max_rate = settings_.approach.control.max_angular_velocity;
+  for (const double rate : {0.5 * max_rate, max_rate}) {
+    for (const double sign : {first_sign, -first_sign}) {
+      cycle.reason = reason;
+      cycle.desired = {linear, sign * rate};
+      guardCommand(cycle, obstacles);
+      if (!cycle.desired.isZero()) {
+        cycle.reason +=
+            fmt::format(" (on an arc turning {}: straight is blocked)", sign > 0.0 ? "left" : "right");
+        return;
+      }
+    }
+  }
+  cycle.reason = stopped;
+  cycle.desired = {};
+}
+
 double Executive::freeStraightDistance(const geometry::Pose2& pose, double sign,
                                        common::Span<const geometry::Point> obstacles, double limit_m) const
 {
@@ -930,8 +961,7 @@ void Executive::stepBackOff(Cycle& cycle)
     cycle.reason = fmt::format(
         "stalled for {:.1f} s: {} before following again: {:.2f} of {:.2f} m", settings_.stall_timeout_s,
         stall_escape_sign_ < 0.0 ? "backing up" : "driving ahead", travelled, settings_.pusher.release_m);
-    cycle.desired = {stall_escape_sign_ * settings_.pusher.reverse_speed, 0.0};
-    guardCommand(cycle, cycle.obstacles);
+    guardedEscape(cycle, stall_escape_sign_ * settings_.pusher.reverse_speed, cycle.obstacles);
     if (cycle.desired.isZero()) {
       // Hemmed in (the chosen way closed): follow again from here rather than wait.
       task_ = Task::Follow;
@@ -941,10 +971,14 @@ void Executive::stepBackOff(Cycle& cycle)
     }
     return;
   }
-  cycle.desired = {-settings_.pusher.reverse_speed, 0.0};
   cycle.reason = fmt::format("backing away from object {} before following the new path: {:.2f} of {:.2f} m",
                              active_plan_.object_id, travelled, settings_.pusher.release_m);
-  guardCommand(cycle, objectFreeObstacles(cycle));
+  guardedEscape(cycle, -settings_.pusher.reverse_speed, objectFreeObstacles(cycle));
+  if (cycle.desired.isZero()) {
+    // Hemmed in behind: follow the new path from here (its stall recovery tries ahead too) rather than wait.
+    task_ = Task::Follow;
+    stall_anchor_us_ = -1;
+  }
 }
 
 void Executive::stepReplanWait(Cycle& cycle)

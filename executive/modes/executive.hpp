@@ -118,6 +118,10 @@ class Executive {
   common::Span<const geometry::Point> objectFreeObstacles(const Cycle& cycle);
   /// Stops `cycle.desired` when it drives the footprint toward a point closer than the guard clearance.
   void guardCommand(Cycle& cycle, common::Span<const geometry::Point> obstacles) const;
+  /// Sets `cycle.desired` to driving straight at `linear` m/s, or, when the guard stops that, along the
+  /// first free arc of the same speed (gentle before tight, turning first toward the way on); zero when
+  /// every one is guarded. Wedged at a slant, straight back closes in on a wall that an arc clears.
+  void guardedEscape(Cycle& cycle, double linear, common::Span<const geometry::Point> obstacles) const;
   /// How far (up to `limit_m`) the vehicle can drive straight from `pose` (sign -1 back, +1 ahead)
   /// without its footprint coming within the guard clearance of a point it is not already that close to.
   double freeStraightDistance(const geometry::Pose2& pose, double sign,

@@ -230,6 +230,85 @@ TEST_F(ExecutivePushObstaclesTest, AfterAnUnpushableObjectTheVehicleBacksAwayBef
   EXPECT_NE(output.status.reason.find("waypoint"), std::string::npos) << output.status.reason;
 }
 
+TEST_F(ExecutivePushObstaclesTest, WedgedAtASlantTheVehicleBacksAwayOnAnArc)
+{
+  Output output;
+  for (int index = 0; index < 500 && output.status.mode != Mode::Push; ++index) {
+    output = cycle({});
+  }
+  ASSERT_EQ(output.status.mode, Mode::Push);
+  for (int index = 0; index < 500 && output.status.mode != Mode::ReplanWait; ++index) {
+    output = cycle({}, 0.95 * vehicle_.maxPushForce());
+  }
+  ASSERT_EQ(output.status.mode, Mode::ReplanWait);
+  const Pose2 stalled = pose_;
+  // A wall behind the left side at a slant: 0.06 m off the rear-left corner, closing in on it by 0.5 m
+  // per metre the vehicle goes straight back (the Willow passage after a push that turned the vehicle).
+  const Footprint footprint = vehicleFootprint(vehicle_, settings_.reference_to_bumper_m);
+  std::vector<Point> wall;
+  for (int step = -20; step <= 40; ++step) {
+    const double back = step * 0.025;  // metres behind the rear face
+    wall.push_back(
+        stalled.transform(Point(-footprint.rear_m - back, footprint.half_width_m + 0.06 - 0.5 * back)));
+  }
+  path_.sequence = 2;
+  path_.utime = now_us_ + kCycleUs;
+  path_.push_plans.clear();
+  path_.waypoints = {waypoint(stalled.x, WaypointKind::Free), waypoint(6.0, WaypointKind::Free)};
+  path_.waypoints[1].position = Point(stalled.x, 2.0);
+
+  // Straight back is refused by the guard (it would bring the corner within its clearance of the wall):
+  output = cycle(wall, 0.0);
+  EXPECT_EQ(output.status.mode, Mode::Follow);
+  EXPECT_LT(output.command.linear, 0.0);
+  EXPECT_GT(output.command.angular, 0.0) << output.status.reason;  // the rear swings right, off the wall
+  EXPECT_NE(output.status.reason.find("backing away from object 9"), std::string::npos)
+      << output.status.reason;
+  EXPECT_NE(output.status.reason.find("on an arc turning left"), std::string::npos) << output.status.reason;
+  double closest = 1.0;
+  for (int index = 0; index < 200 && output.command.linear <= 0.0; ++index) {
+    output = cycle(wall, 0.0);
+    for (const Point& point : wall) {
+      closest = std::min(closest, footprint.distance(pose_, point));
+    }
+  }
+  EXPECT_GE((pose_.position() - stalled.position()).norm(), settings_.pusher.release_m - 0.02);
+  EXPECT_GT(closest, 0.04);
+  EXPECT_EQ(output.status.reason.find("backing away"), std::string::npos) << output.status.reason;
+}
+
+TEST_F(ExecutivePushObstaclesTest, HemmedInBehindTheVehicleFollowsTheNewPathAtOnce)
+{
+  Output output;
+  for (int index = 0; index < 500 && output.status.mode != Mode::Push; ++index) {
+    output = cycle({});
+  }
+  ASSERT_EQ(output.status.mode, Mode::Push);
+  for (int index = 0; index < 500 && output.status.mode != Mode::ReplanWait; ++index) {
+    output = cycle({}, 0.95 * vehicle_.maxPushForce());
+  }
+  ASSERT_EQ(output.status.mode, Mode::ReplanWait);
+  const Pose2 stalled = pose_;
+  // A wall square across the rear, 0.06 m behind it: no reverse arc keeps out of the guard's clearance.
+  const Footprint footprint = vehicleFootprint(vehicle_, settings_.reference_to_bumper_m);
+  std::vector<Point> wall;
+  for (int step = -30; step <= 30; ++step) {
+    wall.push_back(stalled.transform(Point(-footprint.rear_m - 0.06, step * 0.025)));
+  }
+  path_.sequence = 2;
+  path_.utime = now_us_ + kCycleUs;
+  path_.push_plans.clear();
+  path_.waypoints = {waypoint(stalled.x, WaypointKind::Free), waypoint(6.0, WaypointKind::Free)};
+  path_.waypoints[1].position = Point(stalled.x, 2.0);
+  output = cycle(wall, 0.0);
+  EXPECT_EQ(output.command.linear, 0.0);
+  EXPECT_NE(output.status.reason.find("stopped: obstacle"), std::string::npos) << output.status.reason;
+  // It does not wait there for ever (it did, until the run timed out): the next cycle follows.
+  output = cycle(wall, 0.0);
+  EXPECT_EQ(output.status.mode, Mode::Follow);
+  EXPECT_EQ(output.status.reason.find("backing away"), std::string::npos) << output.status.reason;
+}
+
 TEST_F(ExecutivePushObstaclesTest, ApproachEstimateIsTheObjectAtFirstContact)
 {
   const Output output = cycle({});
