@@ -349,6 +349,7 @@ void Planner::search(FrameResult& result)
   graph::RoutePreference preference;
   if (settings_.graph.route_preference > 0.0 && last_path_.valid && last_path_.goal_id == goal_->id) {
     preference.discount = settings_.graph.route_preference;
+    preference.cap_m = settings_.graph.route_preference_cap_m;
     for (const graph::PathPoint& point : last_path_.waypoints) {
       if (point.vertex != graph::kNoVertex) {
         preference.route.push_back(point.vertex);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace ifar::graph {
 namespace {
@@ -319,14 +320,23 @@ SearchResult AStarSearch::run(const SearchGraph& graph, const ObstacleSet& obsta
   const bool preferring = kept_fraction < 1.0 && preference.route.size() >= 2;
   if (preferring) {
     scratch.preferred_next_.assign(count, kNone);
+    scratch.preferred_budget_.assign(count, 0.0);
     const auto indexOf = [&](VertexId id) {
       return id < graph.index_of_.size() ? graph.index_of_[id] : kNone;
     };
+    // The cap is shared out along the route from its start: the arcs the vehicle takes next keep the
+    // route, a way that is shorter by more than the cap replaces it however long the route.
+    double budget_left = preference.cap_m > 0.0 ? preference.cap_m : std::numeric_limits<double>::infinity();
+    const double fraction = 1.0 - kept_fraction;
     for (std::size_t step = 1; step < preference.route.size(); ++step) {
       const std::uint32_t from = indexOf(preference.route[step - 1]);
       const std::uint32_t to = indexOf(preference.route[step]);
       if (from != kNone && to != kNone) {
         scratch.preferred_next_[from] = to;
+        const double budget =
+            std::min(fraction * (graph.positions_[to] - graph.positions_[from]).norm(), budget_left);
+        scratch.preferred_budget_[from] = budget;
+        budget_left -= budget;
       }
     }
   }
@@ -335,7 +345,10 @@ SearchResult AStarSearch::run(const SearchGraph& graph, const ObstacleSet& obsta
   };
   const auto arcCost = [&](std::uint32_t from, std::uint32_t arc) {
     const double cost = graph.costs_[arc];
-    return preferred(from, graph.targets_[arc]) ? cost * kept_fraction : cost;
+    if (!preferred(from, graph.targets_[arc])) {
+      return cost;
+    }
+    return cost - std::min(cost * (1.0 - kept_fraction), scratch.preferred_budget_[from]);
   };
   auto& queue = scratch.queue_;
   queue.clear();
@@ -442,19 +455,23 @@ SearchResult AStarSearch::run(const SearchGraph& graph, const ObstacleSet& obsta
     if (index > 0 && chain[index - 1] < count && vertex < count) {
       // The arc the search took: an interaction arc when one gave this cost, else the visibility link.
       const std::uint32_t from = chain[index - 1];
+      std::optional<std::uint32_t> taken;
       for (std::uint32_t arc = graph.offsets_[from]; arc < graph.offsets_[from + 1]; ++arc) {
-        if (graph.targets_[arc] == vertex && graph.interaction_[arc] != kNoInteraction &&
-            std::abs(scratch.states_[from].cost + arcCost(from, arc) - scratch.states_[vertex].cost) < 1e-9) {
-          point.interaction = graph.interaction_[arc];
-          point.object_id = graph.interaction_objects_[point.interaction];
-          point.push_plan = graph.interaction_plans_[point.interaction];
-          break;
+        if (graph.targets_[arc] == vertex &&
+            std::abs(scratch.states_[from].cost + arcCost(from, arc) - scratch.states_[vertex].cost) < 1e-9 &&
+            (!taken ||
+             (graph.interaction_[*taken] == kNoInteraction && graph.interaction_[arc] != kNoInteraction))) {
+          taken = arc;  // the first interaction arc that gives the cost, else the first arc that does
         }
       }
-      if (preferred(from, vertex)) {
+      if (taken && graph.interaction_[*taken] != kNoInteraction) {
+        point.interaction = graph.interaction_[*taken];
+        point.object_id = graph.interaction_objects_[point.interaction];
+        point.push_plan = graph.interaction_plans_[point.interaction];
+      }
+      if (taken && preferred(from, vertex)) {
         // Report the true cost: add back what the preference took off this step.
-        const double discounted = scratch.states_[vertex].cost - scratch.states_[from].cost;
-        result.cost += discounted / kept_fraction - discounted;
+        result.cost += graph.costs_[*taken] - arcCost(from, *taken);
       }
     }
     if (!result.path.empty()) {

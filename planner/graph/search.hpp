@@ -90,11 +90,13 @@ struct SearchResult {
 };
 
 /// The route the previous search chose, kept when a new one is not clearly better: its arcs cost
-/// `discount` (a fraction) less. Without it the route flips between two ways of nearly equal length as
-/// each frame moves a vertex a little, and the vehicle turns back and forth between them.
+/// `discount` (a fraction) less, and all of them together at most `cap_m` less, taken from its first
+/// arcs on. Without it the route flips between two ways of nearly equal length as each frame moves a
+/// vertex a little, and the vehicle turns back and forth between them.
 struct RoutePreference {
   std::vector<VertexId> route;  // graph vertices in path order; ids no longer in the graph are skipped
   double discount = 0.0;        // 0 .. 0.9 (larger values count as 0.9)
+  double cap_m = 0.0;           // metres; <= 0: no cap (a fraction of the whole route)
 };
 
 /// Search state, reusable across searches of any graph; not shared between threads.
@@ -120,6 +122,7 @@ class SearchScratch {
   std::vector<std::uint32_t> cell_done_stamp_;
   std::vector<QueueEntry> queue_;
   std::vector<std::uint32_t> preferred_next_;  // per vertex: the next vertex on the preferred route
+  std::vector<double> preferred_budget_;       // per vertex: the most its preferred arc is discounted (m)
   std::uint32_t generation_ = 0;
 };
 

@@ -13,6 +13,8 @@ GraphSettings loadGraphSettings(const common::ConfigNode& node)
   settings.view_radius_m = node.optional<double>("view_radius_m", settings.view_radius_m);
   settings.bucket_size_m = node.optional<double>("bucket_size_m", settings.bucket_size_m);
   settings.route_preference = node.optional<double>("route_preference", settings.route_preference);
+  settings.route_preference_cap_m =
+      node.optional<double>("route_preference_cap_m", settings.route_preference_cap_m);
   if (!(std::isfinite(settings.association_distance_m) && settings.association_distance_m > 0.0)) {
     node.fail("association_distance_m", "must be a positive number of metres");
   }
@@ -28,6 +30,9 @@ GraphSettings loadGraphSettings(const common::ConfigNode& node)
   if (!(std::isfinite(settings.route_preference) && settings.route_preference >= 0.0 &&
         settings.route_preference <= 0.5)) {
     node.fail("route_preference", "must be a fraction from 0 (none) to 0.5");
+  }
+  if (!(std::isfinite(settings.route_preference_cap_m) && settings.route_preference_cap_m >= 0.0)) {
+    node.fail("route_preference_cap_m", "must be 0 (no cap) or a positive number of metres");
   }
   node.rejectUnknownKeys();
   return settings;

@@ -17,8 +17,10 @@ struct GraphSettings {
   double bucket_size_m = 0.0;
   /// The previous route's edges cost this fraction less in the next search (0 .. 0.5, 0 = off): a new
   /// route must be clearly shorter to replace it, so two ways of nearly equal length do not take turns.
-  /// Off by default: a fraction of a long route is too much (docs/graph.md, Global search 5.).
   double route_preference = 0.0;
+  /// ... but all of them together at most this many metres less, from the route's first arcs on (0: no
+  /// cap). A fraction of a long route alone was too much (docs/graph.md, Global search 5.).
+  double route_preference_cap_m = 0.0;
 };
 
 /// Reads the `graph` section (`node` is that section). Every key is optional with the defaults above;

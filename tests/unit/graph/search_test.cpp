@@ -176,6 +176,16 @@ TEST(Search, ThePreviousRouteStaysUntilAnotherIsClearlyShorter)
                                          RoutePreference{other_route, 0.02});
   EXPECT_EQ(routeOf(switched), routeOf(shortest));
   EXPECT_NEAR(switched.cost, shortest.cost, 1e-9);
+  // A cap in metres bounds the whole preference, however large the fraction: 0.3 m of the 1.5 m that half
+  // the edge would take off keeps the route, 0.1 m (less than the 0.17 m it is longer) does not.
+  const SearchResult capped_kept = findPath(graph, prior.obstacles, Point(0, 2.45), Point(5, 2.45), scratch,
+                                            RoutePreference{other_route, 0.5, 0.3});
+  EXPECT_EQ(routeOf(capped_kept), other_route);
+  EXPECT_NEAR(capped_kept.cost, long_way, 1e-9);
+  const SearchResult capped_switched = findPath(graph, prior.obstacles, Point(0, 2.45), Point(5, 2.45),
+                                                scratch, RoutePreference{other_route, 0.5, 0.1});
+  EXPECT_EQ(routeOf(capped_switched), routeOf(shortest));
+  EXPECT_NEAR(capped_switched.cost, shortest.cost, 1e-9);
   // Vertices the graph no longer has are skipped, not trusted.
   const SearchResult stale = findPath(graph, prior.obstacles, Point(0, 2.45), Point(5, 2.45), scratch,
                                       RoutePreference{{other_route[0], 100000U, other_route[1]}, 0.1});

@@ -46,6 +46,22 @@ TEST(GraphSettings, RoutePreferenceIsAFractionUpToAHalf)
   }
 }
 
+TEST(GraphSettings, RoutePreferenceCapIsMetresOrZero)
+{
+  const auto root = common::ConfigNode::loadString("graph:\n  route_preference_cap_m: 2.5\n", "planner.yaml");
+  EXPECT_DOUBLE_EQ(loadGraphSettings(root.child("graph")).route_preference_cap_m, 2.5);
+  for (const char* bad : {"-1", ".inf", ".nan"}) {
+    const auto wrong = common::ConfigNode::loadString(
+        std::string("graph:\n  route_preference_cap_m: ") + bad + "\n", "planner.yaml");
+    try {
+      loadGraphSettings(wrong.child("graph"));
+      ADD_FAILURE() << "route_preference_cap_m " << bad << " was accepted";
+    } catch (const common::ConfigError& error) {
+      EXPECT_NE(std::string(error.what()).find("route_preference_cap_m"), std::string::npos) << error.what();
+    }
+  }
+}
+
 TEST(GraphSettings, ShippedConfigLoads)
 {
   const auto root = common::ConfigNode::loadFile(std::string(IFAR_SOURCE_DIR) + "/config/planner.yaml");
