@@ -326,17 +326,22 @@ SearchResult AStarSearch::run(const SearchGraph& graph, const ObstacleSet& obsta
     };
     // The cap is shared out along the route from its start: the arcs the vehicle takes next keep the
     // route, a way that is shorter by more than the cap replaces it however long the route.
-    double budget_left = preference.cap_m > 0.0 ? preference.cap_m : std::numeric_limits<double>::infinity();
+    const bool capped = preference.cap_m > 0.0;
+    double budget_left = preference.cap_m;
     const double fraction = 1.0 - kept_fraction;
     for (std::size_t step = 1; step < preference.route.size(); ++step) {
       const std::uint32_t from = indexOf(preference.route[step - 1]);
       const std::uint32_t to = indexOf(preference.route[step]);
       if (from != kNone && to != kNone) {
         scratch.preferred_next_[from] = to;
-        const double budget =
-            std::min(fraction * (graph.positions_[to] - graph.positions_[from]).norm(), budget_left);
-        scratch.preferred_budget_[from] = budget;
-        budget_left -= budget;
+        if (capped) {
+          const double budget =
+              std::min(fraction * (graph.positions_[to] - graph.positions_[from]).norm(), budget_left);
+          scratch.preferred_budget_[from] = budget;
+          budget_left -= budget;
+        } else {
+          scratch.preferred_budget_[from] = std::numeric_limits<double>::infinity();
+        }
       }
     }
   }
