@@ -100,6 +100,30 @@ class ExecutivePushObstaclesTest : public ::testing::Test {
     return output;
   }
 
+  /// Pushes against an object that will not move until the executive waits for a replan (ReplanWait
+  /// in the last output, unless it never got to push).
+  Output pushUntilTheObjectStalls()
+  {
+    Output output;
+    for (int index = 0; index < 500 && output.status.mode != Mode::Push; ++index) {
+      output = cycle({});
+    }
+    for (int index = 0; index < 500 && output.status.mode == Mode::Push; ++index) {
+      output = cycle({}, 0.95 * vehicle_.maxPushForce());
+    }
+    return output;
+  }
+
+  /// The replanned path: from where the vehicle stalled away to its left (+y), pushing nothing.
+  void replanLeftOf(const Point& stalled)
+  {
+    path_.sequence = 2;
+    path_.utime = now_us_ + kCycleUs;
+    path_.push_plans.clear();
+    path_.waypoints = {waypoint(stalled.x(), WaypointKind::Free), waypoint(6.0, WaypointKind::Free)};
+    path_.waypoints[1].position = Point(stalled.x(), 2.0);
+  }
+
   ExecutiveSettings settings_;
   common::VehicleSettings vehicle_;
   Executive executive_;
@@ -232,14 +256,7 @@ TEST_F(ExecutivePushObstaclesTest, AfterAnUnpushableObjectTheVehicleBacksAwayBef
 
 TEST_F(ExecutivePushObstaclesTest, WedgedAtASlantTheVehicleBacksAwayOnAnArc)
 {
-  Output output;
-  for (int index = 0; index < 500 && output.status.mode != Mode::Push; ++index) {
-    output = cycle({});
-  }
-  ASSERT_EQ(output.status.mode, Mode::Push);
-  for (int index = 0; index < 500 && output.status.mode != Mode::ReplanWait; ++index) {
-    output = cycle({}, 0.95 * vehicle_.maxPushForce());
-  }
+  Output output = pushUntilTheObjectStalls();
   ASSERT_EQ(output.status.mode, Mode::ReplanWait);
   const Pose2 stalled = pose_;
   // A wall behind the left side at a slant: 0.06 m off the rear-left corner, closing in on it by 0.5 m
@@ -251,11 +268,7 @@ TEST_F(ExecutivePushObstaclesTest, WedgedAtASlantTheVehicleBacksAwayOnAnArc)
     wall.push_back(
         stalled.transform(Point(-footprint.rear_m - back, footprint.half_width_m + 0.06 - 0.5 * back)));
   }
-  path_.sequence = 2;
-  path_.utime = now_us_ + kCycleUs;
-  path_.push_plans.clear();
-  path_.waypoints = {waypoint(stalled.x, WaypointKind::Free), waypoint(6.0, WaypointKind::Free)};
-  path_.waypoints[1].position = Point(stalled.x, 2.0);
+  replanLeftOf(stalled.position());
 
   // Straight back is refused by the guard (it would bring the corner within its clearance of the wall):
   output = cycle(wall, 0.0);
@@ -279,14 +292,7 @@ TEST_F(ExecutivePushObstaclesTest, WedgedAtASlantTheVehicleBacksAwayOnAnArc)
 
 TEST_F(ExecutivePushObstaclesTest, HemmedInBehindTheVehicleFollowsTheNewPathAtOnce)
 {
-  Output output;
-  for (int index = 0; index < 500 && output.status.mode != Mode::Push; ++index) {
-    output = cycle({});
-  }
-  ASSERT_EQ(output.status.mode, Mode::Push);
-  for (int index = 0; index < 500 && output.status.mode != Mode::ReplanWait; ++index) {
-    output = cycle({}, 0.95 * vehicle_.maxPushForce());
-  }
+  Output output = pushUntilTheObjectStalls();
   ASSERT_EQ(output.status.mode, Mode::ReplanWait);
   const Pose2 stalled = pose_;
   // A wall square across the rear, 0.06 m behind it: no reverse arc keeps out of the guard's clearance.
@@ -295,11 +301,7 @@ TEST_F(ExecutivePushObstaclesTest, HemmedInBehindTheVehicleFollowsTheNewPathAtOn
   for (int step = -30; step <= 30; ++step) {
     wall.push_back(stalled.transform(Point(-footprint.rear_m - 0.06, step * 0.025)));
   }
-  path_.sequence = 2;
-  path_.utime = now_us_ + kCycleUs;
-  path_.push_plans.clear();
-  path_.waypoints = {waypoint(stalled.x, WaypointKind::Free), waypoint(6.0, WaypointKind::Free)};
-  path_.waypoints[1].position = Point(stalled.x, 2.0);
+  replanLeftOf(stalled.position());
   output = cycle(wall, 0.0);
   EXPECT_EQ(output.command.linear, 0.0);
   EXPECT_NE(output.status.reason.find("stopped: obstacle"), std::string::npos) << output.status.reason;
