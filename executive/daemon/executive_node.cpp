@@ -111,13 +111,14 @@ Output ExecutiveNode::cycle(std::int64_t now_us)
   updateObstacleInputs(now_us);
   Output output = executive_.step(now_us, inputs_);
   loop_.publish("VELOCITY_CMD", toVelocityMessage(output, now_us));
+  ifar::exec_status_t status = toStatusMessage(output, now_us);
+  if (obstacles_.malformedPackets() > 0) {
+    status.reason += fmt::format(" [{} malformed lidar packets]", obstacles_.malformedPackets());
+  }
   if (output.mode_changed || ++cycles_ % kStatusEveryCycles == 0) {
-    ifar::exec_status_t status = toStatusMessage(output, now_us);
-    if (obstacles_.malformedPackets() > 0) {
-      status.reason += fmt::format(" [{} malformed lidar packets]", obstacles_.malformedPackets());
-    }
     loop_.publish("EXEC_STATUS", status);
   }
+  last_status_ = std::move(status);
   if (output.mode_changed) {
     logger_->info("mode {}: {}", modeName(output.status.mode), output.status.reason);
   }
@@ -135,6 +136,11 @@ Output ExecutiveNode::cycle(std::int64_t now_us)
 void ExecutiveNode::publishStop(std::int64_t now_us)
 {
   loop_.publish("VELOCITY_CMD", toVelocityMessage(Output{}, now_us));
+  if (last_status_) {
+    ifar::exec_status_t status = *last_status_;
+    status.utime = now_us;
+    loop_.publish("EXEC_STATUS", status);
+  }
 }
 
 }  // namespace ifar::executive

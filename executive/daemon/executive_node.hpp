@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 
 #include <spdlog/spdlog.h>
 
@@ -33,7 +34,8 @@ class ExecutiveNode {
   /// One control cycle at `now_us` (wall-clock microseconds, the clock of LCM receive times).
   Output cycle(std::int64_t now_us);
 
-  /// Publishes a zero command (when the daemon exits).
+  /// Publishes a zero command and, once a cycle has run, the last status again (when the daemon exits:
+  /// the last status is often a single datagram, such as the arrival, that a busy recorder may miss).
   void publishStop(std::int64_t now_us);
 
   std::int64_t malformedPaths() const { return malformed_paths_; }
@@ -52,6 +54,7 @@ class ExecutiveNode {
   MotorStatusCombiner motors_;
   std::int64_t malformed_paths_ = 0;
   int cycles_ = 0;
+  std::optional<ifar::exec_status_t> last_status_;
   LocalObstacles obstacles_;
   double pushed_object_radius_m_;
   common::RateLimiter packet_warnings_;

@@ -98,11 +98,24 @@ TEST_F(ExecutiveNodeTest, FollowsThenStopsOnEStopAndOnExit)
   EXPECT_DOUBLE_EQ(commands_.back().angular_velocity, 0.0);
 
   commands_.clear();
+  statuses_.clear();
   node_.publishStop(common::nowMicroseconds());
   deliver();
   ASSERT_EQ(commands_.size(), 1u);
   EXPECT_DOUBLE_EQ(commands_.back().linear_velocity, 0.0);
   EXPECT_DOUBLE_EQ(commands_.back().left_wheel, 0.0);
+  // On exit the last status goes out once more, so a recorder that missed it still logs how things ended.
+  ASSERT_EQ(statuses_.size(), 1u);
+  EXPECT_EQ(statuses_.back().mode, ifar::exec_status_t::MODE_E_STOP);
+  EXPECT_EQ(statuses_.back().goal_id, 3);
+}
+
+TEST_F(ExecutiveNodeTest, ExitBeforeAnyCyclePublishesNoStatus)
+{
+  node_.publishStop(common::nowMicroseconds());
+  deliver();
+  EXPECT_EQ(commands_.size(), 1u);
+  EXPECT_TRUE(statuses_.empty());
 }
 
 TEST_F(ExecutiveNodeTest, SilentInputsStop)
