@@ -50,14 +50,16 @@ InteractionStats addInteractions(const sim::World& world, const grid_map::GridMa
   const Clock::time_point began = Clock::now();
   InteractionStats stats;
   // The background as rectangles of blocked cells of the inflated static grid (what a local layer of
-  // inflated polygons would hold), picked per object from the connectivity window.
+  // inflated polygons would hold), picked per object out to the planner's scene margin: cut off nearer
+  // (it was the connectivity window + 1 m), free space ran round the onward check's edge and the check
+  // passed pushes that close the way on.
   std::vector<geometry::Polygon> background;
   for (const sim::CellRectangle& cells : sim::blockedRectangles(inflated_static, kBlocked)) {
     const geometry::Point low = inflated_static.cornerToWorld(cells.x0, cells.y0);
     const geometry::Point high = inflated_static.cornerToWorld(cells.x1, cells.y1);
     background.push_back({low, geometry::Point(high.x(), low.y()), high, geometry::Point(low.x(), high.y())});
   }
-  const double margin = settings.interaction.connectivity.window_margin_m + 1.0;
+  const double margin = interaction::sceneMargin(settings.interaction);
   for (std::size_t index = 0; index < world.objects.size(); ++index) {
     interaction::Bounds window = interaction::boundsOf(inflated_objects[index]);
     window.minimum -= geometry::Point(margin, margin);

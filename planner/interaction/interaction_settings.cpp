@@ -15,15 +15,28 @@ PusherSettings PusherSettings::fromVehicle(const common::VehicleSettings& vehicl
   return pusher;
 }
 
+SearchSettings extendedSearch(const SearchSettings& search)
+{
+  SearchSettings extended = search;
+  extended.search_radius_m = std::max(search.search_radius_m, search.extended_search_radius_m);
+  extended.extended_search_radius_m = 0.0;
+  return extended;
+}
+
 double surroundingsReach(const ConnectivitySettings& connectivity, const SearchSettings& search)
 {
   return std::max(connectivity.window_margin_m, search.search_radius_m + 1.0);
 }
 
+double obstacleReach(const ConnectivitySettings& connectivity, const SearchSettings& search,
+                     const PusherSettings& pusher)
+{
+  return surroundingsReach(connectivity, search) + pusher.bumper_to_axle_m + pusher.inflation_m;
+}
+
 double sceneMargin(const InteractionSettings& settings)
 {
-  return surroundingsReach(settings.connectivity, settings.search) + settings.pusher.bumper_to_axle_m +
-         settings.pusher.inflation_m;
+  return obstacleReach(settings.connectivity, extendedSearch(settings.search), settings.pusher);
 }
 
 }  // namespace ifar::interaction

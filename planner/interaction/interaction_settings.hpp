@@ -48,13 +48,17 @@ struct PusherSettings {
 
 /// Hybrid A* push search (paper VI.C, Problem 3).
 struct SearchSettings {
-  double primitive_length_m = 0.4;        ///< arc length of the vehicle reference point per push
-  double position_resolution_m = 0.1;     ///< object position cell for duplicate detection
-  std::size_t heading_bins = 72;          ///< object heading cells over a full turn
-  double push_speed_mps = 0.3;            ///< v of the push controls
-  double travel_speed_mps = 0.5;          ///< speed assumed for contact switches (duration only)
-  double reference_force_n = 100.0;       ///< J = force x distance / reference force + travel, in metres
-  double search_radius_m = 4.0;           ///< object centroid never leaves this disc around its start
+  double primitive_length_m = 0.4;     ///< arc length of the vehicle reference point per push
+  double position_resolution_m = 0.1;  ///< object position cell for duplicate detection
+  std::size_t heading_bins = 72;       ///< object heading cells over a full turn
+  double push_speed_mps = 0.3;         ///< v of the push controls
+  double travel_speed_mps = 0.5;       ///< speed assumed for contact switches (duration only)
+  double reference_force_n = 100.0;    ///< J = force x distance / reference force + travel, in metres
+  double search_radius_m = 4.0;        ///< object centroid never leaves this disc around its start
+  /// A waypoint pair the search within search_radius_m proves impossible (exhausted) is searched again
+  /// within this radius; 0 = never. An object plugging a passage longer than search_radius_m can only be
+  /// pushed out of its far end (Willow's east-wing box, 6 m along a 1.3 m passage).
+  double extended_search_radius_m = 0.0;
   double analytic_max_distance_m = 4.0;   ///< longest straight push tried by the analytic expansion
   std::size_t analytic_interval = 4;      ///< analytic expansion every this many expansions
   double collision_step_m = 0.2;          ///< object motion between collision checks along a primitive
@@ -84,14 +88,22 @@ struct InteractionSettings {
   PlanningLoopSettings loop;
 };
 
+/// The settings of the second search with extended_search_radius_m as its radius (and no further one).
+SearchSettings extendedSearch(const SearchSettings& search);
+
 /// How far beyond the pushed object's bounds the push search's onward check looks: past the farthest a
 /// push takes the object (its centroid stays within search_radius_m), so a corridor it is pushed along is
 /// still closed at the edge of what is checked.
 double surroundingsReach(const ConnectivitySettings& connectivity, const SearchSettings& search);
 
-/// How far beyond the objects' bounds the scene's background must reach: the surroundings, plus the
-/// vehicle standing behind an object pushed to their edge. A scene cut off closer leaves open space
-/// along the surroundings' edge, through which every side of the object looks connected.
+/// How far beyond the pushed object's bounds a push search with these settings looks at obstacles: the
+/// surroundings, plus the vehicle standing behind the object pushed to their edge.
+double obstacleReach(const ConnectivitySettings& connectivity, const SearchSettings& search,
+                     const PusherSettings& pusher);
+
+/// How far beyond the objects' bounds the scene's background must reach: the obstacle reach of the
+/// widest search (the extended one when it is on). A scene cut off closer leaves open space along the
+/// surroundings' edge, through which every side of the object looks connected.
 double sceneMargin(const InteractionSettings& settings);
 
 }  // namespace ifar::interaction

@@ -102,8 +102,20 @@ struct PushPlanner::Passage {
 
 PushPlanner::PushPlanner(const PushProblemObject& problem, const PusherSettings& pusher,
                          const SearchSettings& search, const ConnectivitySettings& limits)
-    : pusher_(pusher), search_(search), obstacles_(problem.obstacles)
+    : pusher_(pusher), search_(search)
 {
+  // Obstacles no push of this search comes near are left out: the scene may reach further, for a wider
+  // search of the same object, and every collision test walks the list.
+  Bounds reachable = boundsOf(problem.object);
+  reachable.minimum -= Point::Constant(obstacleReach(limits, search, pusher));
+  reachable.maximum += Point::Constant(obstacleReach(limits, search, pusher));
+  for (const Polygon& obstacle : problem.obstacles) {
+    const Bounds bounds = boundsOf(obstacle);
+    if (bounds.overlaps(reachable)) {
+      obstacles_.push_back(obstacle);
+      obstacle_bounds_.push_back(bounds);
+    }
+  }
   status_ = checkPhysics(problem.physics, pusher);
   if (status_ != PlanStatus::Found) {
     return;
@@ -139,9 +151,6 @@ PushPlanner::PushPlanner(const PushProblemObject& problem, const PusherSettings&
   }
   heuristic_per_metre_ = smallest_force / search.reference_force_n;
 
-  for (const Polygon& obstacle : obstacles_) {
-    obstacle_bounds_.push_back(boundsOf(obstacle));
-  }
   std::vector<Point> outline = model_.footprint;
   outline.push_back(model_.footprint.front());
   double perimeter = 0.0;

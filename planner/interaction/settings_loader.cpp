@@ -45,6 +45,13 @@ InteractionSettings loadInteractionSettings(const common::ConfigNode& node,
   readPositive(node, "travel_speed_mps", search.travel_speed_mps);
   readPositive(node, "reference_force_n", search.reference_force_n);
   readPositive(node, "search_radius_m", search.search_radius_m);
+  search.extended_search_radius_m =
+      node.optional<double>("extended_search_radius_m", search.extended_search_radius_m);
+  if (!(std::isfinite(search.extended_search_radius_m) &&
+        (search.extended_search_radius_m == 0.0 ||
+         search.extended_search_radius_m > search.search_radius_m))) {
+    node.fail("extended_search_radius_m", "must be 0 (off) or larger than search_radius_m");
+  }
   readPositive(node, "analytic_max_distance_m", search.analytic_max_distance_m);
   readCount(node, "analytic_interval", search.analytic_interval);
   readCount(node, "max_expansions", search.max_expansions);

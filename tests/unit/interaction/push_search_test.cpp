@@ -111,8 +111,8 @@ void expectNoWallHit(const PushPlan& plan, const std::vector<geometry::Polygon>&
     for (std::size_t index = 0; index < plan.footprint.size(); ++index) {
       const Point first = plan.footprint[index];
       const Point second = plan.footprint[(index + 1) % plan.footprint.size()];
-      for (double fraction = 0.0; fraction < 1.0; fraction += 0.05) {
-        const Point world = control.object_pose.transform(first + (second - first) * fraction);
+      for (int step = 0; step < 20; ++step) {
+        const Point world = control.object_pose.transform(first + (second - first) * (0.05 * step));
         for (const geometry::Polygon& obstacle : obstacles) {
           if (geometry::containsPoint(obstacle, world)) {
             EXPECT_LE(geometry::distanceToBoundary(obstacle, world), inflation + 0.031);
@@ -298,6 +298,48 @@ TEST(PushSearchTest, WallsCutOffAtTheSceneMarginStillCloseTheCorridor)
   for (const PairPlan& pair : result.plans) {
     if (result.connectivity.waypoints[pair.pair.from].position.y() < 0.0) {
       EXPECT_EQ(pair.plan.status, PlanStatus::Found) << toString(pair.plan.status);
+    }
+  }
+}
+
+TEST(PushSearchTest, ABoxPluggingALongPassageIsPushedOutOfItsFarEndByTheExtendedSearch)
+{
+  // No push within the 4 m search radius gets the box out of the 6 m passage, and inside it the box closes
+  // the way on: the search proves that (exhausted). The extended search pushes it through into the room.
+  // Pushed the other way, into the wide corridor, the near search's plan stands.
+  InteractionSettings settings = defaultSettings();
+  const auto northward = [](const ObjectInteractions& interactions, const PairPlan& pair) {
+    return interactions.connectivity.waypoints[pair.pair.from].position.y() <
+           interactions.connectivity.waypoints[pair.pair.to].position.y();
+  };
+  const ObjectInteractions near =
+      planObjectInteractions(test::pluggedPassageScene(), 0, ObjectPhysics{0.4, 20.0}, settings);
+  ASSERT_EQ(near.connectivity.waypoints.size(), 2U);
+  ASSERT_EQ(near.plans.size(), 2U);
+  settings.search.extended_search_radius_m = 8.0;
+  ASSERT_GT(sceneMargin(settings), obstacleReach(settings.connectivity, settings.search, settings.pusher))
+      << "the scene must reach as far as the extended search looks";
+  const ObjectInteractions extended =
+      planObjectInteractions(test::pluggedPassageScene(), 0, ObjectPhysics{0.4, 20.0}, settings);
+  ASSERT_EQ(extended.plans.size(), 2U);
+  for (std::size_t index = 0; index < 2; ++index) {
+    const PushPlan& before = near.plans[index].plan;
+    const PushPlan& after = extended.plans[index].plan;
+    if (!northward(near, near.plans[index])) {
+      ASSERT_EQ(before.status, PlanStatus::Found) << toString(before.status);
+      EXPECT_LE(before.push_distance_m, settings.search.search_radius_m);
+      EXPECT_EQ(after.push_distance_m, before.push_distance_m) << "a pair the near search solves stays";
+      EXPECT_EQ(after.expansions, before.expansions);
+      continue;
+    }
+    EXPECT_EQ(before.status, PlanStatus::Exhausted) << toString(before.status);
+    ASSERT_EQ(after.status, PlanStatus::Found) << toString(after.status);
+    expectControlsConsistent(after);
+    const Pose2 end = after.controls.back().object_pose;
+    EXPECT_GT(spanInY(after.footprint, end).first, 6.0 - 0.35) << "the box ends at y " << end.y;
+    EXPECT_GT(after.push_distance_m, 6.0);
+    for (const PushControl& control : after.controls) {
+      EXPECT_LE((control.object_pose.position() - after.start_object_pose.position()).norm(), 8.0 + 1e-9);
     }
   }
 }

@@ -88,4 +88,21 @@ inline LocalScene fireDoorBesideARoomScene()
   return scene;
 }
 
+/// A passage (real 1.3 m wide, 0 < y < 6) from a corridor running south (real 4 m wide) to a room (real
+/// 10 m x 5 m) with a corridor on north; a box (real 1.0 m x 0.5 m) plugs its south mouth. Only pushed
+/// the whole 6 m through and out into the room does it leave the way on open.
+inline LocalScene pluggedPassageScene()
+{
+  const auto inflated = [](double min_x, double min_y, double max_x, double max_y) {
+    return rectangle(min_x - 0.35, min_y - 0.35, max_x + 0.35, max_y + 0.35);
+  };
+  LocalScene scene;
+  scene.background = {inflated(-10.0, -30.0, -2.0, 0.0), inflated(2.0, -30.0, 10.0, 0.0),
+                      inflated(-10.0, 0.0, -0.65, 6.0),  inflated(0.65, 0.0, 10.0, 6.0),
+                      inflated(-10.0, 6.0, -5.0, 11.0),  inflated(5.0, 6.0, 10.0, 11.0),
+                      inflated(-10.0, 11.0, -2.0, 30.0), inflated(2.0, 11.0, 10.0, 30.0)};
+  scene.movable = {inflated(-0.5, 0.3, 0.5, 0.8)};
+  return scene;
+}
+
 }  // namespace ifar::interaction::test

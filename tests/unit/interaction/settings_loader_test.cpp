@@ -55,6 +55,23 @@ TEST(InteractionSettingsLoaderTest, ReadsThePlannerLoopKeysAndThePassageMargin)
   EXPECT_THAT(errorOf("track_drop_frames: 0\n"), ::testing::HasSubstr("track_drop_frames"));
 }
 
+TEST(InteractionSettingsLoaderTest, TheExtendedSearchRadiusIsOffOrBeyondTheSearchRadius)
+{
+  const auto load = [](const std::string& yaml) {
+    return loadInteractionSettings(common::ConfigNode::loadString(yaml, "planner.yaml"),
+                                   common::VehicleSettings{});
+  };
+  EXPECT_DOUBLE_EQ(load("").search.extended_search_radius_m, 0.0);
+  EXPECT_DOUBLE_EQ(load("extended_search_radius_m: 8\n").search.extended_search_radius_m, 8.0);
+  EXPECT_DOUBLE_EQ(load("extended_search_radius_m: 0\n").search.extended_search_radius_m, 0.0);
+  EXPECT_THAT(errorOf("extended_search_radius_m: -1\n"), ::testing::HasSubstr("extended_search_radius_m"));
+  EXPECT_THAT(
+      errorOf("extended_search_radius_m: 3\n"),
+      ::testing::HasSubstr("key 'extended_search_radius_m': must be 0 (off) or larger than search_radius_m"));
+  EXPECT_THAT(errorOf("search_radius_m: 9\nextended_search_radius_m: 8\n"),
+              ::testing::HasSubstr("extended_search_radius_m"));
+}
+
 TEST(InteractionSettingsLoaderTest, RejectsBadValuesAndUnknownKeysByName)
 {
   EXPECT_THAT(errorOf("time_budget_s: -1\n"), ::testing::HasSubstr("time_budget_s"));
