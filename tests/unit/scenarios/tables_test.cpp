@@ -93,6 +93,30 @@ TEST(TargetCheck, PooledOfficeSplAndTravelCountEveryDrivenTaskOfBothKinds)
       << check;
 }
 
+TEST(TargetCheck, PlannedSplIsCheckedBesideDrivenSpl)
+{
+  // The paper's Table II scores paths on the known map; the runner's rows score what was driven.
+  std::vector<ResultRow> rows;
+  rows.push_back(row("search", "ours", "office", true, 90.0, 90.0, 0.1));   // SPL 1
+  rows.push_back(row("search", "ours", "willow", false, NAN, 45.0, 0.1));   // SPL 0
+  rows.push_back(row("system", "ours", "office", true, 180.0, 90.0, 1.0));  // SPL 0.5
+  const std::string check = targetCheck(rows);
+  EXPECT_NE(lineStartingWith(check, "| SPL office >= 0.90 (planned) | 1.000, success 1/1 | met").size(), 0U)
+      << check;
+  EXPECT_NE(
+      lineStartingWith(check, "| SPL office+willow >= 0.90 (planned) | 0.500, success 1/2 | missed by 0.400")
+          .size(),
+      0U)
+      << check;
+  EXPECT_NE(
+      lineStartingWith(check, "| SPL office >= 0.90 (driven) | 0.500, success 1/1 | missed by 0.400").size(),
+      0U)
+      << check;
+  // Without runner rows only the planned lines are there.
+  rows.pop_back();
+  EXPECT_EQ(targetCheck(rows).find("(driven)"), std::string::npos) << targetCheck(rows);
+}
+
 TEST(TableTwo, DrivenSplIsAlsoGivenAgainstWhatTheWorldAllows)
 {
   ResultRow driven = row("system", "ours", "office", true, 100.0, 90.0, 1.0);
