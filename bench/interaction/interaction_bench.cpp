@@ -25,13 +25,15 @@ double quantile(std::vector<double> samples, double fraction)
   return samples[index];
 }
 
-void allPairPlans(benchmark::State& state, const LocalScene& scene, bool analytic)
+void allPairPlans(benchmark::State& state, const LocalScene& scene, bool analytic,
+                  double extended_search_radius_m = 0.0)
 {
   InteractionSettings settings;
   settings.pusher = ifar::interaction::PusherSettings::fromVehicle(ifar::common::VehicleSettings{});
   if (!analytic) {
     settings.search.analytic_max_distance_m = 0.0;
   }
+  settings.search.extended_search_radius_m = extended_search_radius_m;
   std::vector<double> milliseconds;
   double expansions = 0.0;
   double plans = 0.0;
@@ -81,11 +83,24 @@ void BM_TJunctionAllPairsNoAnalytic(benchmark::State& state)
   allPairPlans(state, ifar::interaction::test::tJunctionScene(), false);
 }
 
+/// A box plugging a 6 m passage: the 4 m search exhausts one direction; with the shipped 8 m extended
+/// search that direction is searched again and pushed out of the far end.
+void BM_PluggedPassageAllPairs(benchmark::State& state)
+{
+  allPairPlans(state, ifar::interaction::test::pluggedPassageScene(), true);
+}
+void BM_PluggedPassageAllPairsExtended(benchmark::State& state)
+{
+  allPairPlans(state, ifar::interaction::test::pluggedPassageScene(), true, 8.0);
+}
+
 BENCHMARK(BM_DoorwayAllPairs)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_TJunctionAllPairs)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_WallBehindDoorAllPairs)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_NearWallContactSwitchAllPairs)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_WallBehindDoorAllPairsNoAnalytic)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_TJunctionAllPairsNoAnalytic)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_PluggedPassageAllPairs)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_PluggedPassageAllPairsExtended)->Unit(benchmark::kMillisecond);
 
 }  // namespace
