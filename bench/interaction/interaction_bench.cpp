@@ -26,7 +26,7 @@ double quantile(std::vector<double> samples, double fraction)
 }
 
 void allPairPlans(benchmark::State& state, const LocalScene& scene, bool analytic,
-                  double extended_search_radius_m = 0.0)
+                  double extended_search_radius_m = 0.0, double corridor_push_length_m = 0.0)
 {
   InteractionSettings settings;
   settings.pusher = ifar::interaction::PusherSettings::fromVehicle(ifar::common::VehicleSettings{});
@@ -34,6 +34,7 @@ void allPairPlans(benchmark::State& state, const LocalScene& scene, bool analyti
     settings.search.analytic_max_distance_m = 0.0;
   }
   settings.search.extended_search_radius_m = extended_search_radius_m;
+  settings.search.corridor_push_length_m = corridor_push_length_m;
   std::vector<double> milliseconds;
   double expansions = 0.0;
   double plans = 0.0;
@@ -94,6 +95,13 @@ void BM_PluggedPassageAllPairsExtended(benchmark::State& state)
   allPairPlans(state, ifar::interaction::test::pluggedPassageScene(), true, 8.0);
 }
 
+/// A 3.6 m bar filling a 4 m tunnel: both searches exhaust the pair toward the junction 38 m on, and the
+/// corridor push (shipped 60 m) drives the bar into it.
+void BM_BarInATunnelAllPairsCorridor(benchmark::State& state)
+{
+  allPairPlans(state, ifar::interaction::test::barInATunnelScene(true), true, 8.0, 60.0);
+}
+
 BENCHMARK(BM_DoorwayAllPairs)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_TJunctionAllPairs)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_WallBehindDoorAllPairs)->Unit(benchmark::kMillisecond);
@@ -102,5 +110,6 @@ BENCHMARK(BM_WallBehindDoorAllPairsNoAnalytic)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_TJunctionAllPairsNoAnalytic)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PluggedPassageAllPairs)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PluggedPassageAllPairsExtended)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_BarInATunnelAllPairsCorridor)->Unit(benchmark::kMillisecond);
 
 }  // namespace

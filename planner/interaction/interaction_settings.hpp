@@ -59,6 +59,14 @@ struct SearchSettings {
   /// within this radius; 0 = never. An object plugging a passage longer than search_radius_m can only be
   /// pushed out of its far end (Willow's east-wing box, 6 m along a 1.3 m passage).
   double extended_search_radius_m = 0.0;
+  /// A pair the searches above prove impossible (exhausted) is tried once more with one straight push per
+  /// reachable contact edge, up to this far (0 = never): an object filling a corridor can only be pushed
+  /// along it, out past the next junction (the tunnel's 3.6 m bars across 4 m tunnels, 40 m from it).
+  double corridor_push_length_m = 0.0;
+  /// Set by corridorSearch() only: plan() pushes straight, and the way on counts as open where the vehicle
+  /// behind the pushed object can leave the object's surroundings by a second way (the object may close
+  /// the branch it is pushed into).
+  bool corridor = false;
   double analytic_max_distance_m = 4.0;   ///< longest straight push tried by the analytic expansion
   std::size_t analytic_interval = 4;      ///< analytic expansion every this many expansions
   double collision_step_m = 0.2;          ///< object motion between collision checks along a primitive
@@ -91,6 +99,9 @@ struct InteractionSettings {
 /// The settings of the second search with extended_search_radius_m as its radius (and no further one).
 SearchSettings extendedSearch(const SearchSettings& search);
 
+/// The settings of the last search, straight pushes along a corridor up to corridor_push_length_m.
+SearchSettings corridorSearch(const SearchSettings& search);
+
 /// How far beyond the pushed object's bounds the push search's onward check looks: past the farthest a
 /// push takes the object (its centroid stays within search_radius_m), so a corridor it is pushed along is
 /// still closed at the edge of what is checked.
@@ -102,8 +113,8 @@ double obstacleReach(const ConnectivitySettings& connectivity, const SearchSetti
                      const PusherSettings& pusher);
 
 /// How far beyond the objects' bounds the scene's background must reach: the obstacle reach of the
-/// widest search (the extended one when it is on). A scene cut off closer leaves open space along the
-/// surroundings' edge, through which every side of the object looks connected.
+/// widest search (the corridor or the extended one when on). A scene cut off closer leaves open space along
+/// the surroundings' edge, through which every side of the object looks connected.
 double sceneMargin(const InteractionSettings& settings);
 
 }  // namespace ifar::interaction

@@ -169,14 +169,19 @@ PushPlanner::PushPlanner(const PushProblemObject& problem, const PusherSettings&
     }
   }
 
-  Bounds surroundings = boundsOf(problem.object);
-  const double reach = surroundingsReach(limits, search);
-  surroundings.minimum -= Point::Constant(reach);
-  surroundings.maximum += Point::Constant(reach);
-  surroundings_.emplace(surroundings, kSurroundingsResolutionM);
-  for (std::size_t index = 0; index < obstacles_.size(); ++index) {
-    if (obstacle_bounds_[index].overlaps(surroundings)) {
-      surroundings_->fill(obstacles_[index], FreeSpaceRaster::kObstacle);
+  if (search.corridor) {
+    // The corridor search judges the way on round each pushed pose instead (wayOnBeyond).
+    junction_margin_m_ = surroundingsReach(limits, search) - search.search_radius_m;
+  } else {
+    Bounds surroundings = boundsOf(problem.object);
+    const double reach = surroundingsReach(limits, search);
+    surroundings.minimum -= Point::Constant(reach);
+    surroundings.maximum += Point::Constant(reach);
+    surroundings_.emplace(surroundings, kSurroundingsResolutionM);
+    for (std::size_t index = 0; index < obstacles_.size(); ++index) {
+      if (obstacle_bounds_[index].overlaps(surroundings)) {
+        surroundings_->fill(obstacles_[index], FreeSpaceRaster::kObstacle);
+      }
     }
   }
 
@@ -374,6 +379,157 @@ bool PushPlanner::goalReached(const Pose2& pose, const Passage& passage) const
   return passageClear(pose, passage) && onwardOpen(pose, passage);
 }
 
+std::vector<PushPlanner::Contact> PushPlanner::reachableContacts(const Point& start) const
+{
+  std::vector<Contact> contacts;
+  const Polygon outline_world = transformed(model_.travel_outline, model_.pose);
+  for (std::size_t edge = 0; edge < options_.size(); ++edge) {
+    if (!options_[edge].pushable()) {
+      continue;
+    }
+    const Point standing = model_.pose.transform(standingPoint(edge));
+    if (pointBlocked(standing)) {
+      continue;
+    }
+    const Segment approach{start, standing};
+    bool visible = true;
+    for (std::size_t index = 0; index < outline_world.size() && visible; ++index) {
+      visible = !geometry::segmentsCrossProperly(approach, geometry::polygonEdge(outline_world, index));
+    }
+    for (std::size_t index = 0; index < obstacles_.size() && visible; ++index) {
+      for (std::size_t side = 0; side < obstacles_[index].size() && visible; ++side) {
+        visible = !geometry::segmentsCrossProperly(approach, geometry::polygonEdge(obstacles_[index], side));
+      }
+    }
+    if (visible) {
+      contacts.push_back(Contact{edge, approach.length()});
+    }
+  }
+  return contacts;
+}
+
+bool PushPlanner::wayOnBeyond(const Pose2& pose, std::size_t edge) const
+{
+  const Polygon footprint = transformed(model_.footprint, pose);
+  Bounds window = boundsOf(footprint);
+  window.minimum -= Point::Constant(junction_margin_m_);
+  window.maximum += Point::Constant(junction_margin_m_);
+  FreeSpaceRaster raster(window, kSurroundingsResolutionM);
+  for (std::size_t index = 0; index < obstacles_.size(); ++index) {
+    if (obstacle_bounds_[index].overlaps(window)) {
+      raster.fill(obstacles_[index], FreeSpaceRaster::kObstacle);
+    }
+  }
+  raster.mark(raster.cellsNear(footprint, objectClearance()), FreeSpaceRaster::kMovable);
+  int components = 0;
+  const std::vector<int> labels =
+      raster.labelComponents(FreeSpaceRaster::kObstacle | FreeSpaceRaster::kMovable, components);
+  const auto behind =
+      raster.nearestLabelled(pose.transform(standingPoint(edge)), labels, waypointSearchCells());
+  const std::vector<std::size_t> ring = raster.borderCells();
+  if (!behind || ring.empty()) {
+    return false;
+  }
+  const auto reached = [&](std::size_t cell) { return labels[cell] == labels[*behind]; };
+  // Count the stretches of the ring the vehicle reaches, starting the walk after a cell it does not (one
+  // reached all round is a single stretch: the object stands in open space).
+  std::size_t first = 0;
+  while (first < ring.size() && reached(ring[first])) {
+    ++first;
+  }
+  if (first == ring.size()) {
+    return true;
+  }
+  int stretches = 0;
+  bool in_stretch = false;
+  for (std::size_t step = 1; step <= ring.size(); ++step) {
+    const bool inside = reached(ring[(first + step) % ring.size()]);
+    if (inside && !in_stretch) {
+      ++stretches;
+    }
+    in_stretch = inside;
+  }
+  return stretches >= 2;
+}
+
+PushPlan PushPlanner::corridorPush(PushPlan plan, const std::vector<Contact>& contacts,
+                                   const Passage& passage) const
+{
+  const auto started = std::chrono::steady_clock::now();
+  plan.status = PlanStatus::Exhausted;
+  std::size_t checked = 0;
+  double best_cost = std::numeric_limits<double>::infinity();
+  for (const Contact& contact : contacts) {
+    const EdgePushOptions& option = options_[contact.edge];
+    if (!option.straight) {
+      continue;
+    }
+    const Vector direction = rotate(option.patch.push_direction, model_.pose.heading);
+    const auto poseAt = [&](int step) {
+      const double distance = step * search_.collision_step_m;
+      return Pose2{model_.pose.x + direction.x() * distance, model_.pose.y + direction.y() * distance,
+                   model_.pose.heading};
+    };
+    const auto opens = [&](int step) {
+      const Pose2 pose = poseAt(step);
+      if (!passageClear(pose, passage)) {
+        return false;
+      }
+      ++checked;
+      return wayOnBeyond(pose, contact.edge);
+    };
+    const int steps = static_cast<int>(std::floor(search_.search_radius_m / search_.collision_step_m));
+    int last = 0;  // the farthest step before the object runs into an obstacle
+    while (last < steps && !objectCollides(poseAt(last + 1))) {
+      ++last;
+    }
+    // The way on is judged every primitive length, then refined back to the first collision step it
+    // holds at: each judgement rasterises the object's surroundings.
+    const int stride =
+        std::max(1, static_cast<int>(std::lround(search_.primitive_length_m / search_.collision_step_m)));
+    int first_open = 0;
+    for (int probe = stride; first_open == 0 && probe < last + stride; probe += stride) {
+      const int step = std::min(probe, last);
+      if (opens(step)) {
+        first_open = step;
+        while (first_open > 1 && first_open > step - stride + 1 && opens(first_open - 1)) {
+          --first_open;
+        }
+      }
+    }
+    if (first_open > 0) {
+      const double distance = first_open * search_.collision_step_m;
+      const double cost = contact.approach_m + option.straight_force_n * distance / search_.reference_force_n;
+      if (cost >= best_cost) {
+        continue;
+      }
+      const Pose2 pose = poseAt(first_open);
+      best_cost = cost;
+      plan.status = PlanStatus::Found;
+      plan.contact_edge = contact.edge;
+      plan.contact_pose = vehiclePose(model_.pose, contact.edge);
+      plan.travel_distance_m = contact.approach_m;
+      PushControl control;
+      control.kind = ControlKind::Straight;
+      control.contact_edge = contact.edge;
+      control.distance_m = distance;
+      control.force_n = option.straight_force_n;
+      control.linear_mps = search_.push_speed_mps;
+      control.duration_s = distance / search_.push_speed_mps;
+      control.object_pose = pose;
+      control.vehicle_pose = vehiclePose(pose, contact.edge);
+      plan.controls.assign(1, control);
+      plan.push_distance_m = distance;
+      plan.push_work_nm = option.straight_force_n * distance;
+      plan.expected_force_n = option.straight_force_n;
+      plan.cost = cost;
+    }
+  }
+  plan.expansions = checked;
+  plan.planning_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  return plan;
+}
+
 PushPlan PushPlanner::plan(const Point& start, const Point& goal) const
 {
   const auto started = std::chrono::steady_clock::now();
@@ -419,41 +575,23 @@ PushPlan PushPlanner::plan(const Point& start, const Point& goal) const
   std::priority_queue<QueueEntry, std::vector<QueueEntry>, std::greater<QueueEntry>> open;
   std::unordered_map<std::uint64_t, double> best_cost;
 
-  // Roots: contact edges the vehicle reaches from the start waypoint in a straight line.
-  const Polygon outline_world = transformed(model_.travel_outline, model_.pose);
-  for (std::size_t edge = 0; edge < options_.size(); ++edge) {
-    if (!options_[edge].pushable()) {
-      continue;
-    }
-    const Point standing = model_.pose.transform(standingPoint(edge));
-    if (pointBlocked(standing)) {
-      continue;
-    }
-    const Segment approach{start, standing};
-    bool visible = true;
-    for (std::size_t index = 0; index < outline_world.size() && visible; ++index) {
-      visible = !geometry::segmentsCrossProperly(approach, geometry::polygonEdge(outline_world, index));
-    }
-    for (std::size_t index = 0; index < obstacles_.size() && visible; ++index) {
-      for (std::size_t side = 0; side < obstacles_[index].size() && visible; ++side) {
-        visible = !geometry::segmentsCrossProperly(approach, geometry::polygonEdge(obstacles_[index], side));
-      }
-    }
-    if (!visible) {
-      continue;
-    }
+  const std::vector<Contact> contacts = reachableContacts(start);
+  if (contacts.empty()) {
+    plan.status = PlanStatus::UnreachableContact;
+    return plan;
+  }
+  if (search_.corridor) {
+    return corridorPush(std::move(plan), contacts, passage);
+  }
+  for (const Contact& contact : contacts) {
     Node root;
     root.pose = model_.pose;
-    root.edge = edge;
-    root.approach_m = approach.length();
+    root.edge = contact.edge;
+    root.approach_m = contact.approach_m;
     root.cost = root.approach_m;
     root.root = true;
     nodes.push_back(root);
     open.push(QueueEntry{root.cost + heuristic(root.pose, passage), static_cast<int>(nodes.size() - 1)});
-  }
-  if (nodes.empty()) {
-    plan.status = PlanStatus::UnreachableContact;
-    return plan;
   }
 
   int goal_node = -1;

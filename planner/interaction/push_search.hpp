@@ -10,6 +10,9 @@
 // Heuristic: width of the heuristic polygon (object inside the passage) by rotating calipers, plus an
 // analytic straight push to the goal tried at regular intervals.
 //
+// With SearchSettings::corridor (corridorSearch) the search is one straight push per reachable contact
+// edge, as far as the settings allow, ending where the way on beyond the object opens (wayOnBeyond).
+//
 // A PushPlanner is built once per object and answers the n(n-1) waypoint pairs; plan() is const.
 
 #include <array>
@@ -52,6 +55,19 @@ class PushPlanner {
     double length = 0.0;
   };
   struct Passage;
+  /// A contact edge the vehicle reaches from the start waypoint in a straight line.
+  struct Contact {
+    std::size_t edge = 0;
+    double approach_m = 0.0;
+  };
+
+  std::vector<Contact> reachableContacts(const geometry::Point& start) const;
+  /// The cheapest straight push from one of `contacts` after which the passage is clear and wayOnBeyond.
+  PushPlan corridorPush(PushPlan plan, const std::vector<Contact>& contacts, const Passage& passage) const;
+  /// Corridor search goal: the vehicle standing behind the object pushed from `edge` reaches at least
+  /// two stretches of the edge of the object's surroundings (where it came from and a way on), so the
+  /// object closes at most the branch it was pushed into.
+  bool wayOnBeyond(const geometry::Pose2& pose, std::size_t edge) const;
 
   bool objectCollides(const geometry::Pose2& pose) const;
   bool pointBlocked(const geometry::Point& world) const;
@@ -81,7 +97,9 @@ class PushPlanner {
   std::vector<geometry::Point> boundary_samples_;  ///< body frame
   /// The obstacles around the object, out to beyond the farthest push, for the onward check.
   std::optional<FreeSpaceRaster> surroundings_;
-  double allowed_depth_m_ = 0.0;  ///< how deep a footprint point may sit inside an inflated obstacle
+  double allowed_depth_m_ = 0.0;
+  double junction_margin_m_ = 0.0;  ///< corridor search: wayOnBeyond looks this far round the object  ///<
+                                    ///< how deep a footprint point may sit inside an inflated obstacle
   double heuristic_per_metre_ = 0.0;
   /// switch_paths_[from][to][direction]: driving counter-clockwise (0) or clockwise (1).
   std::vector<std::vector<std::array<SwitchPath, 2>>> switch_paths_;

@@ -52,6 +52,12 @@ InteractionSettings loadInteractionSettings(const common::ConfigNode& node,
          search.extended_search_radius_m > search.search_radius_m))) {
     node.fail("extended_search_radius_m", "must be 0 (off) or larger than search_radius_m");
   }
+  search.corridor_push_length_m =
+      node.optional<double>("corridor_push_length_m", search.corridor_push_length_m);
+  if (!(std::isfinite(search.corridor_push_length_m) &&
+        (search.corridor_push_length_m == 0.0 || search.corridor_push_length_m > search.search_radius_m))) {
+    node.fail("corridor_push_length_m", "must be 0 (off) or larger than search_radius_m");
+  }
   readPositive(node, "analytic_max_distance_m", search.analytic_max_distance_m);
   readCount(node, "analytic_interval", search.analytic_interval);
   readCount(node, "max_expansions", search.max_expansions);

@@ -344,6 +344,55 @@ TEST(PushSearchTest, ABoxPluggingALongPassageIsPushedOutOfItsFarEndByTheExtended
   }
 }
 
+TEST(PushSearchTest, ABarFillingATunnelIsPushedAlongItIntoTheNextJunctionByTheCorridorPush)
+{
+  // The bar can only go along its tunnel: no push within 4 or 8 m leaves the way on open (exhausted). The
+  // corridor push drives it straight on until the vehicle behind it can turn off at the next junction,
+  // leaving the bar in the branch straight ahead; where the tunnel ends instead, nothing opens the way.
+  InteractionSettings settings = defaultSettings();
+  settings.search.extended_search_radius_m = 8.0;
+  const auto southward = [](const ObjectInteractions& interactions, const PairPlan& pair) {
+    return interactions.connectivity.waypoints[pair.pair.from].position.y() >
+           interactions.connectivity.waypoints[pair.pair.to].position.y();
+  };
+  const auto southwardPlan = [&](const ObjectInteractions& interactions) {
+    for (const PairPlan& pair : interactions.plans) {
+      if (southward(interactions, pair)) {
+        return pair.plan;
+      }
+    }
+    ADD_FAILURE() << "no southward pair";
+    return PushPlan{};
+  };
+  const ObjectPhysics light{0.4, 20.0};
+  const ObjectInteractions without =
+      planObjectInteractions(test::barInATunnelScene(true), 0, light, settings);
+  EXPECT_EQ(southwardPlan(without).status, PlanStatus::Exhausted) << toString(southwardPlan(without).status);
+
+  settings.search.corridor_push_length_m = 60.0;
+  ASSERT_GE(sceneMargin(settings), 60.0) << "the scene must reach as far as the corridor push looks";
+  const PushPlan through =
+      southwardPlan(planObjectInteractions(test::barInATunnelScene(true), 0, light, settings));
+  ASSERT_EQ(through.status, PlanStatus::Found) << toString(through.status);
+  ASSERT_EQ(through.controls.size(), 1U);
+  EXPECT_EQ(through.controls.front().kind, ControlKind::Straight);
+  expectControlsConsistent(through);
+  const Pose2 end = through.controls.back().object_pose;
+  const double top = spanInY(through.footprint, end).second;
+  // Into the crossing tunnel (y from -40 to -36), far enough that the vehicle (0.7 m wide) fits between the
+  // bar and the crossing's north corners, and no further: the first pose that opens a way on is taken.
+  EXPECT_LT(top, -36.0 - 0.7) << "the bar ends at y " << end.y;
+  EXPECT_GT(top, -36.0 - 0.7 - 1.0) << "the bar ends at y " << end.y;
+  EXPECT_NEAR(end.x, through.start_object_pose.x, 1e-9);
+  EXPECT_NEAR(through.push_distance_m, through.start_object_pose.y - end.y, 1e-9);
+  EXPECT_NEAR(through.cost,
+              through.travel_distance_m + through.push_work_nm / settings.search.reference_force_n, 1e-9);
+
+  const PushPlan dead_end =
+      southwardPlan(planObjectInteractions(test::barInATunnelScene(false), 0, light, settings));
+  EXPECT_EQ(dead_end.status, PlanStatus::Exhausted) << toString(dead_end.status);
+}
+
 TEST(PushSearchTest, NearWallNeedsAContactSwitch)
 {
   const LocalScene scene = test::doorwayWithNearWallScene();

@@ -105,4 +105,25 @@ inline LocalScene pluggedPassageScene()
   return scene;
 }
 
+/// A tunnel 4 m wide (x from -2 to 2) leaving a T-junction (y from 2 to 6) southward; a bar of 3.6 m x
+/// 1.2 m (real) fills it just short of the junction. With `junction_beyond`, a crossing tunnel 38 m
+/// further south (y from -40 to -36) and the tunnel on beyond it; without, the tunnel ends there.
+inline LocalScene barInATunnelScene(bool junction_beyond)
+{
+  const auto inflated = [](double min_x, double min_y, double max_x, double max_y) {
+    return rectangle(min_x - 0.35, min_y - 0.35, max_x + 0.35, max_y + 0.35);
+  };
+  LocalScene scene;
+  scene.background = {inflated(-15.0, 6.0, 15.0, 10.0), inflated(-15.0, -36.0, -2.0, 2.0),
+                      inflated(2.0, -36.0, 15.0, 2.0)};
+  if (junction_beyond) {
+    scene.background.push_back(inflated(-15.0, -60.0, -2.0, -40.0));
+    scene.background.push_back(inflated(2.0, -60.0, 15.0, -40.0));
+  } else {
+    scene.background.push_back(inflated(-15.0, -40.0, 15.0, -36.0));
+  }
+  scene.movable = {inflated(-1.8, 0.2, 1.8, 1.4)};
+  return scene;
+}
+
 }  // namespace ifar::interaction::test

@@ -72,6 +72,20 @@ TEST(InteractionSettingsLoaderTest, TheExtendedSearchRadiusIsOffOrBeyondTheSearc
               ::testing::HasSubstr("extended_search_radius_m"));
 }
 
+TEST(InteractionSettingsLoaderTest, TheCorridorPushLengthIsOffOrBeyondTheSearchRadius)
+{
+  const auto load = [](const std::string& yaml) {
+    return loadInteractionSettings(common::ConfigNode::loadString(yaml, "planner.yaml"),
+                                   common::VehicleSettings{});
+  };
+  EXPECT_DOUBLE_EQ(load("").search.corridor_push_length_m, 0.0);
+  EXPECT_DOUBLE_EQ(load("corridor_push_length_m: 60\n").search.corridor_push_length_m, 60.0);
+  EXPECT_THAT(
+      errorOf("corridor_push_length_m: 2\n"),
+      ::testing::HasSubstr("key 'corridor_push_length_m': must be 0 (off) or larger than search_radius_m"));
+  EXPECT_THAT(errorOf("corridor_push_length_m: .nan\n"), ::testing::HasSubstr("corridor_push_length_m"));
+}
+
 TEST(InteractionSettingsLoaderTest, RejectsBadValuesAndUnknownKeysByName)
 {
   EXPECT_THAT(errorOf("time_budget_s: -1\n"), ::testing::HasSubstr("time_budget_s"));
