@@ -8,10 +8,16 @@
 namespace ifar::interaction {
 namespace {
 
+InteractionSettings load(const std::string& yaml)
+{
+  return loadInteractionSettings(common::ConfigNode::loadString(yaml, "planner.yaml"),
+                                 common::VehicleSettings{});
+}
+
 std::string errorOf(const std::string& yaml)
 {
   try {
-    loadInteractionSettings(common::ConfigNode::loadString(yaml, "planner.yaml"), common::VehicleSettings{});
+    load(yaml);
   } catch (const common::ConfigError& error) {
     return error.what();
   }
@@ -57,10 +63,6 @@ TEST(InteractionSettingsLoaderTest, ReadsThePlannerLoopKeysAndThePassageMargin)
 
 TEST(InteractionSettingsLoaderTest, TheExtendedSearchRadiusIsOffOrBeyondTheSearchRadius)
 {
-  const auto load = [](const std::string& yaml) {
-    return loadInteractionSettings(common::ConfigNode::loadString(yaml, "planner.yaml"),
-                                   common::VehicleSettings{});
-  };
   EXPECT_DOUBLE_EQ(load("").search.extended_search_radius_m, 0.0);
   EXPECT_DOUBLE_EQ(load("extended_search_radius_m: 8\n").search.extended_search_radius_m, 8.0);
   EXPECT_DOUBLE_EQ(load("extended_search_radius_m: 0\n").search.extended_search_radius_m, 0.0);
@@ -74,10 +76,6 @@ TEST(InteractionSettingsLoaderTest, TheExtendedSearchRadiusIsOffOrBeyondTheSearc
 
 TEST(InteractionSettingsLoaderTest, TheCorridorPushLengthIsOffOrBeyondTheSearchRadius)
 {
-  const auto load = [](const std::string& yaml) {
-    return loadInteractionSettings(common::ConfigNode::loadString(yaml, "planner.yaml"),
-                                   common::VehicleSettings{});
-  };
   EXPECT_DOUBLE_EQ(load("").search.corridor_push_length_m, 0.0);
   EXPECT_DOUBLE_EQ(load("corridor_push_length_m: 60\n").search.corridor_push_length_m, 60.0);
   EXPECT_THAT(
