@@ -28,7 +28,6 @@ SearchSettings corridorSearch(const SearchSettings& search)
 {
   SearchSettings corridor = extendedSearch(search);
   corridor.search_radius_m = std::max(corridor.search_radius_m, search.corridor_push_length_m);
-  corridor.analytic_max_distance_m = corridor.search_radius_m;
   corridor.corridor = true;
   return corridor;
 }

@@ -92,6 +92,34 @@ constexpr double kSurroundingsResolutionM = 0.15;
 /// every 0.4 m cost about 25 ms more for the bar's 38 m push).
 constexpr double kCorridorJudgementStepM = 1.0;
 
+/// Numbers the stretches of consecutive `ring` cells that pass `kept`: 1, 2, ... in order round it, 0 for
+/// cells that fail. The walk starts after a failing cell, so no stretch is split where the ring closes; a
+/// ring kept all round is one stretch. `count` is the number of stretches.
+template <typename Kept>
+std::vector<int> ringStretches(const std::vector<std::size_t>& ring, Kept&& kept, int& count)
+{
+  count = 0;
+  std::vector<int> stretches(ring.size(), 0);
+  std::size_t first = 0;
+  while (first < ring.size() && kept(ring[first])) {
+    ++first;
+  }
+  bool in_stretch = false;
+  for (std::size_t step = 1; step <= ring.size(); ++step) {
+    const std::size_t position = (first + step) % ring.size();
+    if (!kept(ring[position])) {
+      in_stretch = false;
+      continue;
+    }
+    if (!in_stretch) {
+      ++count;
+      in_stretch = true;
+    }
+    stretches[position] = count;
+  }
+  return stretches;
+}
+
 }  // namespace
 
 struct PushPlanner::Passage {
@@ -322,24 +350,10 @@ void PushPlanner::findOutlets(Passage& passage) const
   const auto kept = [&](std::size_t cell) {
     return labels[cell] >= 0 && (labels[cell] == labels[*start_cell] || labels[cell] == labels[*goal_cell]);
   };
-  // Start the walk just after a cell that is not kept, so no stretch is split where the ring closes.
-  std::size_t first = 0;
-  while (first < ring.size() && kept(ring[first])) {
-    ++first;
-  }
+  const std::vector<int> stretches = ringStretches(ring, kept, passage.outlet_count);
   passage.outlets.assign(unmoved.cellCount(), 0);
-  bool in_run = false;
-  for (std::size_t step = 1; step <= ring.size(); ++step) {
-    const std::size_t cell = ring[(first + step) % ring.size()];
-    if (!kept(cell)) {
-      in_run = false;
-      continue;
-    }
-    if (!in_run) {
-      ++passage.outlet_count;
-      in_run = true;
-    }
-    passage.outlets[cell] = passage.outlet_count;
+  for (std::size_t position = 0; position < ring.size(); ++position) {
+    passage.outlets[ring[position]] = stretches[position];
   }
 }
 
@@ -381,6 +395,49 @@ bool PushPlanner::onwardOpen(const Pose2& pose, const Passage& passage) const
 bool PushPlanner::goalReached(const Pose2& pose, const Passage& passage) const
 {
   return passageClear(pose, passage) && onwardOpen(pose, passage);
+}
+
+PushControl PushPlanner::makeControl(ControlKind kind, std::size_t edge, double distance, double radius,
+                                     double force, const Pose2& end_pose) const
+{
+  PushControl control;
+  control.kind = kind;
+  control.contact_edge = edge;
+  control.distance_m = distance;
+  control.force_n = force;
+  control.object_pose = end_pose;
+  control.vehicle_pose = vehiclePose(end_pose, edge);
+  if (kind == ControlKind::ContactSwitch) {
+    control.duration_s = distance / search_.travel_speed_mps;
+  } else {
+    control.linear_mps = search_.push_speed_mps;
+    control.angular_radps = std::isfinite(radius) ? search_.push_speed_mps / radius : 0.0;
+    control.duration_s = distance / search_.push_speed_mps;
+  }
+  return control;
+}
+
+void PushPlanner::completePlan(PushPlan& plan, std::size_t edge, double approach_m,
+                               std::vector<PushControl> controls) const
+{
+  plan.status = PlanStatus::Found;
+  plan.contact_edge = edge;
+  plan.contact_pose = vehiclePose(model_.pose, edge);
+  plan.travel_distance_m = approach_m;
+  plan.push_distance_m = 0.0;
+  plan.push_work_nm = 0.0;
+  plan.expected_force_n = 0.0;
+  for (const PushControl& control : controls) {
+    if (control.kind == ControlKind::ContactSwitch) {
+      plan.travel_distance_m += control.distance_m;
+    } else {
+      plan.push_distance_m += control.distance_m;
+      plan.push_work_nm += control.force_n * control.distance_m;
+      plan.expected_force_n = std::max(plan.expected_force_n, control.force_n);
+    }
+  }
+  plan.controls = std::move(controls);
+  plan.cost = plan.push_work_nm / search_.reference_force_n + plan.travel_distance_m;
 }
 
 std::vector<PushPlanner::Contact> PushPlanner::reachableContacts(const Point& start) const
@@ -435,24 +492,11 @@ bool PushPlanner::wayOnBeyond(const Pose2& pose, std::size_t edge) const
     return false;
   }
   const auto reached = [&](std::size_t cell) { return labels[cell] == labels[*behind]; };
-  // Count the stretches of the ring the vehicle reaches, starting the walk after a cell it does not (one
-  // reached all round is a single stretch: the object stands in open space).
-  std::size_t first = 0;
-  while (first < ring.size() && reached(ring[first])) {
-    ++first;
-  }
-  if (first == ring.size()) {
-    return true;
+  if (std::all_of(ring.begin(), ring.end(), reached)) {
+    return true;  // the object stands in open space
   }
   int stretches = 0;
-  bool in_stretch = false;
-  for (std::size_t step = 1; step <= ring.size(); ++step) {
-    const bool inside = reached(ring[(first + step) % ring.size()]);
-    if (inside && !in_stretch) {
-      ++stretches;
-    }
-    in_stretch = inside;
-  }
+  ringStretches(ring, reached, stretches);
   return stretches >= 2;
 }
 
@@ -508,26 +552,11 @@ PushPlan PushPlanner::corridorPush(PushPlan plan, const std::vector<Contact>& co
       if (cost >= best_cost) {
         continue;
       }
-      const Pose2 pose = poseAt(first_open);
       best_cost = cost;
-      plan.status = PlanStatus::Found;
-      plan.contact_edge = contact.edge;
-      plan.contact_pose = vehiclePose(model_.pose, contact.edge);
-      plan.travel_distance_m = contact.approach_m;
-      PushControl control;
-      control.kind = ControlKind::Straight;
-      control.contact_edge = contact.edge;
-      control.distance_m = distance;
-      control.force_n = option.straight_force_n;
-      control.linear_mps = search_.push_speed_mps;
-      control.duration_s = distance / search_.push_speed_mps;
-      control.object_pose = pose;
-      control.vehicle_pose = vehiclePose(pose, contact.edge);
-      plan.controls.assign(1, control);
-      plan.push_distance_m = distance;
-      plan.push_work_nm = option.straight_force_n * distance;
-      plan.expected_force_n = option.straight_force_n;
-      plan.cost = cost;
+      completePlan(
+          plan, contact.edge, contact.approach_m,
+          {makeControl(ControlKind::Straight, contact.edge, distance, std::numeric_limits<double>::infinity(),
+                       option.straight_force_n, poseAt(first_open))});
     }
   }
   plan.expansions = checked;
@@ -610,24 +639,6 @@ PushPlan PushPlanner::plan(const Point& start, const Point& goal) const
     const Vector left(-std::sin(vehicle.heading), std::cos(vehicle.heading));
     const Point centre = vehicle.position() + left * radius;
     return rotateAbout(pose, centre, distance / radius);
-  };
-  const auto makeControl = [&](ControlKind kind, std::size_t edge, double distance, double radius,
-                               double force, const Pose2& end_pose) {
-    PushControl control;
-    control.kind = kind;
-    control.contact_edge = edge;
-    control.distance_m = distance;
-    control.force_n = force;
-    control.object_pose = end_pose;
-    control.vehicle_pose = vehiclePose(end_pose, edge);
-    if (kind == ControlKind::ContactSwitch) {
-      control.duration_s = distance / search_.travel_speed_mps;
-    } else {
-      control.linear_mps = search_.push_speed_mps;
-      control.angular_radps = std::isfinite(radius) ? search_.push_speed_mps / radius : 0.0;
-      control.duration_s = distance / search_.push_speed_mps;
-    }
-    return control;
   };
   // An object pose no push may reach: in an obstacle, or beyond the search radius, where the object would
   // leave the surroundings the onward check sees (a box pushed on along a corridor would look as if it had
@@ -776,22 +787,11 @@ PushPlan PushPlanner::plan(const Point& start, const Point& goal) const
   }
   std::reverse(chain.begin(), chain.end());
   const Node& root = nodes[static_cast<std::size_t>(chain.front())];
-  plan.status = PlanStatus::Found;
-  plan.contact_edge = root.edge;
-  plan.contact_pose = vehiclePose(root.pose, root.edge);
-  plan.travel_distance_m = root.approach_m;
+  std::vector<PushControl> controls;
   for (std::size_t link = 1; link < chain.size(); ++link) {
-    const PushControl& control = nodes[static_cast<std::size_t>(chain[link])].control;
-    plan.controls.push_back(control);
-    if (control.kind == ControlKind::ContactSwitch) {
-      plan.travel_distance_m += control.distance_m;
-    } else {
-      plan.push_distance_m += control.distance_m;
-      plan.push_work_nm += control.force_n * control.distance_m;
-      plan.expected_force_n = std::max(plan.expected_force_n, control.force_n);
-    }
+    controls.push_back(nodes[static_cast<std::size_t>(chain[link])].control);
   }
-  plan.cost = plan.push_work_nm / search_.reference_force_n + plan.travel_distance_m;
+  completePlan(plan, root.edge, root.approach_m, std::move(controls));
   return plan;
 }
 

@@ -62,6 +62,12 @@ class PushPlanner {
   };
 
   std::vector<Contact> reachableContacts(const geometry::Point& start) const;
+  /// A control ending with the object at `end_pose`; `radius` is infinite for a straight push.
+  PushControl makeControl(ControlKind kind, std::size_t edge, double distance, double radius, double force,
+                          const geometry::Pose2& end_pose) const;
+  /// Fills a found plan: first contact on `edge` of the unmoved object, its controls, distances and cost.
+  void completePlan(PushPlan& plan, std::size_t edge, double approach_m,
+                    std::vector<PushControl> controls) const;
   /// The cheapest straight push from one of `contacts` after which the passage is clear and wayOnBeyond.
   PushPlan corridorPush(PushPlan plan, const std::vector<Contact>& contacts, const Passage& passage) const;
   /// Corridor search goal: the vehicle standing behind the object pushed from `edge` reaches at least

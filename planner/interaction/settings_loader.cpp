@@ -24,6 +24,16 @@ void readCount(const common::ConfigNode& node, const std::string& key, std::size
   value = static_cast<std::size_t>(read);
 }
 
+/// A wider search's reach: 0 (off) or beyond the near search's radius.
+void readOffOrBeyond(const common::ConfigNode& node, const std::string& key, double search_radius_m,
+                     double& value)
+{
+  value = node.optional<double>(key, value);
+  if (!(std::isfinite(value) && (value == 0.0 || value > search_radius_m))) {
+    node.fail(key, "must be 0 (off) or larger than search_radius_m");
+  }
+}
+
 }  // namespace
 
 InteractionSettings loadInteractionSettings(const common::ConfigNode& node,
@@ -45,19 +55,8 @@ InteractionSettings loadInteractionSettings(const common::ConfigNode& node,
   readPositive(node, "travel_speed_mps", search.travel_speed_mps);
   readPositive(node, "reference_force_n", search.reference_force_n);
   readPositive(node, "search_radius_m", search.search_radius_m);
-  search.extended_search_radius_m =
-      node.optional<double>("extended_search_radius_m", search.extended_search_radius_m);
-  if (!(std::isfinite(search.extended_search_radius_m) &&
-        (search.extended_search_radius_m == 0.0 ||
-         search.extended_search_radius_m > search.search_radius_m))) {
-    node.fail("extended_search_radius_m", "must be 0 (off) or larger than search_radius_m");
-  }
-  search.corridor_push_length_m =
-      node.optional<double>("corridor_push_length_m", search.corridor_push_length_m);
-  if (!(std::isfinite(search.corridor_push_length_m) &&
-        (search.corridor_push_length_m == 0.0 || search.corridor_push_length_m > search.search_radius_m))) {
-    node.fail("corridor_push_length_m", "must be 0 (off) or larger than search_radius_m");
-  }
+  readOffOrBeyond(node, "extended_search_radius_m", search.search_radius_m, search.extended_search_radius_m);
+  readOffOrBeyond(node, "corridor_push_length_m", search.search_radius_m, search.corridor_push_length_m);
   readPositive(node, "analytic_max_distance_m", search.analytic_max_distance_m);
   readCount(node, "analytic_interval", search.analytic_interval);
   readCount(node, "max_expansions", search.max_expansions);
