@@ -56,6 +56,7 @@ ObjectModelResult buildObjectModel(const Polygon& inflated_world, const PusherSe
   result.model.footprint = footprint;
   result.model.travel_outline = dilateConvex(footprint, pusher.inflation_m + clearance_m);
   result.model.pose = geometry::Pose2{centre.x(), centre.y(), 0.0};
+  result.model.depth_seen = shrink >= pusher.inflation_m;
   return result;
 }
 

@@ -22,6 +22,9 @@ struct ObjectModel {
   geometry::Polygon travel_outline;
   /// World pose of the body frame (heading 0: body axes parallel to the world axes).
   geometry::Pose2 pose;
+  /// False when the polygon was too thin to shrink by the whole inflation: only a face was seen and
+  /// the footprint's depth is a guess.
+  bool depth_seen = true;
 };
 
 struct ObjectModelResult {

@@ -92,6 +92,14 @@ constexpr double kSurroundingsResolutionM = 0.15;
 /// every 0.4 m cost about 25 ms more for the bar's 38 m push).
 constexpr double kCorridorJudgementStepM = 1.0;
 
+/// An object seen only as a face is not turned while the ends of the face are closer than this to walls,
+/// both where the face is and kConfinedFaceProbeM beyond it (away from where the push starts, where the
+/// unseen depth lies): the turn would sweep that depth into the walls of the passage the object stands
+/// in (driven Willow t3: a 1.2 m box in a 1.3 m, 6 m long passage, turned, jammed). A box in an office
+/// door (walls 0.2 m thick) may still be turned at once: beyond the door its depth is in the open.
+constexpr double kConfinedFaceGapM = 0.3;
+constexpr double kConfinedFaceProbeM = 1.0;
+
 /// Numbers the stretches of consecutive `ring` cells that pass `kept`: 1, 2, ... in order round it, 0 for
 /// cells that fail. The walk starts after a failing cell, so no stretch is split where the ring closes; a
 /// ring kept all round is one stretch. `count` is the number of stretches.
@@ -201,6 +209,27 @@ PushPlanner::PushPlanner(const PushProblemObject& problem, const PusherSettings&
     }
   }
 
+  if (!model_.depth_seen) {
+    // The face is the footprint's longest edge; its ends lie on the line through the centroid.
+    Vector along = Vector::UnitX();
+    double longest = 0.0;
+    for (std::size_t vertex = 0; vertex < model_.footprint.size(); ++vertex) {
+      const Vector edge = model_.footprint[(vertex + 1) % model_.footprint.size()] - model_.footprint[vertex];
+      if (edge.norm() > longest) {
+        longest = edge.norm();
+        along = edge / longest;
+      }
+    }
+    double low = 0.0;
+    double high = 0.0;
+    for (const Point& vertex : model_.footprint) {
+      low = std::min(low, vertex.dot(along));
+      high = std::max(high, vertex.dot(along));
+    }
+    face_ends_ = {Point(along * low), Point(along * high)};
+    face_normal_ = Vector(-along.y(), along.x());
+  }
+
   if (search.corridor) {
     // The corridor search judges the way on round each pushed pose instead (wayOnBeyond).
     junction_margin_m_ = surroundingsReach(limits, search) - search.search_radius_m;
@@ -279,6 +308,29 @@ bool PushPlanner::objectCollides(const Pose2& pose) const
     }
   }
   return false;
+}
+
+bool PushPlanner::turnConfined(const Pose2& pose, const Vector& depth_direction) const
+{
+  if (model_.depth_seen) {
+    return false;
+  }
+  // A point of an inflated obstacle deeper than inflation - gap is closer than the gap to the wall.
+  const double depth = pusher_.inflation_m - kConfinedFaceGapM;
+  const auto nearWall = [&](const Point& body) {
+    const Point world = pose.transform(body);
+    for (std::size_t index = 0; index < obstacles_.size(); ++index) {
+      if (obstacle_bounds_[index].contains(world) &&
+          geometry::locatePoint(obstacles_[index], world) == geometry::Containment::Inside &&
+          geometry::distanceToBoundary(obstacles_[index], world) > depth) {
+        return true;
+      }
+    }
+    return false;
+  };
+  return std::all_of(face_ends_.begin(), face_ends_.end(), [&](const Point& end) {
+    return nearWall(end) && nearWall(end + depth_direction * kConfinedFaceProbeM);
+  });
 }
 
 bool PushPlanner::pointBlocked(const Point& world) const
@@ -609,6 +661,10 @@ PushPlan PushPlanner::plan(const Point& start, const Point& goal) const
   std::priority_queue<QueueEntry, std::vector<QueueEntry>, std::greater<QueueEntry>> open;
   std::unordered_map<std::uint64_t, double> best_cost;
 
+  // An object seen only as a face: its depth lies beyond the face as seen from where the push starts.
+  const Vector depth_direction =
+      face_normal_.dot(model_.pose.position() - start) >= 0.0 ? face_normal_ : Vector(-face_normal_);
+
   const std::vector<Contact> contacts = reachableContacts(start);
   if (contacts.empty()) {
     plan.status = PlanStatus::UnreachableContact;
@@ -742,8 +798,9 @@ PushPlan PushPlanner::plan(const Point& start, const Point& goal) const
     const std::array<std::pair<double, double>, 2> arcs{
         std::make_pair(option.left_radius_m, option.left_force_n),
         std::make_pair(-option.right_radius_m, option.right_force_n)};
+    const bool may_turn = !turnConfined(current.pose, depth_direction);
     for (const auto& [radius, force] : arcs) {
-      if (!std::isfinite(radius)) {
+      if (!may_turn || !std::isfinite(radius)) {
         continue;
       }
       const auto motion = [&, radius = radius](double distance) {

@@ -76,6 +76,9 @@ class PushPlanner {
   bool wayOnBeyond(const geometry::Pose2& pose, std::size_t edge) const;
 
   bool objectCollides(const geometry::Pose2& pose) const;
+  /// An object seen only as a face, with both ends of the face close to walls at `pose` and a probe
+  /// length further along `depth_direction` (body frame): no arcs, they would sweep the unseen depth.
+  bool turnConfined(const geometry::Pose2& pose, const geometry::Vector& depth_direction) const;
   bool pointBlocked(const geometry::Point& world) const;
   bool switchFree(const geometry::Pose2& pose, const SwitchPath& path) const;
   geometry::Point standingPoint(std::size_t edge) const;
@@ -103,9 +106,13 @@ class PushPlanner {
   std::vector<geometry::Point> boundary_samples_;  ///< body frame
   /// The obstacles around the object, out to beyond the farthest push, for the onward check.
   std::optional<FreeSpaceRaster> surroundings_;
+  /// How deep a footprint point may sit inside an inflated obstacle.
   double allowed_depth_m_ = 0.0;
-  double junction_margin_m_ = 0.0;  ///< corridor search: wayOnBeyond looks this far round the object  ///<
-                                    ///< how deep a footprint point may sit inside an inflated obstacle
+  /// Corridor search: wayOnBeyond looks this far round the object.
+  double junction_margin_m_ = 0.0;
+  /// Object seen only as a face: the face's two ends, body frame (turnConfined).
+  std::array<geometry::Point, 2> face_ends_{};
+  geometry::Vector face_normal_ = geometry::Vector::UnitY();  ///< body frame, one of the face's normals
   double heuristic_per_metre_ = 0.0;
   /// switch_paths_[from][to][direction]: driving counter-clockwise (0) or clockwise (1).
   std::vector<std::vector<std::array<SwitchPath, 2>>> switch_paths_;

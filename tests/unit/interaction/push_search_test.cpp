@@ -344,6 +344,63 @@ TEST(PushSearchTest, ABoxPluggingALongPassageIsPushedOutOfItsFarEndByTheExtended
   }
 }
 
+bool turns(const PushControl& control)
+{
+  return control.kind == ControlKind::ArcLeft || control.kind == ControlKind::ArcRight;
+}
+
+TEST(PushSearchTest, AFaceOnlyBoxIsNotTurnedInsideAPassage)
+{
+  // Only the box's west face is seen, so its depth is a guess. In a 3 m long, 1.2 m wide passage a turn
+  // would sweep that depth into the passage walls (driven Willow t3 jammed so); the thin face alone would
+  // turn (it did, from where it stands). It goes straight until its face's ends, a metre beyond them, are
+  // clear of the walls (0.3 m), then turns aside: straight on it would close the corridor.
+  InteractionSettings settings = defaultSettings();
+  const ObjectInteractions result =
+      planObjectInteractions(test::faceOnlyInALongDoorScene(), 0, ObjectPhysics{0.4, 20.0}, settings);
+  ASSERT_EQ(result.plans.size(), 2U);
+  bool eastward_checked = false;
+  for (const PairPlan& pair : result.plans) {
+    if (result.connectivity.waypoints[pair.pair.from].position.x() > 0.0) {
+      continue;  // pushed west out of the passage's mouth: its depth is outside
+    }
+    eastward_checked = true;
+    const PushPlan& plan = pair.plan;
+    ASSERT_EQ(plan.status, PlanStatus::Found) << toString(plan.status);
+    expectControlsConsistent(plan);
+    Pose2 before = plan.start_object_pose;
+    bool turned = false;
+    for (const PushControl& control : plan.controls) {
+      if (turns(control)) {
+        // Walls end at x 3.25 (inflated); the probe a metre on leaves them 0.3 m from their end.
+        EXPECT_GE(before.x, 3.25 - 0.05 - 1.0 - 1e-9) << "turned in the passage at x " << before.x;
+      }
+      turned = turned || turns(control);
+      before = control.object_pose;
+    }
+    EXPECT_TRUE(turned) << "pushed straight along the corridor the box closes it";
+  }
+  EXPECT_TRUE(eastward_checked);
+}
+
+TEST(PushSearchTest, AFaceOnlyBoxInADoorIsTurnedAtOnce)
+{
+  // The same face in the fire door, whose wall is 0.2 m thick: a metre beyond the face is open corridor,
+  // so the guessed depth sweeps no wall and the box is turned from where it stands, as one whose depth
+  // was seen (pushed straight out first, the office's door boxes cost the driven office two arrivals).
+  const InteractionSettings settings = defaultSettings();
+  const ObjectInteractions result =
+      planObjectInteractions(test::faceOnlyFireDoorScene(), 0, ObjectPhysics{0.4, 20.0}, settings);
+  ASSERT_EQ(result.plans.size(), 2U);
+  for (const PairPlan& pair : result.plans) {
+    const PushPlan& plan = pair.plan;
+    ASSERT_EQ(plan.status, PlanStatus::Found) << toString(plan.status);
+    expectControlsConsistent(plan);
+    ASSERT_FALSE(plan.controls.empty());
+    EXPECT_TRUE(turns(plan.controls.front()));
+  }
+}
+
 TEST(PushSearchTest, ABarFillingATunnelIsPushedAlongItIntoTheNextJunctionByTheCorridorPush)
 {
   // The bar can only go along its tunnel: no push within 4 or 8 m leaves the way on open (exhausted). The

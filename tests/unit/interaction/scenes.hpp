@@ -105,6 +105,25 @@ inline LocalScene pluggedPassageScene()
   return scene;
 }
 
+/// The fire door with its box seen only as its west face (real 1.1 m long, 0.1 m deep, 5 cm to each
+/// side of the door).
+inline LocalScene faceOnlyFireDoorScene()
+{
+  LocalScene scene = fireDoorScene();
+  scene.movable = {rectangle(-0.25 - 0.35, 0.35, -0.15 + 0.35, 2.15)};
+  return scene;
+}
+
+/// The fire door's box seen only as its west face, in a door whose wall is 3 m thick (real -0.1 < x <
+/// 2.9): a passage 1.2 m wide and 3 m long across the corridor.
+inline LocalScene faceOnlyInALongDoorScene()
+{
+  LocalScene scene = faceOnlyFireDoorScene();
+  scene.background[2] = rectangle(-0.45, 0.35, 3.25, 1.0);
+  scene.background[3] = rectangle(-0.45, 1.5, 3.25, 2.15);
+  return scene;
+}
+
 /// A tunnel 4 m wide (x from -2 to 2) leaving a T-junction (y from 2 to 6) southward; a bar of 3.6 m x
 /// 1.2 m (real) fills it just short of the junction. With `junction_beyond`, a crossing tunnel 38 m
 /// further south (y from -40 to -36) and the tunnel on beyond it; without, the tunnel ends there.
