@@ -32,8 +32,9 @@ struct ObjectModelResult {
   ObjectModel model;
 };
 
-/// Builds the model from the inflated world polygon. A polygon thinner than twice the inflation
-/// (a post or a rasterised sliver) is shrunk by at most 40 % of its width so it keeps an area.
+/// Builds the model from the inflated world polygon. A polygon thinner than 2.5 times the inflation
+/// (a post, a rasterised sliver, an object seen only by its near face) is shrunk by 40 % of its width,
+/// not by the whole inflation, so it keeps an area; its model then has depth_seen false.
 ObjectModelResult buildObjectModel(const geometry::Polygon& inflated_world, const PusherSettings& pusher,
                                    const ConnectivitySettings& limits, double clearance_m);
 

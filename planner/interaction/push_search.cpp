@@ -317,31 +317,27 @@ bool PushPlanner::turnConfined(const Pose2& pose, const Vector& depth_direction)
   }
   // A point of an inflated obstacle deeper than inflation - gap is closer than the gap to the wall.
   const double depth = pusher_.inflation_m - kConfinedFaceGapM;
-  const auto nearWall = [&](const Point& body) {
-    const Point world = pose.transform(body);
-    for (std::size_t index = 0; index < obstacles_.size(); ++index) {
-      if (obstacle_bounds_[index].contains(world) &&
-          geometry::locatePoint(obstacles_[index], world) == geometry::Containment::Inside &&
-          geometry::distanceToBoundary(obstacles_[index], world) > depth) {
-        return true;
-      }
-    }
-    return false;
-  };
   return std::all_of(face_ends_.begin(), face_ends_.end(), [&](const Point& end) {
-    return nearWall(end) && nearWall(end + depth_direction * kConfinedFaceProbeM);
+    return insideDeeperThan(pose.transform(end), depth) &&
+           insideDeeperThan(pose.transform(end + depth_direction * kConfinedFaceProbeM), depth);
   });
 }
 
-bool PushPlanner::pointBlocked(const Point& world) const
+bool PushPlanner::insideDeeperThan(const Point& world, double depth) const
 {
   for (std::size_t index = 0; index < obstacles_.size(); ++index) {
     if (obstacle_bounds_[index].contains(world) &&
-        geometry::locatePoint(obstacles_[index], world) == geometry::Containment::Inside) {
+        geometry::locatePoint(obstacles_[index], world) == geometry::Containment::Inside &&
+        geometry::distanceToBoundary(obstacles_[index], world) > depth) {
       return true;
     }
   }
   return false;
+}
+
+bool PushPlanner::pointBlocked(const Point& world) const
+{
+  return insideDeeperThan(world, -std::numeric_limits<double>::infinity());
 }
 
 bool PushPlanner::switchFree(const Pose2& pose, const SwitchPath& path) const

@@ -79,6 +79,8 @@ class PushPlanner {
   /// An object seen only as a face, with both ends of the face close to walls at `pose` and a probe
   /// length further along `depth_direction` (body frame): no arcs, they would sweep the unseen depth.
   bool turnConfined(const geometry::Pose2& pose, const geometry::Vector& depth_direction) const;
+  /// Whether `world` lies inside an (inflated) obstacle, farther than `depth` from its boundary.
+  bool insideDeeperThan(const geometry::Point& world, double depth) const;
   bool pointBlocked(const geometry::Point& world) const;
   bool switchFree(const geometry::Pose2& pose, const SwitchPath& path) const;
   geometry::Point standingPoint(std::size_t edge) const;
