@@ -19,6 +19,20 @@ logger_pid=$!
 for _ in $(seq 50); do grep -q 'Opening log file' "$work/record.out" && break; sleep 0.1; done
 grep -q 'Opening log file' "$work/record.out" || { echo "FAIL: ifar record did not start"; cat "$work/record.out"; exit 1; }
 
+# lcm-logger prints 'Opening log file' before it subscribes, and udpm binds its receive socket only on
+# subscribe: a message published in between is never seen (AFFORDANCE, the first, was lost so once).
+# Wait until the logger process owns a UDP socket on LCM's default port 7667 (hex 1DF3).
+logger_listens() {
+  local inode
+  for inode in $(awk '$2 ~ /:1DF3$/ {print $10}' /proc/net/udp /proc/net/udp6 2>/dev/null); do
+    ls -l "/proc/$logger_pid/fd" 2>/dev/null | grep -q "socket:\[$inode\]" && return 0
+  done
+  return 1
+}
+for _ in $(seq 100); do logger_listens && break; sleep 0.05; done
+logger_listens || { echo "FAIL: lcm-logger did not open its receive socket on port 7667"; exit 1; }
+sleep 0.1  # the multicast join follows the bind
+
 "$tool" publish
 sleep 0.5
 kill -INT "$logger_pid"
