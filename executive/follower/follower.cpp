@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -225,6 +226,24 @@ FollowerResult followSqueezing(const geometry::Pose2& pose, const geometry::Poin
     retry.reason += fmt::format(" (squeezing: clearance {:.2f} m)", squeeze_clearance_m);
     return retry;
   }
+  return result;
+}
+
+FollowerResult followReversing(const geometry::Pose2& pose, const geometry::Point& target,
+                               common::Span<const geometry::Point> obstacles,
+                               const FollowerSettings& settings, double squeeze_clearance_m,
+                               double reverse_speed, const DifferentialDrive& drive)
+{
+  // A differential drive turned round moves the same way with (-v, omega): mirror the pose and the
+  // footprint, plan forward, and hand back the command negated.
+  const geometry::Pose2 turned{pose.x, pose.y, wrapToPi(pose.heading + kPi)};
+  FollowerSettings rear_first = settings;
+  std::swap(rear_first.footprint.front_m, rear_first.footprint.rear_m);
+  rear_first.max_linear_velocity = std::min(settings.max_linear_velocity, reverse_speed);
+  FollowerResult result =
+      followSqueezing(turned, target, false, obstacles, rear_first, squeeze_clearance_m, drive);
+  result.command.linear = -result.command.linear;
+  result.reason = "reversing: " + result.reason;
   return result;
 }
 

@@ -71,6 +71,15 @@ FollowerResult followSqueezing(const geometry::Pose2& pose, const geometry::Poin
                                const FollowerSettings& settings, double squeeze_clearance_m,
                                const DifferentialDrive& drive);
 
+/// followSqueezing() driving rear first at up to `reverse_speed`: the same fan of arcs for the vehicle
+/// turned round (pose heading + pi, front and rear swapped), with the chosen command's linear velocity
+/// negated. For a target behind a vehicle that has no room to turn on the spot (wedged facing into a
+/// dead end), which forward arcs can only drive further from it.
+FollowerResult followReversing(const geometry::Pose2& pose, const geometry::Point& target,
+                               common::Span<const geometry::Point> obstacles,
+                               const FollowerSettings& settings, double squeeze_clearance_m,
+                               double reverse_speed, const DifferentialDrive& drive);
+
 /// The heading the follower's cost-to-go falls along at `pose` toward `target` (the bearing of the target
 /// itself when it is near): the way to face before driving on. None when the field has no way there.
 std::optional<double> facingDirection(const geometry::Pose2& pose, const geometry::Point& target,

@@ -30,7 +30,6 @@ struct Executive::Cycle {
 
 namespace {
 
-/// Metres of cost-to-go below which a follower arc counts as getting nowhere.
 /// Metres beyond the goal tolerance within which an arrived vehicle stays arrived for a new plan.
 constexpr double kStayArrivedM = 0.1;
 // After a stall's straight escape the vehicle turns on the spot to the cost-to-go's heading when it is off
@@ -39,6 +38,12 @@ constexpr double kStayArrivedM = 0.1;
 constexpr double kStallTurnToleranceRad = 0.2;
 constexpr double kStallTurnTimeoutS = 5.0;
 constexpr double kStallEscapeReleases = 3.0;
+/// A stall escape toward a waypoint behind the vehicle reverses along the follower's cost-to-go (not
+/// straight back) while the turn to face the way on is not free, for up to this far: out of a dead-end
+/// aisle too narrow to turn in, back to where it widens.
+constexpr double kReversingEscapeM = 2.0;
+/// Metres of cost-to-go an escape arc must gain to count as reversing toward the waypoint.
+constexpr double kReversingProgressM = 0.01;
 /// Stalls within this distance of the first one of a series, toward waypoints this close to each other,
 /// count as the same passage.
 constexpr double kStallSiteRadiusM = 1.0;
@@ -366,6 +371,7 @@ void Executive::stepFollow(Cycle& cycle)
     task_ = Task::BackOff;
     backoff_after_stall_ = true;
     stall_escape_sign_ = 0.0;
+    stall_reversing_ = false;
     stall_turn_heading_.reset();
     backoff_start_.reset();
     stall_anchor_us_ = -1;
@@ -886,6 +892,27 @@ bool Executive::freeTurn(const geometry::Pose2& pose, double heading,
   return true;
 }
 
+std::optional<FollowerResult> Executive::reverseTowardWaypoint(const Cycle& cycle) const
+{
+  if (!has_path_ || path_.waypoints.empty()) {
+    return std::nullopt;
+  }
+  const geometry::Point& target =
+      path_.waypoints[std::min(waypoint_index_, path_.waypoints.size() - 1)].position;
+  const geometry::Point offset = target - cycle.pose.position();
+  const double bearing = std::atan2(offset.y(), offset.x());
+  if (std::abs(wrapToPi(bearing - cycle.pose.heading)) <= kPi / 2.0) {
+    return std::nullopt;
+  }
+  FollowerResult result =
+      followReversing(cycle.pose, target, cycle.obstacles, settings_.follower,
+                      settings_.pushed_object.guard_clearance_m, settings_.pusher.reverse_speed, drive_);
+  if (result.status != FollowerStatus::Moving || result.progress_m <= kReversingProgressM) {
+    return std::nullopt;
+  }
+  return result;
+}
+
 std::optional<double> Executive::stallTurnHeading(const Cycle& cycle) const
 {
   if (!has_path_ || path_.waypoints.empty()) {
@@ -920,7 +947,8 @@ void Executive::stepBackOff(Cycle& cycle)
     if (wanted && freeTurn(cycle.pose, *wanted, cycle.obstacles)) {
       stall_turn_heading_ = wanted;
       stall_turn_since_us_ = cycle.now_us;
-    } else if (wanted && travelled < kStallEscapeReleases * release_m) {
+    } else if (wanted &&
+               travelled < (stall_reversing_ ? kReversingEscapeM : kStallEscapeReleases * release_m)) {
       escape_further = true;
     }
   }
@@ -944,6 +972,7 @@ void Executive::stepBackOff(Cycle& cycle)
     task_ = Task::Follow;
     backoff_after_stall_ = false;
     stall_escape_sign_ = 0.0;
+    stall_reversing_ = false;
     stall_turn_heading_.reset();
     stall_anchor_us_ = -1;
     stepFollow(cycle);
@@ -956,7 +985,22 @@ void Executive::stepBackOff(Cycle& cycle)
       const double limit = settings_.pusher.release_m;
       const double back = freeStraightDistance(cycle.pose, -1.0, cycle.obstacles, limit);
       const double ahead = freeStraightDistance(cycle.pose, 1.0, cycle.obstacles, limit);
-      stall_escape_sign_ = back >= ahead ? -1.0 : 1.0;
+      stall_reversing_ = reverseTowardWaypoint(cycle).has_value();
+      stall_escape_sign_ = stall_reversing_ || back >= ahead ? -1.0 : 1.0;
+    }
+    if (stall_reversing_) {
+      const std::optional<FollowerResult> reversing = reverseTowardWaypoint(cycle);
+      if (reversing) {
+        cycle.desired = reversing->command;
+        cycle.reason = fmt::format("stalled for {:.1f} s: the way on is behind, {:.2f} m reversed: {}",
+                                   settings_.stall_timeout_s, travelled, reversing->reason);
+        guardCommand(cycle, cycle.obstacles);
+        if (!cycle.desired.isZero()) {
+          return;
+        }
+      }
+      // Reversing got nowhere or was guarded: straight back from here, as without a waypoint behind.
+      stall_reversing_ = false;
     }
     cycle.reason = fmt::format(
         "stalled for {:.1f} s: {} before following again: {:.2f} of {:.2f} m", settings_.stall_timeout_s,
@@ -967,6 +1011,7 @@ void Executive::stepBackOff(Cycle& cycle)
       task_ = Task::Follow;
       backoff_after_stall_ = false;
       stall_escape_sign_ = 0.0;
+      stall_reversing_ = false;
       stall_anchor_us_ = -1;
     }
     return;

@@ -130,6 +130,9 @@ class Executive {
   /// of every point it is not already that close to.
   bool freeTurn(const geometry::Pose2& pose, double heading,
                 common::Span<const geometry::Point> obstacles) const;
+  /// Reversing along the follower's cost-to-go toward the current waypoint, when it lies behind the
+  /// vehicle and a reversing arc gets closer to it; none otherwise.
+  std::optional<FollowerResult> reverseTowardWaypoint(const Cycle& cycle) const;
   /// After a stall's straight escape: the heading the follower's cost-to-go wants, when turning to it on
   /// the spot first is needed and free (a door entered at a slant wedges the corners on its posts).
   std::optional<double> stallTurnHeading(const Cycle& cycle) const;
@@ -166,6 +169,7 @@ class Executive {
   std::optional<geometry::Point> backoff_start_;  // where BackOff began reversing (set on its first step)
   bool backoff_after_stall_ = false;              // BackOff because following got nowhere, not after a push
   double stall_escape_sign_ = 0.0;  // after a stall: -1 reversing, +1 driving ahead, 0 not chosen yet
+  bool stall_reversing_ = false;    // the escape reverses along the cost-to-go to a waypoint behind
   std::optional<double> stall_turn_heading_;  // after the straight escape: turning on the spot to this
   std::optional<Doorway> doorway_;            // being driven through (Task::Doorway)
   Approach doorway_run_;                      // to the run's start, square to the door, along the run

@@ -293,6 +293,44 @@ TEST_F(ExecutiveTest, StalledWithTheBackAgainstADoorPostDrivesAheadInstead)
   EXPECT_FALSE(backed_up);
 }
 
+TEST_F(ExecutiveTest, WedgedFacingIntoADeadEndAisleReversesOutTowardAWaypointBehind)
+{
+  // Facing at a slant into a 1.24 m aisle closed 0.8 m ahead (too narrow to turn on the spot), the goal
+  // behind, out where the aisle opens at x -2: forward arcs only drive deeper, and straight back closes
+  // in on the wall at the slant (Willow t7 was wedged so for 150 s). The stall escape reverses along the
+  // cost-to-go, turns where the aisle opens and arrives.
+  std::vector<Point> walls;
+  for (double x = -2.0; x <= 1.0; x += 0.05) {
+    walls.emplace_back(x, 0.62);
+    walls.emplace_back(x, -0.62);
+  }
+  for (double y = -0.62; y <= 0.62; y += 0.05) {
+    walls.emplace_back(1.0, y);
+  }
+  Path path = straightPath();
+  path.waypoints = {waypoint(0.2, 0.0), waypoint(-3.5, -1.0)};
+  pose_ = Pose2{0.2, 0.05, -17.0 * M_PI / 180.0};
+  bool reversed = false;
+  Output output;
+  for (int cycle = 0; cycle < 60 * 50 && output.status.mode != Mode::Arrived; ++cycle) {
+    now_us_ += kCycleUs;
+    Inputs inputs = freshInputs(now_us_, path);
+    inputs.obstacles = Stamped<std::vector<Point>>{walls, now_us_};
+    output = executive_.step(now_us_, inputs);
+    if (output.status.reason.find("the way on is behind") != std::string::npos) {
+      reversed = true;
+      ASSERT_LT(output.command.linear, 0.0) << output.status.reason;
+    }
+    pose_ = testing::drive(pose_, output.command, kCycleUs * 1e-6);
+    for (const Point& wall : walls) {
+      ASSERT_GT(settings_.follower.footprint.distance(pose_, wall), 0.0) << "hit the aisle wall";
+    }
+  }
+  EXPECT_TRUE(reversed);
+  EXPECT_EQ(output.status.mode, Mode::Arrived)
+      << "ended at (" << pose_.x << ", " << pose_.y << ", " << pose_.heading << "): " << output.status.reason;
+}
+
 std::optional<BlockedPassage> ExecutiveTest::driveAtNarrowGap(Executive& executive, int stop_after,
                                                               int& stalls, double goal_y)
 {

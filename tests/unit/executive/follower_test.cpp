@@ -76,6 +76,30 @@ TEST_F(FollowerTest, TurnsTowardTargetBehind)
   EXPECT_GT(result.command.angular, 0.5);  // target is behind and slightly left: turn left hard
 }
 
+TEST_F(FollowerTest, ReversesTowardATargetBehindInAnAisleTooNarrowToTurnIn)
+{
+  // A 1.24 m aisle along x, closed 0.8 m ahead; the target 3 m behind. Turning on the spot is not free
+  // (the footprint's circumradius is 0.57 m), so no forward arc gets closer; reversing does, straight
+  // straight down the aisle at the reverse speed.
+  std::vector<Point> walls;
+  addWall(walls, {-3.0, 0.62}, {1.0, 0.62});
+  addWall(walls, {-3.0, -0.62}, {1.0, -0.62});
+  addWall(walls, {1.0, -0.62}, {1.0, 0.62});
+  const Pose2 pose{0.2, 0.0, 0.0};
+  const Point target(-3.0, 0.0);
+  const FollowerResult forward = follow(pose, target, false, walls, settings_, drive_);
+  EXPECT_LE(forward.progress_m, 0.01) << forward.reason;
+  const double reverse_speed = 0.2;
+  const FollowerResult reversing =
+      followReversing(pose, target, walls, settings_, 0.05, reverse_speed, drive_);
+  ASSERT_EQ(reversing.status, FollowerStatus::Moving) << reversing.reason;
+  EXPECT_NEAR(reversing.command.linear, -reverse_speed, 1e-9);
+  EXPECT_NEAR(reversing.command.angular, 0.0, 1e-9);
+  // Cost-to-go near walls costs more than its length (navigation_proximity_weight): at least the arc's.
+  EXPECT_GE(reversing.progress_m, reverse_speed * settings_.horizon_s - 1e-9);
+  EXPECT_EQ(reversing.reason.rfind("reversing: ", 0), 0U) << reversing.reason;
+}
+
 TEST_F(FollowerTest, ReportsArrivalWithinTolerance)
 {
   const FollowerResult result = follow({0.0, 0.0, 0.0}, {0.2, 0.0}, true, {}, settings_, drive_);
