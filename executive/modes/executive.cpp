@@ -981,15 +981,19 @@ void Executive::stepBackOff(Cycle& cycle)
   if (backoff_after_stall_) {
     // Straight back, or straight ahead when the back is nearer a wall (wedged by a door post while
     // turning); chosen once, kept until the distance is done.
+    // Planned once per cycle: it builds the follower's cost-to-go and samples the whole fan.
+    std::optional<FollowerResult> reversing;
     if (stall_escape_sign_ == 0.0) {
       const double limit = settings_.pusher.release_m;
       const double back = freeStraightDistance(cycle.pose, -1.0, cycle.obstacles, limit);
       const double ahead = freeStraightDistance(cycle.pose, 1.0, cycle.obstacles, limit);
-      stall_reversing_ = reverseTowardWaypoint(cycle).has_value();
+      reversing = reverseTowardWaypoint(cycle);
+      stall_reversing_ = reversing.has_value();
       stall_escape_sign_ = stall_reversing_ || back >= ahead ? -1.0 : 1.0;
+    } else if (stall_reversing_) {
+      reversing = reverseTowardWaypoint(cycle);
     }
     if (stall_reversing_) {
-      const std::optional<FollowerResult> reversing = reverseTowardWaypoint(cycle);
       if (reversing) {
         cycle.desired = reversing->command;
         cycle.reason = fmt::format("stalled for {:.1f} s: the way on is behind, {:.2f} m reversed: {}",

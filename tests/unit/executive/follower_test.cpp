@@ -80,7 +80,7 @@ TEST_F(FollowerTest, ReversesTowardATargetBehindInAnAisleTooNarrowToTurnIn)
 {
   // A 1.24 m aisle along x, closed 0.8 m ahead; the target 3 m behind. Turning on the spot is not free
   // (the footprint's circumradius is 0.57 m), so no forward arc gets closer; reversing does, straight
-  // straight down the aisle at the reverse speed.
+  // down the aisle at the reverse speed.
   std::vector<Point> walls;
   addWall(walls, {-3.0, 0.62}, {1.0, 0.62});
   addWall(walls, {-3.0, -0.62}, {1.0, -0.62});
