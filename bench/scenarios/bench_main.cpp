@@ -210,6 +210,11 @@ int main(int argc, char** argv)
   app.add_option("--time-cap", sampling.time_cap_s, "RRT*/BIT* CPU cap per query (s)")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
+  int timing_repeats = 5;
+  app.add_option("--timing-repeats", timing_repeats,
+                 "runs of each grid A*, FAR mode and ours query; the median CPU time is reported")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   app.add_option("--factor", sampling.optimum_factor, "RRT*/BIT* stop within this factor of the optimum")
       ->check(CLI::Range(1.0, 100.0))
       ->capture_default_str();
@@ -300,6 +305,7 @@ int main(int argc, char** argv)
   scenarios::SearchSuiteSettings search_settings;
   search_settings.planners = splitList(planner_list);
   search_settings.sampling = sampling;
+  search_settings.timing_repeats = timing_repeats;
   for (const std::string& planner : search_settings.planners) {
     if (std::find(scenarios::searchPlanners().begin(), scenarios::searchPlanners().end(), planner) ==
         scenarios::searchPlanners().end()) {

@@ -1,8 +1,11 @@
 #include "bench/scenarios/search_suite.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <optional>
+#include <utility>
 
 #include "bench/baselines/cpu_clock.hpp"
 #include "bench/baselines/grid_astar.hpp"
@@ -38,6 +41,24 @@ std::vector<geometry::Point> positions(const graph::SearchResult& result)
     points.push_back(point.position);
   }
   return points;
+}
+
+/// Runs `query` `repeats` times (at least once): its last result and the median planner-thread CPU ms.
+/// The previous result is released after the clock stops, so freeing it is not timed.
+template <typename Query>
+auto timedMedian(int repeats, const Query& query)
+{
+  std::optional<decltype(query())> result;
+  std::vector<double> times;
+  for (int run = 0; run < std::max(1, repeats); ++run) {
+    const double began = baselines::threadCpuMilliseconds();
+    auto latest = query();
+    times.push_back(baselines::threadCpuMilliseconds() - began);
+    result = std::move(latest);
+  }
+  const auto middle = times.begin() + static_cast<std::ptrdiff_t>(times.size() / 2);
+  std::nth_element(times.begin(), middle, times.end());
+  return std::make_pair(std::move(*result), *middle);
 }
 
 ResultRow graphRow(const graph::SearchResult& result, double milliseconds, const PlanningGraph& planning)
@@ -95,9 +116,9 @@ std::vector<ResultRow> runSearchSuite(ScenarioKind kind, const std::string& worl
       ResultRow row;
       try {
         if (planner == "grid_astar") {
-          const double began = baselines::threadCpuMilliseconds();
-          const baselines::BaselineResult result = grid_search.findPath(task.start, task.goal);
-          row.ms = baselines::threadCpuMilliseconds() - began;
+          const auto [result, ms] = timedMedian(settings.timing_repeats,
+                                                [&] { return grid_search.findPath(task.start, task.goal); });
+          row.ms = ms;
           row.success = result.solved();
           row.length = result.solved() ? result.length : NAN;
           row.status = statusName(result.status);
@@ -126,10 +147,10 @@ std::vector<ResultRow> runSearchSuite(ScenarioKind kind, const std::string& worl
           }
         } else if (planner == "far" || planner == "ours") {
           const PlanningGraph& planning = planner == "far" ? maps.far : maps.ours;
-          const double began = baselines::threadCpuMilliseconds();
-          const graph::SearchResult result =
-              graph::findPath(planning.search, planning.map.obstacles, task.start, task.goal, scratch);
-          row = graphRow(result, baselines::threadCpuMilliseconds() - began, planning);
+          const auto [result, ms] = timedMedian(settings.timing_repeats, [&] {
+            return graph::findPath(planning.search, planning.map.obstacles, task.start, task.goal, scratch);
+          });
+          row = graphRow(result, ms, planning);
         } else {
           row.status = "error";
           row.reason = "unknown planner '" + planner + "'";
