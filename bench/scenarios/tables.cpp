@@ -287,11 +287,12 @@ std::string targetCheck(const std::vector<ResultRow>& rows)
 {
   std::string text = "| target | measured | verdict |\n|---|---|---|\n";
   const auto ratio_line = [&](const std::string& baseline, const std::string& kind) {
-    const double ours = medianMs(select(rows, "search", "ours", kind));
-    const double other = medianMs(select(rows, "search", baseline, kind));
+    const std::vector<const ResultRow*> ours_rows = select(rows, "search", "ours", kind);
+    const std::vector<const ResultRow*> baseline_rows = select(rows, "search", baseline, kind);
+    const double ours = medianMs(ours_rows);
+    const double other = medianMs(baseline_rows);
     const double ratio = other / ours;
-    const auto [paired, pairs] =
-        pairedMedianRatio(select(rows, "search", baseline, kind), select(rows, "search", "ours", kind));
+    const auto [paired, pairs] = pairedMedianRatio(baseline_rows, ours_rows);
     text += "| ours >= 10x faster than " + baseline + " (" + kind + ", median) | " +
             (std::isfinite(ratio) ? fixed(ratio, 1) + "x" : std::string("-")) + " (" + milliseconds(other) +
             " vs " + milliseconds(ours) + " ms; per task, on the " + std::to_string(pairs) +
