@@ -194,7 +194,7 @@ int main(int argc, char** argv)
   bool smoke = false;
   std::string system_kind_list = "office,tunnel,room_objects,willow,room";
   int system_tasks = 3;
-  scenarios::SimTimeBudget budget;  // the runner's stop: 60 s + 4 s/m, at most 900 s
+  scenarios::SimTimeBudget budget;  // the runner's stop: 60 s + 4 s/m, at most 1,800 s
   double strict_per_metre_s = 2.0;
   double system_budget_minutes = 0.0;
   std::string commit = "unknown";

@@ -11,7 +11,7 @@ namespace ifar::scenarios {
 struct SimTimeBudget {
   double base_s = 60.0;
   double per_metre_s = 4.0;
-  double max_s = 900.0;
+  double max_s = 1800.0;
 
   double seconds(double optimal_m) const { return std::min(max_s, base_s + per_metre_s * optimal_m); }
   /// "60 s + 2 s/m" (the cap left out: it is the same for every budget in one run).

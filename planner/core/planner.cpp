@@ -278,7 +278,7 @@ FrameResult Planner::processFrame(const FrameInput& frame)
   if (settings_.interaction_enabled && !empty_scan) {
     InteractionFrame interaction_frame;
     interaction_frame.robot = robot;
-    interaction_frame.reach_m = settings_.graph.view_radius_m;
+    interaction_frame.reach_m = settings_.interaction.loop.reach_m;
     geometry::Point region_minimum = geometry::Point::Constant(std::numeric_limits<double>::infinity());
     geometry::Point region_maximum = -region_minimum;
     for (TrackedObject& object : tracked.seen) {

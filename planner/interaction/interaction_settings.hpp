@@ -84,6 +84,10 @@ struct SearchSettings {
 struct PlanningLoopSettings {
   ObjectPhysics default_physics;     ///< prior for every object until AFFORDANCE says otherwise
   double frame_budget_ms = 50.0;     ///< objects not reached within this per frame are done next frame
+  /// Movable objects farther than this from the vehicle get no waypoints and push plans: they block like
+  /// walls until the vehicle comes this close. Beyond the graph's 25 m view radius, so a box plugging a
+  /// tunnel seen 40 m up it is a push, not a dead end the vehicle turns away from for good.
+  double reach_m = 50.0;
   double track_association_m = 1.0;  ///< largest centroid jump of one object between frames
   int track_drop_frames = 5;         ///< frames unseen while in view before an object is dropped
 };

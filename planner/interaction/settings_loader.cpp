@@ -69,6 +69,7 @@ InteractionSettings loadInteractionSettings(const common::ConfigNode& node,
   readPositive(node, "default_mass_kg", loop.default_physics.mass_kg);
   readPositive(node, "default_ground_friction", loop.default_physics.ground_friction);
   readPositive(node, "frame_budget_ms", loop.frame_budget_ms);
+  readPositive(node, "reach_m", loop.reach_m);
   readPositive(node, "track_association_m", loop.track_association_m);
   std::size_t drop_frames = static_cast<std::size_t>(loop.track_drop_frames);
   readCount(node, "track_drop_frames", drop_frames);

@@ -16,7 +16,14 @@ for _ in $(seq 300); do
   [ -n "$found" ] && break
   sleep 0.1
 done
-kill -- -"$runner" 2>/dev/null || true  # only our own process group
+# Stop lcm-spy through its timeout so xvfb-run ends on its own and removes its /tmp/xvfb-run.* folder;
+# the whole process group (our own only) goes if it has not within 10 s.
+pkill -TERM -s "$runner" -x timeout 2>/dev/null || true
+for _ in $(seq 100); do
+  kill -0 "$runner" 2>/dev/null || break
+  sleep 0.1
+done
+kill -- -"$runner" 2>/dev/null || true
 wait "$runner" 2>/dev/null || true
 cat "$out"
 [ -n "$found" ] || { echo "FAIL: lcm-spy did not report its types"; exit 1; }

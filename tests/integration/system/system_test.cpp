@@ -9,7 +9,9 @@
 
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <map>
 #include <optional>
 #include <sstream>
@@ -203,6 +205,20 @@ class SystemTest : public ::testing::Test {
   {
     folder_ = makeTemporaryFolder(::testing::UnitTest::GetInstance()->current_test_info()->name());
     ASSERT_FALSE(folder_.empty());
+  }
+
+  // The folder holds a ~50 MB log: it goes when the test passed and stays for a look when it failed.
+  void TearDown() override
+  {
+    if (folder_.empty()) {
+      return;
+    }
+    if (HasFailure()) {
+      std::cout << "logs of the failed run kept in " << folder_ << "\n";
+      return;
+    }
+    std::error_code ignored;
+    std::filesystem::remove_all(folder_, ignored);
   }
 
   /// The one log the recorder wrote; checks that every message in it decodes (ifar log-info --check).
