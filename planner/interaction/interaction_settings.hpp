@@ -82,8 +82,8 @@ struct SearchSettings {
 
 /// How the planner runs interaction planning each frame (planner/core).
 struct PlanningLoopSettings {
-  ObjectPhysics default_physics;     ///< prior for every object until AFFORDANCE says otherwise
-  double frame_budget_ms = 50.0;     ///< objects not reached within this per frame are done next frame
+  ObjectPhysics default_physics;  ///< prior for every object until AFFORDANCE says otherwise
+  double frame_budget_ms = 50.0;  ///< objects not reached within this per frame are done next frame
   /// Movable objects farther than this from the vehicle get no waypoints and push plans: they block like
   /// walls until the vehicle comes this close. Beyond the graph's 25 m view radius, so a box plugging a
   /// tunnel seen 40 m up it is a push, not a dead end the vehicle turns away from for good.

@@ -44,12 +44,12 @@ TEST(InteractionSettingsLoaderTest, ReadsKeysAndTakesThePusherFromTheVehicle)
 
 TEST(InteractionSettingsLoaderTest, ReadsThePlannerLoopKeysAndThePassageMargin)
 {
-  const InteractionSettings settings =
-      loadInteractionSettings(common::ConfigNode::loadString(
-                                  "default_mass_kg: 35\ndefault_ground_friction: 0.6\nframe_budget_ms: 20\n"
-                                  "track_association_m: 0.8\ntrack_drop_frames: 7\npassage_margin_m: 0\nreach_m: 45\n",
-                                  "planner.yaml"),
-                              common::VehicleSettings{});
+  const InteractionSettings settings = loadInteractionSettings(
+      common::ConfigNode::loadString(
+          "default_mass_kg: 35\ndefault_ground_friction: 0.6\nframe_budget_ms: 20\n"
+          "track_association_m: 0.8\ntrack_drop_frames: 7\npassage_margin_m: 0\nreach_m: 45\n",
+          "planner.yaml"),
+      common::VehicleSettings{});
   EXPECT_DOUBLE_EQ(settings.loop.default_physics.mass_kg, 35.0);
   EXPECT_DOUBLE_EQ(settings.loop.default_physics.ground_friction, 0.6);
   EXPECT_DOUBLE_EQ(settings.loop.frame_budget_ms, 20.0);
