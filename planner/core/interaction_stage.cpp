@@ -86,9 +86,10 @@ void InteractionStage::drop(std::int64_t object_id, graph::DvGraph& graph)
   cache_.forget(object_id);
 }
 
-void InteractionStage::link(const ObjectState& state, const graph::ObstacleSet& obstacles, double reach_m,
+void InteractionStage::link(const ObjectState& state, const graph::ObstacleSet& obstacles,
                             graph::DvGraph& graph) const
 {
+  const double reach_m = settings_.loop.reach_m;
   for (const graph::VertexId waypoint : state.waypoints) {
     const graph::Vertex* from = graph.vertex(waypoint);
     if (from == nullptr) {
@@ -153,7 +154,7 @@ void InteractionStage::process(const InteractionFrame& frame, std::size_t index,
     state.inserted = true;
     ++stats.reinserted;
   }
-  link(state, obstacles, frame.reach_m, graph);
+  link(state, obstacles, graph);
 }
 
 InteractionStats InteractionStage::update(const InteractionFrame& frame, const graph::ObstacleSet& obstacles,
@@ -173,7 +174,7 @@ InteractionStats InteractionStage::update(const InteractionFrame& frame, const g
   }
   std::vector<std::size_t> order;
   for (std::size_t index = 0; index < frame.objects.size(); ++index) {
-    if ((frame.objects[index].centroid - frame.robot).norm() <= frame.reach_m &&
+    if ((frame.objects[index].centroid - frame.robot).norm() <= settings_.loop.reach_m &&
         !unpushable(frame.objects[index].id)) {
       order.push_back(index);
     }

@@ -35,7 +35,6 @@ struct InteractionFrame {
   std::vector<TrackedObject> objects;
   interaction::LocalScene scene;
   geometry::Point robot = geometry::Point::Zero();
-  double reach_m = 25.0;  // objects farther from the robot are not planned for
 };
 
 struct InteractionStats {
@@ -85,9 +84,8 @@ class InteractionStage {
   void process(const InteractionFrame& frame, std::size_t index, const graph::ObstacleSet& obstacles,
                graph::DvGraph& graph, InteractionStats& stats);
   void removeFromGraph(ObjectState& state, std::int64_t object_id, graph::DvGraph& graph);
-  /// Visibility edges from the object's waypoints to every vertex they see within reach.
-  void link(const ObjectState& state, const graph::ObstacleSet& obstacles, double reach_m,
-            graph::DvGraph& graph) const;
+  /// Visibility edges from the object's waypoints to every vertex they see within loop.reach_m.
+  void link(const ObjectState& state, const graph::ObstacleSet& obstacles, graph::DvGraph& graph) const;
   ObjectState& stateOf(std::int64_t object_id);
 
   interaction::InteractionSettings settings_;

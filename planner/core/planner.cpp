@@ -278,11 +278,10 @@ FrameResult Planner::processFrame(const FrameInput& frame)
   if (settings_.interaction_enabled && !empty_scan) {
     InteractionFrame interaction_frame;
     interaction_frame.robot = robot;
-    interaction_frame.reach_m = settings_.interaction.loop.reach_m;
     geometry::Point region_minimum = geometry::Point::Constant(std::numeric_limits<double>::infinity());
     geometry::Point region_maximum = -region_minimum;
     for (TrackedObject& object : tracked.seen) {
-      if ((object.centroid - robot).norm() <= interaction_frame.reach_m) {
+      if ((object.centroid - robot).norm() <= settings_.interaction.loop.reach_m) {
         for (const geometry::Point& point : object.outline) {
           region_minimum = region_minimum.cwiseMin(point);
           region_maximum = region_maximum.cwiseMax(point);
