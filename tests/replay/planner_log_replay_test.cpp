@@ -9,7 +9,6 @@
 //     publication time aside).
 
 #include <signal.h>
-#include <stdlib.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -41,6 +40,7 @@
 #include "sim/simulator/builtin_worlds.hpp"
 #include "tests/replay/feed_publisher.hpp"
 #include "tests/support/child_process.hpp"
+#include "tests/support/temporary_directory.hpp"
 #include "tests/unit/planner_core/simulated_feed.hpp"
 
 namespace ifar::planner {
@@ -50,31 +50,6 @@ constexpr const char* kLcmUrl = "udpm://239.255.76.67:7741?ttl=0";
 constexpr const char* kLogger = "/usr/bin/lcm-logger";
 constexpr const char* kProbeChannel = "REPLAY_TEST_PROBE";
 constexpr int kVelodyneDataPort = 2368;
-
-/// A private directory, removed with everything in it.
-class TemporaryDirectory {
- public:
-  TemporaryDirectory()
-  {
-    std::string pattern = (std::filesystem::temp_directory_path() / "ifar-log-replay-XXXXXX").string();
-    if (mkdtemp(pattern.data()) != nullptr) {
-      path_ = pattern;
-    }
-  }
-  ~TemporaryDirectory()
-  {
-    if (!path_.empty()) {
-      std::error_code ignored;
-      std::filesystem::remove_all(path_, ignored);
-    }
-  }
-  TemporaryDirectory(const TemporaryDirectory&) = delete;
-  TemporaryDirectory& operator=(const TemporaryDirectory&) = delete;
-  const std::filesystem::path& path() const { return path_; }
-
- private:
-  std::filesystem::path path_;
-};
 
 template <typename Message>
 std::vector<std::uint8_t> encode(const Message& message)
@@ -332,7 +307,7 @@ TEST(PlannerLogReplay, RealLogReplaysToTheSameGraphsAndPathsAsTheLivePlanner)
       GTEST_SKIP() << "LCM cannot start on " << kLcmUrl << " (no multicast route on this machine?)";
     }
   }
-  TemporaryDirectory directory;
+  test_support::TemporaryDirectory directory("ifar-log-replay");
   ASSERT_FALSE(directory.path().empty());
   const std::string log_path = (directory.path() / "drive.lcmlog").string();
   Published published;

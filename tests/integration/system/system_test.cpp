@@ -9,10 +9,10 @@
 
 #include <chrono>
 #include <cmath>
-#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -28,19 +28,11 @@
 #include "ifar/velocity_cmd_t.hpp"
 #include "ifar/world_state_t.hpp"
 #include "tests/support/child_process.hpp"
+#include "tests/support/temporary_directory.hpp"
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-std::string makeTemporaryFolder(const std::string& name)
-{
-  std::string pattern = "/tmp/ifar-system-" + name + "-XXXXXX";
-  if (mkdtemp(pattern.data()) == nullptr) {
-    return {};
-  }
-  return pattern;
-}
 
 /// Folder entries whose name contains `part`, full paths.
 std::vector<std::string> filesNamed(const std::string& folder, const std::string& part)
@@ -203,22 +195,20 @@ class SystemTest : public ::testing::Test {
  protected:
   void SetUp() override
   {
-    folder_ = makeTemporaryFolder(::testing::UnitTest::GetInstance()->current_test_info()->name());
+    directory_ = std::make_unique<ifar::test_support::TemporaryDirectory>(
+        std::string("ifar-system-") + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    folder_ = directory_->path().string();
     ASSERT_FALSE(folder_.empty());
   }
 
   // The folder holds a ~50 MB log: it goes when the test passed and stays for a look when it failed.
   void TearDown() override
   {
-    if (folder_.empty()) {
-      return;
-    }
-    if (HasFailure()) {
+    if (directory_ && !folder_.empty() && HasFailure()) {
+      directory_->keep();
       std::cout << "logs of the failed run kept in " << folder_ << "\n";
-      return;
     }
-    std::error_code ignored;
-    std::filesystem::remove_all(folder_, ignored);
+    directory_.reset();
   }
 
   /// The one log the recorder wrote; checks that every message in it decodes (ifar log-info --check).
@@ -253,7 +243,8 @@ class SystemTest : public ::testing::Test {
     }
   }
 
-  std::string folder_;
+  std::unique_ptr<ifar::test_support::TemporaryDirectory> directory_;
+  std::string folder_;  // directory_'s path
 };
 
 TEST_F(SystemTest, DemoArrivesAfterPushingTheBox)
