@@ -117,6 +117,10 @@ scenarios::ResultRow systemRow(scenarios::ScenarioKind kind, const std::string& 
   row.ms = run.ran ? 1000.0 * run.wall_time_s : NAN;
   row.sim_time_s = run.sim_time_s;
   row.pushes = run.pushes;
+  row.frame_median_ms = run.frame_median_ms;
+  row.frame_p99_ms = run.frame_p99_ms;
+  row.frame_max_ms = run.frame_max_ms;
+  row.interaction_max_ms = run.interaction_max_ms;
   if (!run.ran) {
     row.status = "runner_unavailable";
     row.reason = run.reason;
@@ -561,6 +565,7 @@ int main(int argc, char** argv)
               << scenarios::tableOneSearchTime(rows) << "\n"
               << scenarios::tableTwoSpl(rows, stricter) << "\n"
               << scenarios::tableThreeSystem(rows) << "\n"
+              << scenarios::tablePlannerFrames(rows) << "\n"
               << "Targets (issue 8):\n\n"
               << scenarios::targetCheck(rows);
   if (!notes.empty()) {

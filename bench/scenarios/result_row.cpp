@@ -48,6 +48,10 @@ std::string toJsonLine(const ResultRow& row)
   if (row.table == "system") {
     line += ", \"sim_time_s\": " + number(row.sim_time_s);
     line += ", \"pushes\": " + std::to_string(row.pushes);
+    line += ", \"frame_median_ms\": " + number(row.frame_median_ms);
+    line += ", \"frame_p99_ms\": " + number(row.frame_p99_ms);
+    line += ", \"frame_max_ms\": " + number(row.frame_max_ms);
+    line += ", \"interaction_max_ms\": " + number(row.interaction_max_ms);
   }
   return line + "}";
 }

@@ -23,6 +23,12 @@ struct ResultRow {
   double graph_vertices = 0.0;  // size of the map the planner searched (DV-graph vertices; grid: cells)
   double sim_time_s = 0.0;      // system rows: simulated time to the end of the run
   int pushes = 0;               // system rows: pushes executed
+  // System rows: the runner's planner frames, wall ms (two runs share the machine's cores), and the
+  // most one frame's interaction planning took without the daemon's frame budget. NaN when not run.
+  double frame_median_ms = NAN;
+  double frame_p99_ms = NAN;
+  double frame_max_ms = NAN;
+  double interaction_max_ms = NAN;
 };
 
 /// Success weighted by path length for one episode: success x optimal / max(length, optimal); 0 for a

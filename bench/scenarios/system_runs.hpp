@@ -4,6 +4,7 @@
 // exists (system_runs_runner.cpp) and otherwise against a stand-in that reports "runner unavailable"
 // (system_runs_unavailable.cpp), so Tables II and III always come out of the same command.
 
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -22,6 +23,11 @@ struct SystemRun {
   double sim_time_s = 0.0;
   double wall_time_s = 0.0;
   int pushes = 0;
+  // The runner's planner frames, wall ms (runner::RunSummary::planner_frame and ::interaction).
+  double frame_median_ms = NAN;
+  double frame_p99_ms = NAN;
+  double frame_max_ms = NAN;
+  double interaction_max_ms = NAN;
   std::vector<geometry::Pose2> trajectory;
 };
 

@@ -10,6 +10,7 @@
 
 #include "bench/scenarios/scenario_kind.hpp"
 #include "bench/scenarios/search_suite.hpp"
+#include "common/percentile.hpp"
 
 namespace ifar::scenarios {
 namespace {
@@ -79,7 +80,7 @@ double medianMs(const std::vector<const ResultRow*>& rows)
       times.push_back(row->ms);
     }
   }
-  return nearestRankPercentile(times, 50.0);
+  return common::nearestRankPercentile(times, 50.0);
 }
 
 /// The median over the tasks both planners solved of the baseline's time over ours, and how many such
@@ -97,7 +98,7 @@ std::pair<double, int> pairedMedianRatio(const std::vector<const ResultRow*>& ba
       }
     }
   }
-  return {nearestRankPercentile(ratios, 50.0), static_cast<int>(ratios.size())};
+  return {common::nearestRankPercentile(ratios, 50.0), static_cast<int>(ratios.size())};
 }
 
 /// Mean SPL against the ground truth, or (`achievable`) against Task::achievable; with `within`,
@@ -149,17 +150,6 @@ std::string header(const std::string& first)
 
 }  // namespace
 
-double nearestRankPercentile(std::vector<double> values, double p)
-{
-  if (values.empty()) {
-    return NAN;
-  }
-  std::sort(values.begin(), values.end());
-  const double rank = std::ceil(p / 100.0 * static_cast<double>(values.size()));
-  const std::size_t index = static_cast<std::size_t>(std::max(1.0, rank)) - 1;
-  return values[std::min(index, values.size() - 1)];
-}
-
 std::string tableOneSearchTime(const std::vector<ResultRow>& rows)
 {
   std::string text =
@@ -181,9 +171,9 @@ std::string tableOneSearchTime(const std::vector<ResultRow>& rows)
           times.push_back(row->ms);
         }
       }
-      text += " " + milliseconds(nearestRankPercentile(times, 50.0)) + " / " +
-              milliseconds(nearestRankPercentile(times, 99.0)) + " (" + std::to_string(successes(selected)) +
-              "/" + std::to_string(selected.size()) + ") |";
+      text += " " + milliseconds(common::nearestRankPercentile(times, 50.0)) + " / " +
+              milliseconds(common::nearestRankPercentile(times, 99.0)) + " (" +
+              std::to_string(successes(selected)) + "/" + std::to_string(selected.size()) + ") |";
     }
     text += "\n";
   }
@@ -277,6 +267,39 @@ std::string tableThreeSystem(const std::vector<ResultRow>& rows)
       }
       text += " " + fixed(distance, 1) + " | " + fixed(time, 1) + " | " +
               std::to_string(successes(selected)) + "/" + std::to_string(selected.size()) + " |";
+    }
+    text += "\n";
+  }
+  return text;
+}
+
+std::string tablePlannerFrames(const std::vector<ResultRow>& rows)
+{
+  std::string text =
+      "Planner frames in the driven runs, wall ms (two runs at once on the machine's cores): median of the "
+      "runs' medians / worst run's p99 / longest frame; in brackets the longest interaction stage (no "
+      "frame budget in the runner).\n\n";
+  text += header("planner");
+  for (const std::string planner : {"far", "ours"}) {
+    text += "| " + planner + " |";
+    for (const ScenarioKind kind : allKinds()) {
+      std::vector<double> medians;
+      double worst_p99 = NAN;
+      double longest = NAN;
+      double longest_interaction = NAN;
+      for (const ResultRow* row : select(rows, "system", planner, kindName(kind))) {
+        if (!std::isfinite(row->frame_median_ms)) {
+          continue;  // not run, or no planner frame
+        }
+        medians.push_back(row->frame_median_ms);
+        worst_p99 = std::fmax(worst_p99, row->frame_p99_ms);
+        longest = std::fmax(longest, row->frame_max_ms);
+        longest_interaction = std::fmax(longest_interaction, row->interaction_max_ms);
+      }
+      text += medians.empty() ? std::string(" - |")
+                              : " " + fixed(common::nearestRankPercentile(medians, 50.0), 1) + " / " +
+                                    fixed(worst_p99, 1) + " / " + fixed(longest, 1) + " (" +
+                                    fixed(longest_interaction, 1) + ") |";
     }
     text += "\n";
   }

@@ -12,15 +12,16 @@
 
 namespace ifar::scenarios {
 
-/// Nearest-rank percentile (p in 0..100) of unsorted values; NaN when empty.
-double nearestRankPercentile(std::vector<double> values, double p);
-
 std::string tableOneSearchTime(const std::vector<ResultRow>& rows);
 /// With `stricter`, the driven rows again counting only the arrivals within that budget (the same runs:
 /// a run is deterministic in simulated time, so one that arrived within it would have under it).
 std::string tableTwoSpl(const std::vector<ResultRow>& rows,
                         const std::optional<SimTimeBudget>& stricter = std::nullopt);
 std::string tableThreeSystem(const std::vector<ResultRow>& rows);
+/// The planner's frame times in the driven runs, per kind: the median of the runs' medians, the worst
+/// run's p99, the longest frame, and the longest interaction stage alone (the runner lifts the daemon's
+/// frame budget, so this is all the work one frame asked for).
+std::string tablePlannerFrames(const std::vector<ResultRow>& rows);
 /// The targets with the measured value and whether it is met (or by how much it is missed).
 std::string targetCheck(const std::vector<ResultRow>& rows);
 

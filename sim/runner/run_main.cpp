@@ -158,9 +158,13 @@ int main(int argc, char** argv)
     const std::string outcome = summary.arrived ? "arrived" : "not arrived: " + summary.reason;
     std::printf(
         "%s\ndistance %.2f m, simulated time %.1f s (wall %.1f s), pushes %d, replans %d, "
-        "affordance updates %d, %.2f m from the goal\n",
+        "affordance updates %d, %.2f m from the goal\n"
+        "planner frames %zu: median %.2f ms, p99 %.2f ms, max %.2f ms\n"
+        "interaction planning (no frame budget here): median %.2f ms, p99 %.2f ms, max %.2f ms\n",
         outcome.c_str(), summary.distance_m, summary.sim_time_s, summary.wall_time_s, summary.pushes,
-        summary.replans, summary.affordance_updates, summary.goal_distance_m);
+        summary.replans, summary.affordance_updates, summary.goal_distance_m, summary.planner_frame.frames,
+        summary.planner_frame.median_ms, summary.planner_frame.p99_ms, summary.planner_frame.max_ms,
+        summary.interaction.median_ms, summary.interaction.p99_ms, summary.interaction.max_ms);
   }
   return summary.arrived ? kExitArrived : kExitNotArrived;
 }

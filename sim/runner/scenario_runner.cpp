@@ -1,5 +1,6 @@
 #include "sim/runner/scenario_runner.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <exception>
@@ -7,10 +8,12 @@
 #include <optional>
 #include <stdexcept>
 #include <utility>
+#include <vector>
 
 #include <fmt/format.h>
 #include <Eigen/Geometry>
 
+#include "common/percentile.hpp"
 #include "executive/modes/executive.hpp"
 #include "planner/core/frame_assembler.hpp"
 #include "sim/runner/path_conversion.hpp"
@@ -57,6 +60,18 @@ void keepLatest(std::optional<planner::FrameInput>& latest, planner::FrameInput 
     }
   }
   latest = std::move(frame);
+}
+
+FrameTimes frameTimes(const std::vector<double>& milliseconds)
+{
+  FrameTimes times;
+  times.frames = milliseconds.size();
+  if (!milliseconds.empty()) {
+    times.median_ms = common::nearestRankPercentile(milliseconds, 50.0);
+    times.p99_ms = common::nearestRankPercentile(milliseconds, 99.0);
+    times.max_ms = *std::max_element(milliseconds.begin(), milliseconds.end());
+  }
+  return times;
 }
 
 /// Why the request cannot run, empty when it can.
@@ -117,6 +132,8 @@ class Scenario {
   double force_sum_ = 0.0;
   int force_samples_ = 0;
   std::int64_t stopped_since_ns_ = -1;
+  std::vector<double> frame_ms_;        // per planner frame, for summary_.planner_frame
+  std::vector<double> interaction_ms_;  // ... and summary_.interaction
   RunSummary summary_;
 };
 
@@ -200,6 +217,8 @@ void Scenario::planFrame(std::int64_t utime)
   }
   const planner::FrameResult result = planner_.processFrame(*latest_frame_);
   latest_frame_.reset();
+  frame_ms_.push_back(result.status.timings.total_ms);
+  interaction_ms_.push_back(result.status.timings.interaction_ms);
   publishPath(result, utime);
 }
 
@@ -334,6 +353,8 @@ RunSummary Scenario::run()
   }
   summary_.sim_time_s = static_cast<double>(output.time_ns) * 1e-9;
   summary_.goal_distance_m = (output.vehicle.pose.position() - request_.goal).norm();
+  summary_.planner_frame = frameTimes(frame_ms_);
+  summary_.interaction = frameTimes(interaction_ms_);
   for (const auto& object : output.objects) {
     summary_.final_objects.push_back(object.pose);
   }

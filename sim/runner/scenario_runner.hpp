@@ -9,6 +9,7 @@
 // (as the planner daemon does); at control_rate_hz the executive steps on the latest values, its
 // command drives the simulated vehicle and an affordance finding goes to the planner at once.
 
+#include <cstddef>
 #include <functional>
 #include <string>
 #include <vector>
@@ -38,6 +39,15 @@ struct RunRequest {
   double max_sim_time_s = 300.0;
 };
 
+/// Wall-clock milliseconds of one kind of planner work over a run's frames (this process's clock, so a
+/// loaded machine shows in them).
+struct FrameTimes {
+  std::size_t frames = 0;
+  double median_ms = 0.0;
+  double p99_ms = 0.0;  // nearest rank
+  double max_ms = 0.0;
+};
+
 struct RunSummary {
   bool arrived = false;
   std::string reason;       // why it ended: "arrived", "timeout", "stopped: <executive reason>", ...
@@ -49,6 +59,8 @@ struct RunSummary {
   int affordance_updates = 0;
   int blocked_passages = 0;                    // passages the executive gave up and the planner sealed
   double goal_distance_m = 0.0;                // final ground-truth distance to the goal
+  FrameTimes planner_frame;                    // each planner frame: perception, graphs, interaction, search
+  FrameTimes interaction;                      // its interaction stage alone (no frame budget in the runner)
   std::vector<geometry::Pose2> trajectory;     // ground truth, one per control cycle
   std::vector<geometry::Pose2> final_objects;  // ground truth object poses at the end, world-file order
 };

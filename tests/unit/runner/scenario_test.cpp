@@ -73,6 +73,14 @@ TEST(RunnerScenario, RoomArrivesAlongNearlyStraightPath)
   EXPECT_EQ(summary.pushes, 0);
   EXPECT_EQ(summary.affordance_updates, 0);
   EXPECT_FALSE(summary.trajectory.empty());
+  // One planner frame per completed revolution at 2.5 Hz: the first needs a whole revolution (0.1 s) and
+  // the run ends at arrival, so within one frame of 2.5 per simulated second.
+  EXPECT_NEAR(static_cast<double>(summary.planner_frame.frames), 2.5 * summary.sim_time_s, 1.0);
+  EXPECT_EQ(summary.interaction.frames, summary.planner_frame.frames);
+  EXPECT_GT(summary.planner_frame.median_ms, 0.0);
+  EXPECT_LE(summary.planner_frame.median_ms, summary.planner_frame.p99_ms);
+  EXPECT_LE(summary.planner_frame.p99_ms, summary.planner_frame.max_ms);
+  EXPECT_LE(summary.interaction.max_ms, summary.planner_frame.max_ms);
 }
 
 TEST(RunnerScenario, SameRequestSameSummary)

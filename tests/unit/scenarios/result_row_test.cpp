@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include "bench/scenarios/result_row.hpp"
-#include "bench/scenarios/tables.hpp"
 
 namespace ifar::scenarios {
 namespace {
@@ -87,18 +86,16 @@ TEST(JsonLine, SystemRowAddsSimulatedTimeAndPushes)
   row.table = "system";
   row.sim_time_s = 120.5;
   row.pushes = 2;
+  row.frame_median_ms = 4.5;
+  row.frame_p99_ms = 12.25;
+  row.frame_max_ms = 30.0;
+  row.interaction_max_ms = 21.0;
   const std::string line = toJsonLine(row);
-  EXPECT_NE(line.find(", \"sim_time_s\": 120.5, \"pushes\": 2}"), std::string::npos) << line;
+  EXPECT_NE(line.find(", \"sim_time_s\": 120.5, \"pushes\": 2, \"frame_median_ms\": 4.5, \"frame_p99_ms\": "
+                      "12.25, \"frame_max_ms\": 30, \"interaction_max_ms\": 21}"),
+            std::string::npos)
+      << line;
   EXPECT_EQ(line.find('\n'), std::string::npos);
-}
-
-TEST(Percentile, NearestRank)
-{
-  const std::vector<double> values{5.0, 1.0, 4.0, 2.0, 3.0};
-  EXPECT_EQ(nearestRankPercentile(values, 50.0), 3.0);
-  EXPECT_EQ(nearestRankPercentile(values, 99.0), 5.0);
-  EXPECT_EQ(nearestRankPercentile(values, 0.0), 1.0);
-  EXPECT_TRUE(std::isnan(nearestRankPercentile({}, 50.0)));
 }
 
 }  // namespace

@@ -165,5 +165,30 @@ TEST(TableTwo, DrivenSplIsAlsoGivenForTheArrivalsWithinAStricterBudget)
   EXPECT_EQ(tableTwoSpl({early, late}).find("arrived within"), std::string::npos);
 }
 
+TEST(PlannerFrames, PerKindMedianOfMediansWorstP99LongestFrameAndInteraction)
+{
+  std::vector<ResultRow> rows;
+  const auto driven = [&](const std::string& task, double median, double p99, double longest,
+                          double interaction) {
+    ResultRow result = row("system", "ours", "tunnel", true, 100.0, 90.0, 1000.0, task);
+    result.status = "arrived";
+    result.frame_median_ms = median;
+    result.frame_p99_ms = p99;
+    result.frame_max_ms = longest;
+    result.interaction_max_ms = interaction;
+    rows.push_back(result);
+  };
+  driven("t0", 7.0, 12.0, 20.0, 3.0);
+  driven("t1", 9.0, 36.0, 166.3, 140.9);
+  driven("t2", 8.0, 10.0, 11.0, 0.5);
+  ResultRow not_run = row("system", "ours", "tunnel", false, NAN, 90.0, NAN, "t3");
+  not_run.status = "runner_unavailable";
+  rows.push_back(not_run);
+  const std::string table = tablePlannerFrames(rows);
+  const std::string ours = lineStartingWith(table, "| ours |");
+  EXPECT_NE(ours.find(" 8.0 / 36.0 / 166.3 (140.9) |"), std::string::npos) << table;
+  EXPECT_NE(lineStartingWith(table, "| far |").find("| - |"), std::string::npos) << table;
+}
+
 }  // namespace
 }  // namespace ifar::scenarios
