@@ -21,6 +21,7 @@
 #include "bench/search_comparison/world_raster.hpp"
 #include "common/grid_map/readers.hpp"
 #include "common/json_text.hpp"
+#include "common/percentile.hpp"
 #include "planner/graph/prior_map.hpp"
 #include "planner/graph/search.hpp"
 #include "sim/generators/generators.hpp"
@@ -60,18 +61,6 @@ std::string baseName(const std::string& path)
   std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
   const auto dot = name.find_last_of('.');
   return dot == std::string::npos ? name : name.substr(0, dot);
-}
-
-/// Nearest-rank percentile of an unsorted list (p in 0..100).
-double percentile(std::vector<double> values, double p)
-{
-  if (values.empty()) {
-    return NAN;
-  }
-  std::sort(values.begin(), values.end());
-  const double rank = std::ceil(p / 100.0 * static_cast<double>(values.size()));
-  const std::size_t index = static_cast<std::size_t>(std::max(1.0, rank)) - 1;
-  return values[std::min(index, values.size() - 1)];
 }
 
 std::vector<std::string> splitList(const std::string& text)
@@ -350,9 +339,10 @@ int main(int argc, char** argv)
       }
     }
     const std::string success_text = std::to_string(successes) + "/" + std::to_string(times.size());
-    std::snprintf(line, sizeof(line), "%-10s %8s %12.3f %12.3f %12.3f %10.3f\n", planner.c_str(),
-                  success_text.c_str(), percentile(times, 50.0), percentile(times, 99.0),
-                  percentile(times, 100.0), ratio_count > 0 ? ratio_sum / ratio_count : NAN);
+    std::snprintf(
+        line, sizeof(line), "%-10s %8s %12.3f %12.3f %12.3f %10.3f\n", planner.c_str(), success_text.c_str(),
+        ifar::common::nearestRankPercentile(times, 50.0), ifar::common::nearestRankPercentile(times, 99.0),
+        ifar::common::nearestRankPercentile(times, 100.0), ratio_count > 0 ? ratio_sum / ratio_count : NAN);
     summary << line;
   }
   if (planner_error) {
