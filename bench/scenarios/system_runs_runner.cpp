@@ -46,12 +46,10 @@ SystemRun SystemRunner::run(const sim::World& world, const Task& task, bool inte
     run.sim_time_s = summary.sim_time_s;
     run.wall_time_s = summary.wall_time_s;
     run.pushes = summary.pushes;
-    if (summary.planner_frame.frames > 0) {  // else they stay NaN: no frame to time
-      run.frame_median_ms = summary.planner_frame.median_ms;
-      run.frame_p99_ms = summary.planner_frame.p99_ms;
-      run.frame_max_ms = summary.planner_frame.max_ms;
-      run.interaction_max_ms = summary.interaction.max_ms;
-    }
+    run.frame_median_ms = summary.planner_frame.median_ms;  // NaN when no frame was timed
+    run.frame_p99_ms = summary.planner_frame.p99_ms;
+    run.frame_max_ms = summary.planner_frame.max_ms;
+    run.interaction_max_ms = summary.interaction.max_ms;
     // One pose per control cycle is more than a plot needs: keep one in ten.
     for (std::size_t index = 0; index < summary.trajectory.size(); index += 10) {
       run.trajectory.push_back(summary.trajectory[index]);

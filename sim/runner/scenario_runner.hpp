@@ -11,6 +11,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -40,12 +41,12 @@ struct RunRequest {
 };
 
 /// Wall-clock milliseconds of one kind of planner work over a run's frames (this process's clock, so a
-/// loaded machine shows in them).
+/// loaded machine shows in them). NaN while no frame was timed.
 struct FrameTimes {
   std::size_t frames = 0;
-  double median_ms = 0.0;
-  double p99_ms = 0.0;  // nearest rank
-  double max_ms = 0.0;
+  double median_ms = std::numeric_limits<double>::quiet_NaN();
+  double p99_ms = std::numeric_limits<double>::quiet_NaN();  // nearest rank
+  double max_ms = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct RunSummary {

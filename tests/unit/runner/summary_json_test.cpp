@@ -43,6 +43,10 @@ TEST(RunnerSummaryJson, ReasonIsEscapedAndNonFiniteIsNull)
   EXPECT_NE(line.find("\"reason\":\"stopped: \\\"path\\\"\\\\\\n\\u0001\""), std::string::npos) << line;
   EXPECT_NE(line.find("\"distance_m\":null"), std::string::npos) << line;
   EXPECT_NE(line.find("\"arrived\":false"), std::string::npos) << line;
+  // No planner frame ran: its times are unknown, not zero.
+  EXPECT_NE(line.find("\"planner_frame_ms\":{\"frames\":0,\"median\":null,\"p99\":null,\"max\":null}"),
+            std::string::npos)
+      << line;
   EXPECT_EQ(line.find('\n'), std::string::npos);
 }
 
