@@ -565,7 +565,7 @@ int main(int argc, char** argv)
               << scenarios::tableOneSearchTime(rows) << "\n"
               << scenarios::tableTwoSpl(rows, stricter) << "\n"
               << scenarios::tableThreeSystem(rows) << "\n"
-              << scenarios::tablePlannerFrames(rows) << "\n"
+              << scenarios::tablePlannerFrames(rows, jobs_count) << "\n"
               << "Targets (issue 8):\n\n"
               << scenarios::targetCheck(rows);
   if (!notes.empty()) {

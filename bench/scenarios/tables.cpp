@@ -273,12 +273,13 @@ std::string tableThreeSystem(const std::vector<ResultRow>& rows)
   return text;
 }
 
-std::string tablePlannerFrames(const std::vector<ResultRow>& rows)
+std::string tablePlannerFrames(const std::vector<ResultRow>& rows, int parallel_runs)
 {
-  std::string text =
-      "Planner frames in the driven runs, wall ms (two runs at once on the machine's cores): median of the "
-      "runs' medians / worst run's p99 / longest frame; in brackets the longest interaction stage (no "
-      "frame budget in the runner).\n\n";
+  const std::string sharing =
+      parallel_runs == 1 ? std::string("one run at a time") : std::to_string(parallel_runs) + " runs at once";
+  std::string text = "Planner frames in the driven runs, wall ms (" + sharing +
+                     " on the machine's cores): median of the runs' medians / worst run's p99 / longest "
+                     "frame; in brackets the longest interaction stage (no frame budget in the runner).\n\n";
   text += header("planner");
   for (const std::string planner : {"far", "ours"}) {
     text += "| " + planner + " |";

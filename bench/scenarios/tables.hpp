@@ -20,8 +20,9 @@ std::string tableTwoSpl(const std::vector<ResultRow>& rows,
 std::string tableThreeSystem(const std::vector<ResultRow>& rows);
 /// The planner's frame times in the driven runs, per kind: the median of the runs' medians, the worst
 /// run's p99, the longest frame, and the longest interaction stage alone (the runner lifts the daemon's
-/// frame budget, so this is all the work one frame asked for).
-std::string tablePlannerFrames(const std::vector<ResultRow>& rows);
+/// frame budget, so this is all the work one frame asked for). `parallel_runs`: how many runs shared the
+/// machine at a time (--jobs), said in the caption since wall times depend on it.
+std::string tablePlannerFrames(const std::vector<ResultRow>& rows, int parallel_runs);
 /// The targets with the measured value and whether it is met (or by how much it is missed).
 std::string targetCheck(const std::vector<ResultRow>& rows);
 

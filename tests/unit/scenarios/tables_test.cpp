@@ -184,7 +184,9 @@ TEST(PlannerFrames, PerKindMedianOfMediansWorstP99LongestFrameAndInteraction)
   ResultRow not_run = row("system", "ours", "tunnel", false, NAN, 90.0, NAN, "t3");
   not_run.status = "runner_unavailable";
   rows.push_back(not_run);
-  const std::string table = tablePlannerFrames(rows);
+  const std::string table = tablePlannerFrames(rows, 2);
+  EXPECT_NE(table.find("wall ms (2 runs at once"), std::string::npos) << table;
+  EXPECT_NE(tablePlannerFrames(rows, 1).find("wall ms (one run at a time"), std::string::npos);
   const std::string ours = lineStartingWith(table, "| ours |");
   EXPECT_NE(ours.find(" 8.0 / 36.0 / 166.3 (140.9) |"), std::string::npos) << table;
   EXPECT_NE(lineStartingWith(table, "| far |").find("| - |"), std::string::npos) << table;
