@@ -368,14 +368,7 @@ void Executive::stepFollow(Cycle& cycle)
   } else if (static_cast<double>(cycle.now_us - stall_anchor_us_) * 1e-6 > settings_.stall_timeout_s) {
     countStall(cycle, pointAlongPath(cycle.pose.position(), path_.waypoints, waypoint_index_,
                                      kBlockedPassageLookAheadM));
-    task_ = Task::BackOff;
-    backoff_after_stall_ = true;
-    stall_escape_sign_ = 0.0;
-    stall_reversing_ = false;
-    stall_turn_heading_.reset();
-    backoff_start_.reset();
-    stall_anchor_us_ = -1;
-    stepBackOff(cycle);
+    beginStallEscape(cycle);
     return;
   }
   if (result.status == FollowerStatus::Arrived && waypoint_index_ < last) {
@@ -616,7 +609,17 @@ void Executive::stepApproach(Cycle& cycle)
   cycle.target = active_plan_.contact_pose.position();
   cycle.target_object_id = active_plan_.object_id;
   const common::Span<const geometry::Point> obstacles = objectFreeObstacles(cycle);
-  if (standingStill(cycle)) {
+  const bool standing_still = standingStill(cycle);
+  if (standing_still && approach_.phase() == ApproachPhase::ToStandoff &&
+      approach_escaped_object_ != active_plan_.object_id) {
+    // Stuck on the collision-free leg (e.g. turned toward a side door by a path that flipped, facing a
+    // wall): that says nothing about the object yet. Escape once as following does (back off, turn to
+    // the way on); following then starts the approach again.
+    approach_escaped_object_ = active_plan_.object_id;
+    beginStallEscape(cycle);
+    return;
+  }
+  if (standing_still) {
     // The contact cannot be reached (the stand-off point boxed in, the guard stopping the creep): the plan
     // costs more than planned, without bound. Algorithm 2's answer: tell the planner, wait for its replan.
     AffordanceEvent event;
@@ -649,6 +652,7 @@ void Executive::stepApproach(Cycle& cycle)
     return;
   }
   push_control_index_ = 0;
+  approach_escaped_object_.reset();
   tracker_.begin(active_plan_);
   tactile_.begin(active_plan_, max_push_force_n_);
   task_ = Task::Push;
@@ -927,6 +931,18 @@ std::optional<double> Executive::stallTurnHeading(const Cycle& cycle) const
     return std::nullopt;
   }
   return heading;
+}
+
+void Executive::beginStallEscape(Cycle& cycle)
+{
+  task_ = Task::BackOff;
+  backoff_after_stall_ = true;
+  stall_escape_sign_ = 0.0;
+  stall_reversing_ = false;
+  stall_turn_heading_.reset();
+  backoff_start_.reset();
+  stall_anchor_us_ = -1;
+  stepBackOff(cycle);
 }
 
 void Executive::stepBackOff(Cycle& cycle)

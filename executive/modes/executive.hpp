@@ -108,6 +108,9 @@ class Executive {
   void stepPush(Cycle& cycle);
   void stepReplanWait(Cycle& cycle);
   void stepBackOff(Cycle& cycle);
+  /// Following (or an approach's collision-free leg) got nowhere: back off straight or reversing along
+  /// the cost-to-go, turn to the way on, then follow again.
+  void beginStallEscape(Cycle& cycle);
   void startGoal(std::int64_t goal_id);
   const PushPlan* planForWaypoint(std::size_t index) const;
   int pushWaypointIndex(std::int64_t object_id) const;
@@ -168,6 +171,7 @@ class Executive {
   std::int64_t replan_requested_us_ = 0;
   std::optional<geometry::Point> backoff_start_;  // where BackOff began reversing (set on its first step)
   bool backoff_after_stall_ = false;              // BackOff because following got nowhere, not after a push
+  std::optional<std::int64_t> approach_escaped_object_;  // the object whose approach used its one escape
   double stall_escape_sign_ = 0.0;  // after a stall: -1 reversing, +1 driving ahead, 0 not chosen yet
   bool stall_reversing_ = false;    // the escape reverses along the cost-to-go to a waypoint behind
   std::optional<double> stall_turn_heading_;  // after the straight escape: turning on the spot to this

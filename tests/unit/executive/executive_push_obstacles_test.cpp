@@ -196,6 +196,55 @@ TEST_F(ExecutivePushObstaclesTest, AContactThatCannotBeReachedIsReportedAndRepla
   EXPECT_LE(cycles * kCycleUs * 1e-6, 2.0 * settings_.stall_timeout_s + 0.1);
 }
 
+TEST_F(ExecutivePushObstaclesTest, AnApproachStuckOnItsWayToTheStandOffPointEscapesOnceAndPushes)
+{
+  // Facing a wall 0.1 m ahead of the bumper, the stand-off point (0.9, 0) to the right: no arc is free
+  // and the footprint's corners (0.57 m from the pose) cannot turn on the spot. Standing still there says
+  // nothing about the object; the executive backs off, turns and approaches again instead of reporting it
+  // unpushable.
+  pose_ = Pose2{0.2, 0.0, 1.5707963267948966};
+  std::vector<Point> wall;
+  for (double x = -1.5; x <= 2.0; x += 0.05) {
+    wall.emplace_back(x, 0.55);
+  }
+  Output output;
+  bool escaped = false;
+  bool stalled_in_approach = false;
+  for (int index = 0; index < 3000 && output.status.pushes == 0; ++index) {
+    output = cycle(wall);
+    ASSERT_FALSE(output.affordance.has_value()) << "cycle " << index << ": " << output.affordance->text;
+    stalled_in_approach = stalled_in_approach || (output.status.mode == Mode::Approach && escaped);
+    escaped = escaped || output.status.reason.find("stalled") != std::string::npos;
+  }
+  EXPECT_TRUE(escaped) << output.status.reason;
+  EXPECT_EQ(output.status.pushes, 1) << output.status.reason;
+  EXPECT_NEAR(object_.x(), 3.15, 0.1);
+}
+
+TEST_F(ExecutivePushObstaclesTest, AnApproachStuckTwiceOnItsWayReportsTheContactAsNotReached)
+{
+  // Boxed in on all sides, 0.1 m from the footprint, short of the stand-off point: the one escape cannot
+  // help, and the second stand-still is reported as before.
+  pose_ = Pose2{0.2, 0.0, 1.5707963267948966};
+  std::vector<Point> box;
+  for (double along = -1.0; along <= 1.0; along += 0.05) {
+    box.emplace_back(0.2 + along, 0.55);
+    box.emplace_back(0.2 + along, -0.55);
+    box.emplace_back(-0.25, along);
+    box.emplace_back(0.65, along);
+  }
+  Output output;
+  std::optional<AffordanceEvent> event;
+  for (int index = 0; index < 3000 && !event; ++index) {
+    output = cycle(box);
+    event = output.affordance;
+  }
+  ASSERT_TRUE(event) << output.status.reason;
+  EXPECT_FALSE(event->pushable);
+  EXPECT_NE(event->text.find("contact not reached"), std::string::npos) << event->text;
+  EXPECT_EQ(output.status.pushes, 0);
+}
+
 TEST_F(ExecutivePushObstaclesTest, APushUnderWayFinishesWhenTheReplannedPathDropsIt)
 {
   Output output;
