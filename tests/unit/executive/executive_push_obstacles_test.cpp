@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include "executive/kinematics/angle.hpp"
 #include "executive/modes/executive.hpp"
 #include "tests/unit/executive/simulation.hpp"
 
@@ -202,18 +203,16 @@ TEST_F(ExecutivePushObstaclesTest, AnApproachStuckOnItsWayToTheStandOffPointEsca
   // and the footprint's corners (0.57 m from the pose) cannot turn on the spot. Standing still there says
   // nothing about the object; the executive backs off, turns and approaches again instead of reporting it
   // unpushable.
-  pose_ = Pose2{0.2, 0.0, 1.5707963267948966};
+  pose_ = Pose2{0.2, 0.0, kPi / 2.0};
   std::vector<Point> wall;
   for (double x = -1.5; x <= 2.0; x += 0.05) {
     wall.emplace_back(x, 0.55);
   }
   Output output;
   bool escaped = false;
-  bool stalled_in_approach = false;
   for (int index = 0; index < 3000 && output.status.pushes == 0; ++index) {
     output = cycle(wall);
     ASSERT_FALSE(output.affordance.has_value()) << "cycle " << index << ": " << output.affordance->text;
-    stalled_in_approach = stalled_in_approach || (output.status.mode == Mode::Approach && escaped);
     escaped = escaped || output.status.reason.find("stalled") != std::string::npos;
   }
   EXPECT_TRUE(escaped) << output.status.reason;
@@ -225,7 +224,7 @@ TEST_F(ExecutivePushObstaclesTest, AnApproachStuckTwiceOnItsWayReportsTheContact
 {
   // Boxed in on all sides, 0.1 m from the footprint, short of the stand-off point: the one escape cannot
   // help, and the second stand-still is reported as before.
-  pose_ = Pose2{0.2, 0.0, 1.5707963267948966};
+  pose_ = Pose2{0.2, 0.0, kPi / 2.0};
   std::vector<Point> box;
   for (double along = -1.0; along <= 1.0; along += 0.05) {
     box.emplace_back(0.2 + along, 0.55);
