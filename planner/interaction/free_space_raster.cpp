@@ -101,22 +101,22 @@ bool FreeSpaceRaster::onBorder(std::size_t cell) const
 }
 
 bool FreeSpaceRaster::searchFrom(std::size_t start, std::uint8_t blocked_layers,
-                                 const std::function<bool(std::size_t)>& visit) const
+                                 const std::function<bool(std::size_t cell, int steps)>& visit) const
 {
   if (start >= cells_.size() || (cells_[start] & blocked_layers) != 0) {
     return false;
   }
-  std::vector<bool> seen(cells_.size(), false);
+  std::vector<int> steps(cells_.size(), -1);
   std::vector<std::size_t> queue{start};
-  seen[start] = true;
+  steps[start] = 0;
   for (std::size_t head = 0; head < queue.size(); ++head) {
     const std::size_t cell = queue[head];
-    if (visit(cell)) {
+    if (visit(cell, steps[cell])) {
       return true;
     }
     forEachFreeNeighbour(cell, blocked_layers, [&](std::size_t next) {
-      if (!seen[next]) {
-        seen[next] = true;
+      if (steps[next] < 0) {
+        steps[next] = steps[cell] + 1;
         queue.push_back(next);
       }
     });

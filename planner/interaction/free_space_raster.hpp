@@ -34,10 +34,10 @@ class FreeSpaceRaster {
   /// last one of the first): where free space leaves the window.
   std::vector<std::size_t> borderCells() const;
 
-  /// Visits the cells carrying none of `blocked_layers` 4-connected to `start`, nearest first, until
-  /// `visit` returns true; returns whether it did.
+  /// Visits the cells carrying none of `blocked_layers` 4-connected to `start`, nearest first, with the
+  /// number of 4-neighbour steps from `start` to each, until `visit` returns true; returns whether it did.
   bool searchFrom(std::size_t start, std::uint8_t blocked_layers,
-                  const std::function<bool(std::size_t)>& visit) const;
+                  const std::function<bool(std::size_t cell, int steps)>& visit) const;
   /// The cell nearest `point` within `radius_cells` (Chebyshev rings) carrying none of `blocked_layers`.
   std::optional<std::size_t> nearestFree(const geometry::Point& point, std::uint8_t blocked_layers,
                                          int radius_cells) const;

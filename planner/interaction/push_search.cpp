@@ -88,6 +88,12 @@ struct QueueEntry {
 /// bench: 7.1 ms median, 37 ms at 0.1 m).
 constexpr double kSurroundingsResolutionM = 0.15;
 
+/// The way on may grow by going round the pushed object and by this much more: a way round through the
+/// rooms beside a corridor is no way on (office2x-3+4 t0: the fire-door box pushed 2 m along the corridor
+/// left 0.77 m either side and passed the check through the rooms south of it; the vehicle stalled at the
+/// box, then drove round through those rooms).
+constexpr double kOnwardDetourSlackM = 2.0;
+
 /// How far apart the corridor push judges the way on before refining (BM_BarInATunnelAllPairsCorridor:
 /// every 0.4 m cost about 25 ms more for the bar's 38 m push).
 constexpr double kCorridorJudgementStepM = 1.0;
@@ -137,7 +143,10 @@ struct PushPlanner::Passage {
   /// the raster's edge where the start's or the goal's side of the unmoved object leaves the raster
   /// (none when the object separates nothing there).
   std::vector<int> outlets;
-  int outlet_count = 0;  ///< every outlet must stay reachable from the start waypoint
+  int outlet_count = 0;  ///< every outlet must stay reachable from the start waypoint ...
+  /// ... within this many raster steps (index: outlet): its steps from the start waypoint with the object
+  /// gone plus onwardDetourSteps(); no bound where the object gone does not reach it either.
+  std::vector<int> outlet_step_limits;
 };
 
 PushPlanner::PushPlanner(const PushProblemObject& problem, const PusherSettings& pusher,
@@ -403,6 +412,36 @@ void PushPlanner::findOutlets(Passage& passage) const
   for (std::size_t position = 0; position < ring.size(); ++position) {
     passage.outlets[ring[position]] = stretches[position];
   }
+  // How far each outlet is with the object gone: the pushed object may lengthen that by going round it.
+  passage.outlet_step_limits.assign(static_cast<std::size_t>(passage.outlet_count) + 1,
+                                    std::numeric_limits<int>::max());
+  const auto open_start =
+      surroundings_->nearestFree(passage.segment.start, FreeSpaceRaster::kObstacle, waypointSearchCells());
+  if (!open_start) {
+    return;
+  }
+  const int detour = onwardDetourSteps();
+  int unmeasured = passage.outlet_count;
+  surroundings_->searchFrom(*open_start, FreeSpaceRaster::kObstacle, [&](std::size_t cell, int steps) {
+    const auto outlet = static_cast<std::size_t>(passage.outlets[cell]);
+    if (outlet != 0 && passage.outlet_step_limits[outlet] == std::numeric_limits<int>::max()) {
+      passage.outlet_step_limits[outlet] = steps + detour;
+      --unmeasured;
+    }
+    return unmeasured == 0;
+  });
+}
+
+int PushPlanner::onwardDetourSteps() const
+{
+  double reach = 0.0;
+  for (const Point& vertex : model_.footprint) {
+    reach = std::max(reach, vertex.norm());
+  }
+  // Half way round the object's disc grown by the clearance, in 4-neighbour steps (up to sqrt(2) times
+  // the straight length), plus the slack.
+  const double detour_m = kPi * (reach + objectClearance()) + kOnwardDetourSlackM;
+  return static_cast<int>(std::ceil(std::sqrt(2.0) * detour_m / kSurroundingsResolutionM));
 }
 
 bool PushPlanner::onwardOpen(const Pose2& pose, const Passage& passage) const
@@ -430,14 +469,21 @@ bool PushPlanner::onwardOpen(const Pose2& pose, const Passage& passage) const
   }
   std::vector<bool> reached(static_cast<std::size_t>(passage.outlet_count) + 1, false);
   int missing = passage.outlet_count;
-  return moved.searchFrom(*start_cell, blocked, [&](std::size_t cell) {
+  bool too_far = false;
+  // Nearest first: an outlet's first cell is as near as it gets.
+  moved.searchFrom(*start_cell, blocked, [&](std::size_t cell, int steps) {
     const auto outlet = static_cast<std::size_t>(passage.outlets[cell]);
     if (outlet != 0 && !reached[outlet]) {
+      if (steps > passage.outlet_step_limits[outlet]) {
+        too_far = true;
+        return true;
+      }
       reached[outlet] = true;
       --missing;
     }
     return missing == 0;
   });
+  return missing == 0 && !too_far;
 }
 
 bool PushPlanner::goalReached(const Pose2& pose, const Passage& passage) const

@@ -90,10 +90,14 @@ class PushPlanner {
   double objectClearance() const;
   bool passageClear(const geometry::Pose2& pose, const Passage& passage) const;
   /// Each stretch of the window's edge where the free space on either side of the unmoved object
-  /// leaves the window: the pushed object must leave every one reachable from the start waypoint.
+  /// leaves the window: the pushed object must leave every one reachable from the start waypoint, and
+  /// not much farther than with the object gone.
   void findOutlets(Passage& passage) const;
   /// How many raster cells round a waypoint findOutlets and onwardOpen look for its free cell.
   int waypointSearchCells() const;
+  /// How many raster steps longer than with the object gone the way to an outlet may be: round the
+  /// object and a slack.
+  int onwardDetourSteps() const;
   bool onwardOpen(const geometry::Pose2& pose, const Passage& passage) const;
   bool goalReached(const geometry::Pose2& pose, const Passage& passage) const;
 

@@ -228,6 +228,27 @@ TEST(PushSearchTest, AWayRoundTheFireDoorDoesNotLetTheBoxCloseTheCorridorBeyondI
   }
 }
 
+TEST(PushSearchTest, AWayRoundThroughARoomDoesNotLetTheBoxCloseTheCorridor)
+{
+  // With the box closing the corridor 2 m on, the corridor beyond is still reachable through the room
+  // south of it, 8 m round: that is no way on. Either way the box must leave the corridor a lane.
+  const InteractionSettings settings = defaultSettings();
+  const double lane = 2.0 * settings.pusher.inflation_m + settings.search.passage_margin_m;
+  const ObjectInteractions result =
+      planObjectInteractions(test::fireDoorWithALoopRoundItScene(), 0, ObjectPhysics{0.4, 20.0}, settings);
+  ASSERT_EQ(result.connectivity.waypoints.size(), 2U);
+  ASSERT_EQ(result.plans.size(), 2U);
+  for (const PairPlan& pair : result.plans) {
+    ASSERT_EQ(pair.plan.status, PlanStatus::Found) << toString(pair.plan.status);
+    const Pose2 end = pair.plan.controls.back().object_pose;
+    const auto [low, high] = spanInY(pair.plan.footprint, end);
+    const bool beside_wall = std::abs(end.x) < 0.8;
+    EXPECT_TRUE(beside_wall || low >= lane - 0.03 || 2.5 - high >= lane - 0.03)
+        << "box ends at (" << end.x << ", " << end.y << ", " << end.heading << ") spanning y " << low
+        << " .. " << high;
+  }
+}
+
 /// A 3.6 m x 1.2 m box across a 4 m corridor running south from an east-west corridor (y 1.4 .. 5.4, as in
 /// the generated tunnel), inflated like the planner's scene; each wall is cut off `margin` beyond the box.
 LocalScene boxAcrossACorridorScene(double margin)

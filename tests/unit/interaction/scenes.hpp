@@ -88,6 +88,19 @@ inline LocalScene fireDoorBesideARoomScene()
   return scene;
 }
 
+/// The fire door with a room along the corridor's south side (wall real -0.1 < y < 0, room down to y =
+/// -4), its doors at real -4.8 < x < -3.6 and 3.6 < x < 4.8: a box pushed 2 m along the corridor closes
+/// it, yet the corridor beyond stays reachable round through the room (office2x-3+4 t0).
+inline LocalScene fireDoorWithALoopRoundItScene()
+{
+  LocalScene scene = fireDoorScene();
+  scene.background[0] = rectangle(-8.35, -0.45, -4.45, 0.35);
+  scene.background.push_back(rectangle(-3.95, -0.45, 3.95, 0.35));
+  scene.background.push_back(rectangle(4.45, -0.45, 8.35, 0.35));
+  scene.background.push_back(rectangle(-8.35, -4.45, 8.35, -3.65));
+  return scene;
+}
+
 /// A passage (real 1.3 m wide, 0 < y < 6) from a corridor running south (real 4 m wide) to a room (real
 /// 10 m x 5 m) with a corridor on north; a box (real 1.0 m x 0.5 m) plugs its south mouth. Only pushed
 /// the whole 6 m through and out into the room does it leave the way on open.
