@@ -16,6 +16,10 @@ namespace ifar::bus {
 namespace {
 
 constexpr std::int64_t kErrorLogIntervalUs = 1'000'000;
+// Messages waiting per subscription before LCM drops more: about 0.27 s of VLP-16 packets (754/s). A loop
+// stalled that long loses nothing; one that falls behind for good still works on inputs younger than the
+// executive's staleness limits (0.5 s for obstacle points), instead of on an ever older backlog.
+constexpr int kSubscriptionQueueCapacity = 200;
 
 // Carries a handler through LCM's C callback (the C++ member-function template trips UBSan's vptr check).
 class RawSubscriber {
@@ -95,10 +99,14 @@ void RunLoop::subscribeRaw(const std::string& channel,
                            std::function<void(const lcm::ReceiveBuffer*, const std::string&)> handler)
 {
   auto subscriber = std::make_unique<RawSubscriber>(std::move(handler));
-  if (lcm_subscribe(lcm_.getUnderlyingLCM(), channel.c_str(), &RawSubscriber::dispatch, subscriber.get()) ==
-      nullptr) {
+  lcm_subscription_t* subscription =
+      lcm_subscribe(lcm_.getUnderlyingLCM(), channel.c_str(), &RawSubscriber::dispatch, subscriber.get());
+  if (subscription == nullptr) {
     throw std::runtime_error("cannot subscribe to channel '" + channel + "'");
   }
+  // LCM's own limit, 30 waiting messages, is 40 ms of VLP-16 packets: a loop not scheduled for that long
+  // on a busy machine would lose packets.
+  lcm_subscription_set_queue_capacity(subscription, kSubscriptionQueueCapacity);
   subscribers_->list.push_back(std::move(subscriber));
 }
 

@@ -317,8 +317,11 @@ TEST(PlannerLogReplay, RealLogReplaysToTheSameGraphsAndPathsAsTheLivePlanner)
   const LoggedRun run = readLog(log_path);
   // 2 s of a VLP-16 at 754 packets/s and a pose every 10 ms, every one of them in the log.
   EXPECT_GT(published.packets, 1500);
-  EXPECT_EQ(run.packets, published.packets);
-  EXPECT_EQ(run.poses, published.poses);
+  // lcm-logger keeps LCM's limit of 30 waiting messages (40 ms of packets), so a logger starved of the
+  // CPU loses packets; the test runs alone (RUN_SERIAL) to give it the machine.
+  const char* const starved = " (lcm-logger dropped messages: was the machine busy?)";
+  EXPECT_EQ(run.packets, published.packets) << starved;
+  EXPECT_EQ(run.poses, published.poses) << starved;
   EXPECT_EQ(run.undecodable, 0);
   ASSERT_GE(run.publications.size(), 3U);
 

@@ -1,9 +1,13 @@
 // The run loop over LCM's in-process memq:// provider: typed delivery, handlers that throw (anything) are
-// counted and the loop goes on, undecodable messages are counted, timers fire.
+// counted and the loop goes on, undecodable messages are counted, timers fire; over udpm:// a backlog is
+// kept.
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <stdexcept>
+#include <string>
+#include <thread>
 
 #include <spdlog/sinks/null_sink.h>
 
@@ -80,3 +84,35 @@ TEST(RunLoop, TimersFireAndStopEndsRun)
 }
 
 }  // namespace
+
+TEST(RunLoop, KeepsEveryMessageThatArrivesWhileTheLoopIsBusy)
+{
+  // LCM alone keeps 30 waiting messages per subscription and drops the rest (40 ms of VLP-16 packets).
+  // memq:// has no such limit, so this runs over UDP multicast, kept on the host.
+  const std::string url = "udpm://239.255.76.67:7751?ttl=0";
+  {
+    lcm::LCM probe(url);
+    if (!probe.good()) {
+      GTEST_SKIP() << "LCM cannot start on " << url << " (no multicast route on this machine?)";
+    }
+  }
+  ifar::bus::RunLoop loop(url, quietLogger());
+  std::vector<std::int64_t> received;
+  loop.subscribe<ifar::goal_t>("RUN_LOOP_TEST_GOAL", [&](const ifar::goal_t& message, std::int64_t) {
+    received.push_back(message.goal_id);
+  });
+  // 100 small messages fit the socket's default receive buffer even if LCM's receive thread never ran.
+  constexpr std::int64_t kWaiting = 100;
+  for (std::int64_t id = 1; id <= kWaiting; ++id) {
+    loop.publish("RUN_LOOP_TEST_GOAL", goal(id));
+    std::this_thread::sleep_for(std::chrono::microseconds(200));
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));  // every message has arrived and waits
+  for (std::int64_t spin = 0; spin < 4 * kWaiting && static_cast<std::int64_t>(received.size()) < kWaiting;
+       ++spin) {
+    loop.spinOnce(10);
+  }
+  ASSERT_EQ(static_cast<std::int64_t>(received.size()), kWaiting);
+  EXPECT_EQ(received.front(), 1);
+  EXPECT_EQ(received.back(), kWaiting);
+}
