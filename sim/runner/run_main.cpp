@@ -15,6 +15,7 @@
 
 #include "common/config.hpp"
 #include "sim/generators/generators.hpp"
+#include "sim/runner/graph_picture.hpp"
 #include "sim/runner/run_config.hpp"
 #include "sim/runner/run_picture.hpp"
 #include "sim/runner/scenario_runner.hpp"
@@ -77,6 +78,8 @@ int main(int argc, char** argv)
   bool no_interaction = false;
   bool json = false;
   std::string png_path;
+  std::string graph_png_path;
+  double graph_at_s = 0.0;
   std::string config_dir = "config";
   app.add_option("world", world_name,
                  "World file (YAML, docs/worlds.md), or a builtin (room, push_light, push_heavy, tunnel) or "
@@ -88,6 +91,19 @@ int main(int argc, char** argv)
   app.add_flag("--no-interaction", no_interaction, "FAR mode: plan without interaction edges (never push)");
   app.add_flag("--json", json, "Print the summary as one JSON object on the last line of stdout");
   app.add_option("--png", png_path, "Write a picture of the world, trajectory and final object poses");
+  app.add_option(
+      "--graph-png", graph_png_path,
+      "Write a picture of the planner's graph, polygons and path at its last frame (or at --graph-at), "
+      "with the trajectory so far");
+  std::string graph_window_text;
+  app.add_option("--graph-window", graph_window_text,
+                 "--graph-png draws only this world rectangle: X0,Y0,X1,Y1 in metres");
+  double graph_resolution_m = 0.05;
+  app.add_option("--graph-resolution", graph_resolution_m, "--graph-png metres per pixel")
+      ->capture_default_str();
+  CLI::Option* graph_at =
+      app.add_option("--graph-at", graph_at_s,
+                     "Simulated seconds: --graph-png draws the first planner frame at or after this time");
   app.add_option("--config-dir", config_dir,
                  "Directory with vehicle.yaml, planner.yaml, executive.yaml and sim.yaml")
       ->capture_default_str();
@@ -103,6 +119,30 @@ int main(int argc, char** argv)
   if (!(std::isfinite(max_time_s) && max_time_s > 0.0)) {
     std::cerr << "error: --max-time: must be a positive number of seconds, got " << max_time_s << "\n";
     return kExitBadInput;
+  }
+  if ((graph_at->count() > 0 || !graph_window_text.empty()) && graph_png_path.empty()) {
+    std::cerr << "error: --graph-at and --graph-window need --graph-png\n";
+    return kExitBadInput;
+  }
+  if (graph_at->count() > 0 && !(std::isfinite(graph_at_s) && graph_at_s >= 0.0)) {
+    std::cerr << "error: --graph-at: must be a number of seconds >= 0, got " << graph_at_s << "\n";
+    return kExitBadInput;
+  }
+  if (!(std::isfinite(graph_resolution_m) && graph_resolution_m > 0.0)) {
+    std::cerr << "error: --graph-resolution: must be a positive number of metres, got " << graph_resolution_m
+              << "\n";
+    return kExitBadInput;
+  }
+  ifar::planner_render::RenderOptions graph_options;
+  graph_options.metres_per_pixel = graph_resolution_m;
+  if (!graph_window_text.empty()) {
+    graph_options.window = ifar::planner_render::parseWindow(graph_window_text);
+    if (!graph_options.window) {
+      std::cerr << "error: --graph-window: expected X0,Y0,X1,Y1 (four numbers in metres, a rectangle with "
+                   "area), got '"
+                << graph_window_text << "'\n";
+      return kExitBadInput;
+    }
   }
   request.max_sim_time_s = max_time_s;
   request.planner.interaction_enabled = !no_interaction;
@@ -136,8 +176,14 @@ int main(int argc, char** argv)
   std::cerr << "world '" << request.world.name << "' from " << request.world.source << ", goal ("
             << request.goal.x() << ", " << request.goal.y() << "), "
             << (request.planner.interaction_enabled ? "interaction on" : "FAR mode (no interaction)") << "\n";
-  const ifar::runner::RunSummary summary =
-      ifar::runner::runScenario(request, [](const std::string& line) { std::cerr << line << "\n"; });
+  ifar::runner::GraphPicture graph_picture(graph_at->count() > 0 ? std::optional<double>(graph_at_s)
+                                                                 : std::nullopt);
+  ifar::runner::FrameObserver observe_frame;
+  if (!graph_png_path.empty()) {
+    observe_frame = [&graph_picture](const ifar::runner::FrameView& frame) { graph_picture.observe(frame); };
+  }
+  const ifar::runner::RunSummary summary = ifar::runner::runScenario(
+      request, [](const std::string& line) { std::cerr << line << "\n"; }, observe_frame);
   if (summary.reason.rfind("bad request: ", 0) == 0) {
     std::cerr << "error: " << summary.reason << "\n";
     return kExitBadInput;
@@ -150,6 +196,15 @@ int main(int argc, char** argv)
       std::cerr << "error: --png: " << error << "\n";
     } else {
       std::cerr << "picture written to " << png_path << "\n";
+    }
+  }
+  if (!graph_png_path.empty()) {
+    const std::string error = graph_picture.writePng(graph_png_path, graph_options);
+    if (!error.empty()) {
+      std::cerr << "error: --graph-png: " << error << "\n";
+    } else {
+      std::cerr << "planner graph at " << graph_picture.keptTimeS() << " s written to " << graph_png_path
+                << "\n";
     }
   }
   if (json) {

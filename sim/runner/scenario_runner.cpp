@@ -102,12 +102,13 @@ std::string requestProblem(const RunRequest& request)
 /// Everything one run owns; runScenario drives it step by step.
 class Scenario {
  public:
-  explicit Scenario(const RunRequest& request, const std::function<void(const std::string&)>& progress);
+  Scenario(const RunRequest& request, const std::function<void(const std::string&)>& progress,
+           const FrameObserver& observe_frame);
   RunSummary run();
 
  private:
   void feedSensors(const sim::StepOutput& output);
-  void planFrame(std::int64_t utime);
+  void planFrame(std::int64_t utime, double sim_time_s);
   void applyAffordance(const executive::AffordanceEvent& event, std::int64_t utime);
   void applyBlockedPassage(const executive::BlockedPassage& passage, std::int64_t utime);
   void publishPath(const planner::FrameResult& result, std::int64_t utime);
@@ -119,6 +120,7 @@ class Scenario {
 
   const RunRequest& request_;
   const std::function<void(const std::string&)>& progress_;
+  const FrameObserver& observe_frame_;
   sim::Simulator simulator_;
   planner::FrameAssembler assembler_;
   planner::Planner planner_;
@@ -146,9 +148,11 @@ planner::PlannerSettings runnerPlannerSettings(const RunRequest& request)
   return settings;
 }
 
-Scenario::Scenario(const RunRequest& request, const std::function<void(const std::string&)>& progress)
+Scenario::Scenario(const RunRequest& request, const std::function<void(const std::string&)>& progress,
+                   const FrameObserver& observe_frame)
     : request_(request),
       progress_(progress),
+      observe_frame_(observe_frame),
       simulator_(request.world, request.vehicle, request.simulator),
       assembler_(planner::InputSettings{}),
       planner_(runnerPlannerSettings(request)),
@@ -210,7 +214,7 @@ void Scenario::updateObstacleInputs(std::int64_t utime)
   }
 }
 
-void Scenario::planFrame(std::int64_t utime)
+void Scenario::planFrame(std::int64_t utime, double sim_time_s)
 {
   if (!latest_frame_) {
     return;
@@ -220,6 +224,9 @@ void Scenario::planFrame(std::int64_t utime)
   frame_ms_.push_back(result.status.timings.total_ms);
   interaction_ms_.push_back(result.status.timings.interaction_ms);
   publishPath(result, utime);
+  if (observe_frame_) {
+    observe_frame_(FrameView{sim_time_s, planner_, result, summary_.trajectory});
+  }
 }
 
 void Scenario::applyAffordance(const executive::AffordanceEvent& event, std::int64_t utime)
@@ -328,7 +335,7 @@ RunSummary Scenario::run()
       pending_blocked_passage_.reset();
     }
     if (output.time_ns >= next_planner_ns) {
-      planFrame(output.utime);
+      planFrame(output.utime, static_cast<double>(output.time_ns) * 1e-9);
       next_planner_ns += planner_ns;
     }
     if (output.time_ns >= next_resend_ns) {
@@ -363,7 +370,8 @@ RunSummary Scenario::run()
 
 }  // namespace
 
-RunSummary runScenario(const RunRequest& request, const std::function<void(const std::string&)>& progress)
+RunSummary runScenario(const RunRequest& request, const std::function<void(const std::string&)>& progress,
+                       const FrameObserver& observe_frame)
 {
   const auto started = std::chrono::steady_clock::now();
   RunSummary summary;
@@ -371,7 +379,7 @@ RunSummary runScenario(const RunRequest& request, const std::function<void(const
   std::unique_ptr<Scenario> scenario;
   if (problem.empty()) {
     try {
-      scenario = std::make_unique<Scenario>(request, progress);
+      scenario = std::make_unique<Scenario>(request, progress, observe_frame);
     } catch (const std::invalid_argument& error) {
       // The simulator or the executive refused the world or the vehicle.
       problem = error.what();

@@ -66,12 +66,24 @@ struct RunSummary {
   std::vector<geometry::Pose2> final_objects;  // ground truth object poses at the end, world-file order
 };
 
+/// One planner frame of a run as an observer sees it: the simulated time, the planner after the frame,
+/// what the frame gave and the vehicle's ground-truth trajectory so far. Valid during the call only.
+struct FrameView {
+  double sim_time_s;
+  const planner::Planner& planner;
+  const planner::FrameResult& result;
+  const std::vector<geometry::Pose2>& trajectory;
+};
+using FrameObserver = std::function<void(const FrameView& frame)>;
+
 /// Deterministic: the same request gives the same summary (except wall_time_s). `progress` (may be empty)
 /// is called about once per simulated second with a one-line status. A request that cannot run (goal or
 /// rates not finite and positive, a world the simulator refuses) ends at once with arrived false and the
 /// reason "bad request: ...". The planner's wall-clock budgets (push search time_budget_s, interaction
 /// frame_budget_ms) are lifted for the run (the expansion limit still holds), since a budget in wall time
-/// would make the outcome depend on the machine's load.
-RunSummary runScenario(const RunRequest& request, const std::function<void(const std::string&)>& progress);
+/// would make the outcome depend on the machine's load. `observe_frame` (may be empty) is called after
+/// each planner frame; it cannot change the run.
+RunSummary runScenario(const RunRequest& request, const std::function<void(const std::string&)>& progress,
+                       const FrameObserver& observe_frame = {});
 
 }  // namespace ifar::runner

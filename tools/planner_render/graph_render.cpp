@@ -1,8 +1,11 @@
 #include "tools/planner_render/graph_render.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <sstream>
+#include <string>
 #include <unordered_map>
 #include <vector>
 
@@ -74,7 +77,9 @@ render::Canvas renderGraph(const dv_graph_t& graph, const std::optional<path_t>&
     extent.add(0.0, 0.0);
   }
   const geometry::Point margin = geometry::Point::Constant(options.margin_m);
-  render::Canvas canvas(extent.min - margin, extent.max + margin, options.metres_per_pixel);
+  render::Canvas canvas =
+      options.window ? render::Canvas(options.window->low, options.window->high, options.metres_per_pixel)
+                     : render::Canvas(extent.min - margin, extent.max + margin, options.metres_per_pixel);
 
   // Outlines are counter-clockwise, free-space holes clockwise (planner_messages.hpp): each class is
   // filled, then its holes are cleared. Background first so movable objects stay visible on top.
@@ -158,15 +163,6 @@ void appendSpaced(std::vector<geometry::Point>& points, const geometry::Point& p
   }
 }
 
-std::vector<geometry::Point> planPoints(const push_plan_t& plan)
-{
-  std::vector<geometry::Point> points = {geometry::Point(plan.contact_x, plan.contact_y)};
-  for (const push_control_t& control : plan.controls) {
-    points.emplace_back(control.vehicle_x, control.vehicle_y);
-  }
-  return points;
-}
-
 /// A push plan is drawn once: plans that start at the same contact point for the same object are one.
 bool samePlan(const std::vector<geometry::Point>& first, const std::vector<geometry::Point>& second)
 {
@@ -175,6 +171,38 @@ bool samePlan(const std::vector<geometry::Point>& first, const std::vector<geome
 }
 
 }  // namespace
+
+std::optional<Window> parseWindow(const std::string& text)
+{
+  std::array<double, 4> values{};
+  std::istringstream stream(text);
+  for (std::size_t index = 0; index < values.size(); ++index) {
+    if (index > 0 && stream.get() != ',') {
+      return std::nullopt;
+    }
+    if (!(stream >> values[index]) || !std::isfinite(values[index])) {
+      return std::nullopt;
+    }
+  }
+  if (stream.peek() != std::char_traits<char>::eof()) {
+    return std::nullopt;
+  }
+  const Window window{{std::min(values[0], values[2]), std::min(values[1], values[3])},
+                      {std::max(values[0], values[2]), std::max(values[1], values[3])}};
+  if (!(window.high.x() > window.low.x() && window.high.y() > window.low.y())) {
+    return std::nullopt;
+  }
+  return window;
+}
+
+std::vector<geometry::Point> pushPlanPoints(const push_plan_t& plan)
+{
+  std::vector<geometry::Point> points = {geometry::Point(plan.contact_x, plan.contact_y)};
+  for (const push_control_t& control : plan.controls) {
+    points.emplace_back(control.vehicle_x, control.vehicle_y);
+  }
+  return points;
+}
 
 LastMessages readLastMessages(const std::string& log_path, const std::string& graph_channel,
                               const std::string& path_channel, const std::string& pose_channel,
@@ -202,7 +230,7 @@ LastMessages readLastMessages(const std::string& log_path, const std::string& gr
         ++last.undecodable;
       } else {
         for (const push_plan_t& plan : path.push_plans) {
-          std::vector<geometry::Point> points = planPoints(plan);
+          std::vector<geometry::Point> points = pushPlanPoints(plan);
           const bool known = std::any_of(last.run.push_plans.begin(), last.run.push_plans.end(),
                                          [&](const auto& drawn) { return samePlan(drawn, points); });
           if (!known) {

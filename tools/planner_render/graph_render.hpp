@@ -11,16 +11,28 @@
 #include <string>
 #include <vector>
 
+#include "common/geometry/point.hpp"
 #include "ifar/dv_graph_t.hpp"
 #include "ifar/path_t.hpp"
 #include "tools/render/canvas.hpp"
 
 namespace ifar::planner_render {
 
+/// A world-frame rectangle: its low and high corners.
+struct Window {
+  geometry::Point low = geometry::Point::Zero();
+  geometry::Point high = geometry::Point::Zero();
+};
+
 struct RenderOptions {
   double metres_per_pixel = 0.05;
-  double margin_m = 1.0;  // around everything drawn
+  double margin_m = 1.0;         // around everything drawn
+  std::optional<Window> window;  // draw this rectangle only (a close look at part of a large map)
 };
+
+/// "X0,Y0,X1,Y1" (metres, any two opposite corners) as a window; empty when the text is not four finite
+/// numbers or the rectangle has no area.
+std::optional<Window> parseWindow(const std::string& text);
 
 namespace colors {
 constexpr render::Color kBackground{220, 40, 40};
@@ -44,6 +56,9 @@ struct RunOverlay {
 /// Draws the graph (and the path and the run when given) on a canvas sized to their extent plus the margin.
 render::Canvas renderGraph(const dv_graph_t& graph, const std::optional<path_t>& path,
                            const RenderOptions& options, const RunOverlay& run = {});
+
+/// A push plan as the overlay draws it: the contact point, then the vehicle's end pose of each control.
+std::vector<geometry::Point> pushPlanPoints(const push_plan_t& plan);
 
 struct LastMessages {
   std::optional<dv_graph_t> graph;

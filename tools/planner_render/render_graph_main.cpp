@@ -33,7 +33,18 @@ int main(int argc, char** argv)
   app.add_option("--resolution", options.metres_per_pixel, "metres per pixel")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
+  std::string window_text;
+  app.add_option("--window", window_text, "draw only this world rectangle: X0,Y0,X1,Y1 in metres");
   CLI11_PARSE(app, argc, argv);
+  if (!window_text.empty()) {
+    options.window = ifar::planner_render::parseWindow(window_text);
+    if (!options.window) {
+      std::cerr
+          << "error: --window: expected X0,Y0,X1,Y1 (four numbers in metres, a rectangle with area), got '"
+          << window_text << "'\n";
+      return 1;
+    }
+  }
 
   const ifar::planner_render::LastMessages last = ifar::planner_render::readLastMessages(
       log_path, graph_channel, path_channel, pose_channel, truth_channel);

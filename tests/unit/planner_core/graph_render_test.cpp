@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -167,6 +168,33 @@ TEST(PlannerGraphRender, ClockwiseHolesAreClearedInsideTheirObstacle)
   EXPECT_EQ(at(canvas, 2.0, 2.0), (render::Color{255, 255, 255}));  // the free room
   EXPECT_EQ(at(canvas, 0.5, 0.5), colors::kBackground);             // the wall band
   EXPECT_EQ(at(canvas, 3.5, 2.0), colors::kBackground);
+}
+
+TEST(PlannerGraphRender, AWindowDrawsThatRectangleOnly)
+{
+  RenderOptions options;
+  options.metres_per_pixel = 0.01;          // the legend covers the top-left 1.5 m x 1.1 m
+  options.window = parseWindow("9,0,5,4");  // any two opposite corners
+  ASSERT_TRUE(options.window.has_value());
+  const render::Canvas canvas = renderGraph(exampleGraph(), examplePath(), options);
+  EXPECT_EQ(canvas.widthPixels(), 400);
+  EXPECT_EQ(canvas.heightPixels(), 400);
+  EXPECT_EQ(at(canvas, 7.0, 1.0), colors::kMovable);
+  EXPECT_LT(canvas.toPixel(geometry::Point(1.0, 1.0)).column, 0.0);  // the background square is left out
+}
+
+TEST(PlannerGraphRender, WindowTextIsFourNumbersMakingARectangle)
+{
+  const std::optional<Window> window = parseWindow("-1.5,2,3,4.25");
+  ASSERT_TRUE(window.has_value());
+  EXPECT_DOUBLE_EQ(window->low.x(), -1.5);
+  EXPECT_DOUBLE_EQ(window->low.y(), 2.0);
+  EXPECT_DOUBLE_EQ(window->high.x(), 3.0);
+  EXPECT_DOUBLE_EQ(window->high.y(), 4.25);
+  for (const char* bad :
+       {"", "1,2,3", "1,2,3,x", "1,2,3,4,5", "1,2,3,4 ", "1;2;3;4", "nan,0,1,1", "0,0,0,5", "0,3,5,3"}) {
+    EXPECT_FALSE(parseWindow(bad).has_value()) << "'" << bad << "'";
+  }
 }
 
 TEST(PlannerGraphRender, MissingLogIsAnError)

@@ -29,6 +29,12 @@ expect_bad_input "missing config directory" "/nonexistent/config/vehicle.yaml" \
   ifar-run "$room" --config-dir /nonexistent/config
 expect_bad_input "non-positive max time" "--max-time" \
   ifar-run "$room" --max-time 0 --config-dir "$config"
+expect_bad_input "graph time without a picture" "--graph-at and --graph-window need --graph-png" \
+  ifar-run "$room" --graph-at 2 --config-dir "$config"
+expect_bad_input "negative graph time" "--graph-at: must be a number of seconds >= 0" \
+  ifar-run "$room" --graph-png /tmp/unused.png --graph-at -1 --config-dir "$config"
+expect_bad_input "malformed graph window" "--graph-window: expected X0,Y0,X1,Y1" \
+  ifar-run "$room" --graph-png /tmp/unused.png --graph-window 1,2,3 --config-dir "$config"
 
 # --help works and names the command's options.
 if ! ifar-run --help | grep -q -- "--no-interaction"; then
@@ -37,7 +43,10 @@ fi
 # A short run that arrives: exit 0, the last stdout line is the JSON summary, the picture is written.
 picture="${IFAR_BINARY_DIR:-/tmp}/runner_cli_test.png"
 rm -f "$picture"
-output=$(ifar-run push_light --goal 8,6 --json --png "$picture" --config-dir "$config" 2>/dev/null)
+graph_picture="${IFAR_BINARY_DIR:-/tmp}/runner_cli_graph_test.png"
+rm -f "$graph_picture"
+output=$(ifar-run push_light --goal 8,6 --json --png "$picture" --graph-png "$graph_picture" --graph-at 2 \
+  --graph-window 0,0,12,12 --config-dir "$config" 2>/dev/null)
 code=$?
 last=$(printf '%s\n' "$output" | tail -n 1)
 case "$code:$last" in
@@ -47,7 +56,10 @@ esac
 if [ ! -s "$picture" ]; then
   echo "FAIL --png wrote no picture at $picture"; failures=$((failures + 1))
 fi
-rm -f "$picture"
+if [ ! -s "$graph_picture" ]; then
+  echo "FAIL --graph-png wrote no picture at $graph_picture"; failures=$((failures + 1))
+fi
+rm -f "$picture" "$graph_picture"
 
 # The same goal with one simulated second: not arrived, exit 1.
 output=$(ifar-run push_light --goal 8,6 --json --max-time 1 --config-dir "$config" 2>/dev/null)

@@ -1,5 +1,6 @@
 // Whole runs of the headless runner on the shipped config: arrival on a free path, determinism, pushing
-// the light box of the demo room, adapting to a box too heavy to push, and FAR mode going round.
+// the light box of the demo room, adapting to a box too heavy to push, FAR mode going round, and what a
+// frame observer (ifar-run --graph-png) sees.
 // Each run takes tens of simulated seconds (label "system").
 
 #include <algorithm>
@@ -10,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include "sim/runner/graph_picture.hpp"
 #include "sim/runner/run_config.hpp"
 #include "sim/runner/scenario_runner.hpp"
 #include "sim/runner/summary_json.hpp"
@@ -199,6 +201,51 @@ TEST(RunnerScenario, ProgressOncePerSimulatedSecondAndTimeout)
   EXPECT_GT(summary.distance_m, 0.5);
   EXPECT_NEAR(summary.goal_distance_m,
               (geometry::Point(10.0, 6.0) - summary.trajectory.back().position()).norm(), 0.05);
+}
+
+TEST(RunnerScenario, FrameObserverSeesEachPlannerFrameAndThePictureKeepsTheOneAsked)
+{
+  const sim::World world = sim::builtinRoom();
+  const RunRequest request = requestFor(world, geometry::Point(10.0, 6.0), 3.0);
+  std::vector<double> times;
+  std::vector<std::size_t> trajectory_sizes;
+  GraphPicture at_one_second(1.0);
+  GraphPicture last(std::nullopt);
+  GraphPicture too_late(10.0);
+  const RunSummary summary = runScenario(request, {}, [&](const FrameView& frame) {
+    times.push_back(frame.sim_time_s);
+    trajectory_sizes.push_back(frame.trajectory.size());
+    EXPECT_TRUE(frame.result.path.valid);
+    EXPECT_GT(frame.planner.graph().vertexCount(), 0U);
+    at_one_second.observe(frame);
+    last.observe(frame);
+    too_late.observe(frame);
+  });
+  // The planner runs at 2.5 Hz on the latest whole revolution: every 0.4 s, in order.
+  ASSERT_EQ(times.size(), summary.planner_frame.frames);
+  ASSERT_GE(times.size(), 6U);
+  for (std::size_t index = 1; index < times.size(); ++index) {
+    EXPECT_NEAR(times[index] - times[index - 1], 0.4, 1e-6);
+    EXPECT_GT(trajectory_sizes[index], trajectory_sizes[index - 1]);  // 20 control cycles more
+  }
+  EXPECT_LE(trajectory_sizes.back(), summary.trajectory.size());
+
+  ASSERT_TRUE(at_one_second.kept());
+  EXPECT_GE(at_one_second.keptTimeS(), 1.0);
+  EXPECT_LT(at_one_second.keptTimeS(), 1.4);
+  ASSERT_TRUE(last.kept());
+  EXPECT_DOUBLE_EQ(last.keptTimeS(), times.back());
+  EXPECT_FALSE(too_late.kept());
+  const std::string png = std::string(IFAR_BINARY_DIR) + "/runner_graph_picture_test.png";
+  std::remove(png.c_str());
+  EXPECT_EQ(at_one_second.writePng(png), "");
+  std::FILE* written = std::fopen(png.c_str(), "rb");
+  ASSERT_NE(written, nullptr);
+  std::fseek(written, 0, SEEK_END);
+  EXPECT_GT(std::ftell(written), 1000L);
+  std::fclose(written);
+  std::remove(png.c_str());
+  EXPECT_EQ(too_late.writePng(png), png + ": no planner frame at or after 10.0 s of simulated time");
 }
 
 }  // namespace

@@ -1,0 +1,42 @@
+#include "sim/runner/graph_picture.hpp"
+
+#include <fmt/format.h>
+
+#include "planner/daemon/planner_messages.hpp"
+
+namespace ifar::runner {
+
+void GraphPicture::observe(const FrameView& frame)
+{
+  if (at_s_ && (graph_ || frame.sim_time_s < *at_s_)) {
+    return;
+  }
+  planner::PlannerMessages messages = planner::toMessages(frame.planner, frame.result, 0);
+  graph_ = std::move(messages.graph);
+  path_ = std::move(messages.path);
+  trajectory_.clear();
+  trajectory_.reserve(frame.trajectory.size());
+  for (const geometry::Pose2& pose : frame.trajectory) {
+    trajectory_.push_back(pose.position());
+  }
+  kept_time_s_ = frame.sim_time_s;
+}
+
+std::string GraphPicture::writePng(const std::string& path,
+                                   const planner_render::RenderOptions& options) const
+{
+  if (!graph_) {
+    return at_s_ ? fmt::format("{}: no planner frame at or after {:.1f} s of simulated time", path, *at_s_)
+                 : fmt::format("{}: the run had no planner frame", path);
+  }
+  planner_render::RunOverlay overlay;
+  overlay.trajectory = trajectory_;
+  if (path_) {
+    for (const push_plan_t& plan : path_->push_plans) {
+      overlay.push_plans.push_back(planner_render::pushPlanPoints(plan));
+    }
+  }
+  return planner_render::renderGraph(*graph_, path_, options, overlay).writePng(path);
+}
+
+}  // namespace ifar::runner

@@ -1,0 +1,42 @@
+#pragma once
+// The planner's view at one frame of a headless run as a PNG (ifar-run --graph-png): its global graph,
+// this frame's polygons and the path, drawn as ifar-render-graph draws them from a log, with the
+// vehicle's trajectory up to that frame and the path's push plans. For seeing why a run went where it did.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "common/geometry/point.hpp"
+#include "ifar/dv_graph_t.hpp"
+#include "ifar/path_t.hpp"
+#include "sim/runner/scenario_runner.hpp"
+#include "tools/planner_render/graph_render.hpp"
+
+namespace ifar::runner {
+
+class GraphPicture {
+ public:
+  /// Keeps the first frame at or after `at_s` simulated seconds, or the last frame when `at_s` is empty.
+  explicit GraphPicture(std::optional<double> at_s) : at_s_(at_s) {}
+
+  /// A FrameObserver for runScenario.
+  void observe(const FrameView& frame);
+
+  /// Whether a frame was kept, and its simulated time.
+  bool kept() const { return graph_.has_value(); }
+  double keptTimeS() const { return kept_time_s_; }
+
+  /// Writes the kept frame to `path` (all of it, or `options.window`): "" on success, else the error
+  /// (naming the path, or saying that no frame was kept).
+  std::string writePng(const std::string& path, const planner_render::RenderOptions& options = {}) const;
+
+ private:
+  std::optional<double> at_s_;
+  std::optional<dv_graph_t> graph_;
+  std::optional<path_t> path_;
+  std::vector<geometry::Point> trajectory_;
+  double kept_time_s_ = 0.0;
+};
+
+}  // namespace ifar::runner
