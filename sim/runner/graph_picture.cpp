@@ -19,6 +19,10 @@ void GraphPicture::observe(const FrameView& frame)
   for (const geometry::Pose2& pose : frame.trajectory) {
     trajectory_.push_back(pose.position());
   }
+  object_poses_.clear();
+  for (const sim::physics::BodyState& object : frame.objects) {
+    object_poses_.push_back(object.pose);
+  }
   kept_time_s_ = frame.sim_time_s;
 }
 
@@ -35,6 +39,16 @@ std::string GraphPicture::writePng(const std::string& path,
     for (const push_plan_t& plan : path_->push_plans) {
       overlay.push_plans.push_back(planner_render::pushPlanPoints(plan));
     }
+  }
+  for (const sim::StaticObstacle& obstacle : world_.obstacles) {
+    overlay.truth.push_back(obstacle.outline);
+  }
+  for (std::size_t index = 0; index < world_.objects.size() && index < object_poses_.size(); ++index) {
+    geometry::Polygon placed;
+    for (const geometry::Point& corner : world_.objects[index].outline) {
+      placed.push_back(object_poses_[index].transform(corner));
+    }
+    overlay.truth.push_back(std::move(placed));
   }
   return planner_render::renderGraph(*graph_, path_, options, overlay).writePng(path);
 }

@@ -176,8 +176,8 @@ int main(int argc, char** argv)
   std::cerr << "world '" << request.world.name << "' from " << request.world.source << ", goal ("
             << request.goal.x() << ", " << request.goal.y() << "), "
             << (request.planner.interaction_enabled ? "interaction on" : "FAR mode (no interaction)") << "\n";
-  ifar::runner::GraphPicture graph_picture(graph_at->count() > 0 ? std::optional<double>(graph_at_s)
-                                                                 : std::nullopt);
+  ifar::runner::GraphPicture graph_picture(
+      request.world, graph_at->count() > 0 ? std::optional<double>(graph_at_s) : std::nullopt);
   ifar::runner::FrameObserver observe_frame;
   if (!graph_png_path.empty()) {
     observe_frame = [&graph_picture](const ifar::runner::FrameView& frame) { graph_picture.observe(frame); };

@@ -108,7 +108,7 @@ class Scenario {
 
  private:
   void feedSensors(const sim::StepOutput& output);
-  void planFrame(std::int64_t utime, double sim_time_s);
+  void planFrame(const sim::StepOutput& output);
   void applyAffordance(const executive::AffordanceEvent& event, std::int64_t utime);
   void applyBlockedPassage(const executive::BlockedPassage& passage, std::int64_t utime);
   void publishPath(const planner::FrameResult& result, std::int64_t utime);
@@ -214,7 +214,7 @@ void Scenario::updateObstacleInputs(std::int64_t utime)
   }
 }
 
-void Scenario::planFrame(std::int64_t utime, double sim_time_s)
+void Scenario::planFrame(const sim::StepOutput& output)
 {
   if (!latest_frame_) {
     return;
@@ -223,9 +223,10 @@ void Scenario::planFrame(std::int64_t utime, double sim_time_s)
   latest_frame_.reset();
   frame_ms_.push_back(result.status.timings.total_ms);
   interaction_ms_.push_back(result.status.timings.interaction_ms);
-  publishPath(result, utime);
+  publishPath(result, output.utime);
   if (observe_frame_) {
-    observe_frame_(FrameView{sim_time_s, planner_, result, summary_.trajectory});
+    observe_frame_(FrameView{static_cast<double>(output.time_ns) * 1e-9, planner_, result,
+                             summary_.trajectory, output.objects});
   }
 }
 
@@ -335,7 +336,7 @@ RunSummary Scenario::run()
       pending_blocked_passage_.reset();
     }
     if (output.time_ns >= next_planner_ns) {
-      planFrame(output.utime, static_cast<double>(output.time_ns) * 1e-9);
+      planFrame(output);
       next_planner_ns += planner_ns;
     }
     if (output.time_ns >= next_resend_ns) {

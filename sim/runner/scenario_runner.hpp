@@ -67,12 +67,14 @@ struct RunSummary {
 };
 
 /// One planner frame of a run as an observer sees it: the simulated time, the planner after the frame,
-/// what the frame gave and the vehicle's ground-truth trajectory so far. Valid during the call only.
+/// what the frame gave, the vehicle's ground-truth trajectory so far and the objects' ground-truth states
+/// (world-file order). Valid during the call only.
 struct FrameView {
   double sim_time_s;
   const planner::Planner& planner;
   const planner::FrameResult& result;
   const std::vector<geometry::Pose2>& trajectory;
+  const std::vector<sim::physics::BodyState>& objects;
 };
 using FrameObserver = std::function<void(const FrameView& frame)>;
 

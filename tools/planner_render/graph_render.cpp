@@ -137,6 +137,9 @@ render::Canvas renderGraph(const dv_graph_t& graph, const std::optional<path_t>&
   for (const auto& [id, track] : run.object_tracks) {
     canvas.drawPolyline(track, colors::kObjectTrack, 2);
   }
+  for (const geometry::Polygon& outline : run.truth) {
+    canvas.drawPolygon(outline, render::ShapeStyle{std::nullopt, colors::kTruth, 2});
+  }
   if (!run.trajectory.empty()) {
     canvas.drawPolyline(run.trajectory, colors::kTrajectory, 2);
   }
@@ -145,6 +148,9 @@ render::Canvas renderGraph(const dv_graph_t& graph, const std::optional<path_t>&
   }
   if (!run.object_tracks.empty()) {
     legend.push_back({"object track", colors::kObjectTrack});
+  }
+  if (!run.truth.empty()) {
+    legend.push_back({"ground truth", colors::kTruth});
   }
   if (!run.trajectory.empty()) {
     legend.push_back({"trajectory", colors::kTrajectory});

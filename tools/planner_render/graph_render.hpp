@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "common/geometry/point.hpp"
+#include "common/geometry/polygon.hpp"
 #include "ifar/dv_graph_t.hpp"
 #include "ifar/path_t.hpp"
 #include "tools/render/canvas.hpp"
@@ -44,6 +45,7 @@ constexpr render::Color kPath{30, 80, 230};
 constexpr render::Color kTrajectory{20, 20, 20};
 constexpr render::Color kPushPlan{200, 40, 200};
 constexpr render::Color kObjectTrack{0, 110, 40};
+constexpr render::Color kTruth{90, 60, 160};
 }  // namespace colors
 
 /// What a run did, drawn over the graph; every part may be empty.
@@ -51,6 +53,9 @@ struct RunOverlay {
   std::vector<geometry::Point> trajectory;               ///< vehicle positions in time order
   std::vector<std::vector<geometry::Point>> push_plans;  ///< contact pose then each control's end pose
   std::map<std::int64_t, std::vector<geometry::Point>> object_tracks;  ///< per object id, only if it moved
+  /// Simulated runs: the world's walls and objects as they really are, thin outlines over the planner's
+  /// inflated polygons (what perception missed shows as an outline with no colour under it).
+  std::vector<geometry::Polygon> truth;
 };
 
 /// Draws the graph (and the path and the run when given) on a canvas sized to their extent plus the margin.

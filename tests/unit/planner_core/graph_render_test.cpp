@@ -170,16 +170,20 @@ TEST(PlannerGraphRender, ClockwiseHolesAreClearedInsideTheirObstacle)
   EXPECT_EQ(at(canvas, 3.5, 2.0), colors::kBackground);
 }
 
-TEST(PlannerGraphRender, AWindowDrawsThatRectangleOnly)
+TEST(PlannerGraphRender, AWindowDrawsThatRectangleOnlyWithTheTruthOutlined)
 {
   RenderOptions options;
   options.metres_per_pixel = 0.01;          // the legend covers the top-left 1.5 m x 1.1 m
   options.window = parseWindow("9,0,5,4");  // any two opposite corners
   ASSERT_TRUE(options.window.has_value());
-  const render::Canvas canvas = renderGraph(exampleGraph(), examplePath(), options);
+  RunOverlay run;
+  run.truth = {{{6.5, 0.5}, {8.5, 0.5}, {8.5, 2.5}, {6.5, 2.5}}};  // the object really is here
+  const render::Canvas canvas = renderGraph(exampleGraph(), examplePath(), options, run);
   EXPECT_EQ(canvas.widthPixels(), 400);
   EXPECT_EQ(canvas.heightPixels(), 400);
   EXPECT_EQ(at(canvas, 7.0, 1.0), colors::kMovable);
+  EXPECT_TRUE(colorNear(canvas, 8.5, 1.5, colors::kTruth));   // its outline, beyond the perceived square
+  EXPECT_FALSE(colorNear(canvas, 7.0, 1.5, colors::kTruth));  // outlines only
   EXPECT_LT(canvas.toPixel(geometry::Point(1.0, 1.0)).column, 0.0);  // the background square is left out
 }
 

@@ -209,12 +209,13 @@ TEST(RunnerScenario, FrameObserverSeesEachPlannerFrameAndThePictureKeepsTheOneAs
   const RunRequest request = requestFor(world, geometry::Point(10.0, 6.0), 3.0);
   std::vector<double> times;
   std::vector<std::size_t> trajectory_sizes;
-  GraphPicture at_one_second(1.0);
-  GraphPicture last(std::nullopt);
-  GraphPicture too_late(10.0);
+  GraphPicture at_one_second(world, 1.0);
+  GraphPicture last(world, std::nullopt);
+  GraphPicture too_late(world, 10.0);
   const RunSummary summary = runScenario(request, {}, [&](const FrameView& frame) {
     times.push_back(frame.sim_time_s);
     trajectory_sizes.push_back(frame.trajectory.size());
+    EXPECT_EQ(frame.objects.size(), world.objects.size());
     EXPECT_TRUE(frame.result.path.valid);
     EXPECT_GT(frame.planner.graph().vertexCount(), 0U);
     at_one_second.observe(frame);
