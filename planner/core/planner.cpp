@@ -83,7 +83,9 @@ Planner::Planner(const PlannerSettings& settings)
       interaction_(settings_.interaction),
       background_memory_(settings_.perception.cell_size_m),
       sealed_(settings_.perception.cell_size_m),
-      affordances_(trackerSettings(settings_).association_distance_m)
+      affordances_(trackerSettings(settings_).association_distance_m),
+      outline_memory_(settings_.interaction_enabled ? settings_.interaction.loop.outline_memory_restart_m
+                                                    : 0.0)
 {
 }
 
@@ -243,10 +245,12 @@ FrameResult Planner::processFrame(const FrameInput& frame)
   for (std::size_t outline = 0; outline < movable_polygons.size(); ++outline) {
     result.polygon_ids[movable_polygons[outline]] = tracked.polygon_ids[outline];
   }
+  rememberOutlines(tracked, movable_polygons, robot, result);
   affordances_.seen(tracked.seen);
   for (const std::int64_t dropped : tracked.dropped) {
     interaction_.drop(dropped, global_);
     affordances_.dropped(dropped);
+    outline_memory_.forget(dropped);
   }
   for (const TrackedObject& object : tracked.seen) {
     if (const std::optional<LearnedAffordance> learned = affordances_.inherit(object.id, object.centroid)) {
@@ -308,6 +312,30 @@ FrameResult Planner::processFrame(const FrameInput& frame)
   fillSizes(status);
   status.timings.total_ms = millisecondsSince(frame_start);
   return result;
+}
+
+void Planner::rememberOutlines(TrackingResult& tracked, const std::vector<std::size_t>& movable_polygons,
+                               const geometry::Point& robot, FrameResult& result)
+{
+  if (settings_.interaction.loop.outline_memory_restart_m <= 0.0 || !settings_.interaction_enabled) {
+    return;
+  }
+  for (TrackedObject& object : tracked.seen) {
+    // An object the sensor split into several outlines is planned with their hull already; its pieces
+    // stay as they are in the frame's polygons.
+    std::size_t polygons = 0;
+    std::size_t polygon = 0;
+    for (std::size_t outline = 0; outline < movable_polygons.size(); ++outline) {
+      if (tracked.polygon_ids[outline] == object.id) {
+        ++polygons;
+        polygon = movable_polygons[outline];
+      }
+    }
+    object.outline = outline_memory_.remember(object.id, object.outline, robot);
+    if (polygons == 1) {
+      result.polygons[polygon].vertices = object.outline;
+    }
+  }
 }
 
 FrameResult Planner::replan()

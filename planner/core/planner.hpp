@@ -16,6 +16,7 @@
 #include "planner/core/frame_assembler.hpp"
 #include "planner/core/interaction_stage.hpp"
 #include "planner/core/object_tracker.hpp"
+#include "planner/core/outline_memory.hpp"
 #include "planner/core/planner_status.hpp"
 #include "planner/graph/dv_graph.hpp"
 #include "planner/graph/obstacle_set.hpp"
@@ -131,6 +132,10 @@ class Planner {
   /// Search and state for the current robot position; fills result.path and the status.
   void search(FrameResult& result);
   void fillSizes(PlannerStatus& status) const;
+  /// Replaces each seen object's outline (and its polygon of the frame) with what the outline memory
+  /// keeps of it.
+  void rememberOutlines(TrackingResult& tracked, const std::vector<std::size_t>& movable_polygons,
+                        const geometry::Point& robot, FrameResult& result);
   bool goalOnKnownMap(const geometry::Point& goal) const;
 
   PlannerSettings settings_;
@@ -140,6 +145,7 @@ class Planner {
   perception::BackgroundMemory background_memory_;
   perception::BackgroundMemory sealed_;  // passages the vehicle could not get through: walls for good
   AffordanceMemory affordances_;
+  OutlineMemory outline_memory_;                 // partly seen objects: the most of each one seen
   std::optional<graph::ObstacleSet> obstacles_;  // last frame's observed obstacles, for attachment
   std::optional<Goal> goal_;
   std::optional<geometry::Point> robot_;

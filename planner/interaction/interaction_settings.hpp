@@ -90,6 +90,9 @@ struct PlanningLoopSettings {
   double reach_m = 50.0;
   double track_association_m = 1.0;  ///< largest centroid jump of one object between frames
   int track_drop_frames = 5;         ///< frames unseen while in view before an object is dropped
+  /// An object keeps the convex hull of its outlines (a part hidden in one view shows in another) until
+  /// the vehicle comes this close to it; 0: every frame's outline as seen (planner/core/outline_memory.hpp).
+  double outline_memory_restart_m = 0.0;
 };
 
 /// Everything one object's interaction planning needs.

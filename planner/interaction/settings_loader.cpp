@@ -74,6 +74,11 @@ InteractionSettings loadInteractionSettings(const common::ConfigNode& node,
   std::size_t drop_frames = static_cast<std::size_t>(loop.track_drop_frames);
   readCount(node, "track_drop_frames", drop_frames);
   loop.track_drop_frames = static_cast<int>(drop_frames);
+  loop.outline_memory_restart_m =
+      node.optional<double>("outline_memory_restart_m", loop.outline_memory_restart_m);
+  if (!(std::isfinite(loop.outline_memory_restart_m) && loop.outline_memory_restart_m >= 0.0)) {
+    node.fail("outline_memory_restart_m", "must be a number >= 0 (0: off)");
+  }
   node.rejectUnknownKeys();
   return settings;
 }

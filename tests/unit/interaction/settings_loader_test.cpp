@@ -47,7 +47,8 @@ TEST(InteractionSettingsLoaderTest, ReadsThePlannerLoopKeysAndThePassageMargin)
   const InteractionSettings settings = loadInteractionSettings(
       common::ConfigNode::loadString(
           "default_mass_kg: 35\ndefault_ground_friction: 0.6\nframe_budget_ms: 20\n"
-          "track_association_m: 0.8\ntrack_drop_frames: 7\npassage_margin_m: 0\nreach_m: 45\n",
+          "track_association_m: 0.8\ntrack_drop_frames: 7\npassage_margin_m: 0\nreach_m: 45\n"
+          "outline_memory_restart_m: 1.5\n",
           "planner.yaml"),
       common::VehicleSettings{});
   EXPECT_DOUBLE_EQ(settings.loop.default_physics.mass_kg, 35.0);
@@ -56,11 +57,15 @@ TEST(InteractionSettingsLoaderTest, ReadsThePlannerLoopKeysAndThePassageMargin)
   EXPECT_DOUBLE_EQ(settings.loop.track_association_m, 0.8);
   EXPECT_EQ(settings.loop.track_drop_frames, 7);
   EXPECT_DOUBLE_EQ(settings.loop.reach_m, 45.0);
+  EXPECT_DOUBLE_EQ(settings.loop.outline_memory_restart_m, 1.5);
+  EXPECT_DOUBLE_EQ(load("").loop.outline_memory_restart_m, 0.0);  // off unless asked for
   EXPECT_DOUBLE_EQ(settings.search.passage_margin_m, 0.0);
   EXPECT_THAT(errorOf("passage_margin_m: -0.1\n"), ::testing::HasSubstr("passage_margin_m"));
   EXPECT_THAT(errorOf("frame_budget_ms: 0\n"), ::testing::HasSubstr("frame_budget_ms"));
   EXPECT_THAT(errorOf("track_drop_frames: 0\n"), ::testing::HasSubstr("track_drop_frames"));
   EXPECT_THAT(errorOf("reach_m: 0\n"), ::testing::HasSubstr("reach_m"));
+  EXPECT_THAT(errorOf("outline_memory_restart_m: -1\n"),
+              ::testing::HasSubstr("key 'outline_memory_restart_m': must be a number >= 0 (0: off)"));
 }
 
 TEST(InteractionSettingsLoaderTest, TheExtendedSearchRadiusIsOffOrBeyondTheSearchRadius)
