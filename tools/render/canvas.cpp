@@ -38,6 +38,10 @@ Canvas::Canvas(const geometry::Point& world_min, const geometry::Point& world_ma
       world_max_(world_max),
       metres_per_pixel_(metres_per_pixel > 0.0 && std::isfinite(metres_per_pixel) ? metres_per_pixel : 1.0)
 {
+  const double longest_side_m = std::max(world_max.x() - world_min.x(), world_max.y() - world_min.y());
+  if (std::isfinite(longest_side_m)) {
+    metres_per_pixel_ = std::max(metres_per_pixel_, longest_side_m / kMaxSidePixels);
+  }
   const int width = pixelsFor(world_max.x() - world_min.x(), metres_per_pixel_);
   const int height = pixelsFor(world_max.y() - world_min.y(), metres_per_pixel_);
   image_->pixels = cv::Mat(height, width, CV_8UC3, bgr(background));

@@ -51,7 +51,10 @@ struct PixelPoint {
 class Canvas {
  public:
   /// Covers the world rectangle [world_min, world_max] at `metres_per_pixel` (> 0; width and height are
-  /// ceil(extent / metres_per_pixel), at least 1), filled with `background`.
+  /// ceil(extent / metres_per_pixel), at least 1), filled with `background`. A resolution that would make
+  /// a side longer than kMaxSidePixels is coarsened to fit (metresPerPixel() tells what was used): a
+  /// 330 m tunnel at 1 cm a pixel would take 2.7 GB.
+  static constexpr int kMaxSidePixels = 16384;
   Canvas(const geometry::Point& world_min, const geometry::Point& world_max, double metres_per_pixel,
          Color background = Color{255, 255, 255});
   ~Canvas();

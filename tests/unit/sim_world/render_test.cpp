@@ -47,6 +47,18 @@ TEST(RenderCanvas, MapsWorldToPixelsWithYUp)
   EXPECT_DOUBLE_EQ(top_right.row, 0.0);
 }
 
+TEST(RenderCanvas, AResolutionTooFineForTheSizeIsCoarsenedToTheLongestSideAllowed)
+{
+  // A 330 m strip 3.3 m wide at 1 mm a pixel would be 330,000 pixels long.
+  const Canvas canvas(geometry::Point(0, 0), geometry::Point(330, 3.3), 0.001);
+  EXPECT_EQ(canvas.widthPixels(), Canvas::kMaxSidePixels);
+  EXPECT_DOUBLE_EQ(canvas.metresPerPixel(), 330.0 / Canvas::kMaxSidePixels);
+  EXPECT_EQ(canvas.heightPixels(), 164);                                    // the same scale both ways
+  const Canvas small(geometry::Point(0, 0), geometry::Point(10, 5), 0.01);  // fits: as asked
+  EXPECT_DOUBLE_EQ(small.metresPerPixel(), 0.01);
+  EXPECT_EQ(small.widthPixels(), 1000);
+}
+
 TEST(RenderCanvas, DrawsFilledPolygonsSegmentsAndCircles)
 {
   Canvas canvas(geometry::Point(0, 0), geometry::Point(10, 10), 0.1);
