@@ -7,7 +7,7 @@ namespace ifar::planner {
 geometry::Polygon OutlineMemory::remember(std::int64_t id, const geometry::Polygon& outline,
                                           const geometry::Point& vehicle)
 {
-  if (restart_distance_m_ <= 0.0 || outline.size() < 3) {
+  if (!enabled() || outline.size() < 3) {
     return outline;
   }
   const bool at_object = geometry::containsPoint(outline, vehicle) ||

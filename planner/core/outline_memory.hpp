@@ -25,6 +25,8 @@ class OutlineMemory {
   geometry::Polygon remember(std::int64_t id, const geometry::Polygon& outline,
                              const geometry::Point& vehicle);
   void forget(std::int64_t id) { hulls_.erase(id); }
+  /// False when constructed with 0: remember() gives every outline back as seen.
+  bool enabled() const { return restart_distance_m_ > 0.0; }
   std::size_t size() const { return hulls_.size(); }
 
  private:

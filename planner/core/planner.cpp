@@ -317,7 +317,7 @@ FrameResult Planner::processFrame(const FrameInput& frame)
 void Planner::rememberOutlines(TrackingResult& tracked, const std::vector<std::size_t>& movable_polygons,
                                const geometry::Point& robot, FrameResult& result)
 {
-  if (settings_.interaction.loop.outline_memory_restart_m <= 0.0 || !settings_.interaction_enabled) {
+  if (!outline_memory_.enabled()) {
     return;
   }
   for (TrackedObject& object : tracked.seen) {

@@ -138,8 +138,7 @@ int main(int argc, char** argv)
   if (!graph_window_text.empty()) {
     graph_options.window = ifar::planner_render::parseWindow(graph_window_text);
     if (!graph_options.window) {
-      std::cerr << "error: --graph-window: expected X0,Y0,X1,Y1 (four numbers in metres, a rectangle with "
-                   "area), got '"
+      std::cerr << "error: --graph-window: expected " << ifar::planner_render::kWindowFormat << ", got '"
                 << graph_window_text << "'\n";
       return kExitBadInput;
     }

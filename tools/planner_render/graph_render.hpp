@@ -31,6 +31,9 @@ struct RenderOptions {
   std::optional<Window> window;  // draw this rectangle only (a close look at part of a large map)
 };
 
+/// What parseWindow accepts, for error messages.
+constexpr const char* kWindowFormat = "X0,Y0,X1,Y1 (four numbers in metres, a rectangle with area)";
+
 /// "X0,Y0,X1,Y1" (metres, any two opposite corners) as a window; empty when the text is not four finite
 /// numbers or the rectangle has no area.
 std::optional<Window> parseWindow(const std::string& text);

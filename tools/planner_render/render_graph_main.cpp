@@ -39,9 +39,8 @@ int main(int argc, char** argv)
   if (!window_text.empty()) {
     options.window = ifar::planner_render::parseWindow(window_text);
     if (!options.window) {
-      std::cerr
-          << "error: --window: expected X0,Y0,X1,Y1 (four numbers in metres, a rectangle with area), got '"
-          << window_text << "'\n";
+      std::cerr << "error: --window: expected " << ifar::planner_render::kWindowFormat << ", got '"
+                << window_text << "'\n";
       return 1;
     }
   }

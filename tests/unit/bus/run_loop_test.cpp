@@ -83,8 +83,6 @@ TEST(RunLoop, TimersFireAndStopEndsRun)
   EXPECT_EQ(ticks, 3);
 }
 
-}  // namespace
-
 TEST(RunLoop, KeepsEveryMessageThatArrivesWhileTheLoopIsBusy)
 {
   // LCM alone keeps 30 waiting messages per subscription and drops the rest (40 ms of VLP-16 packets).
@@ -116,3 +114,5 @@ TEST(RunLoop, KeepsEveryMessageThatArrivesWhileTheLoopIsBusy)
   EXPECT_EQ(received.front(), 1);
   EXPECT_EQ(received.back(), kWaiting);
 }
+
+}  // namespace
