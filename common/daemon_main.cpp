@@ -46,8 +46,9 @@ int runDaemon(int argc, char** argv, const DaemonDescription& description,
       throw ConfigError(std::string("log level: ") + error.what());
     }
     logger = makeLogger(description.name, logging);
-    DaemonContext context{config, logger,
-                          lcm_url.empty() ? config.optional<std::string>("lcm_url", "") : lcm_url};
+    // Read even when --lcm-url overrides it, so the daemon's unknown-key check accepts the key.
+    const std::string configured_url = config.optional<std::string>("lcm_url", "");
+    DaemonContext context{config, logger, lcm_url.empty() ? configured_url : lcm_url};
     return body(context);
   } catch (const ConfigError& error) {
     std::cerr << "ifar-" << description.name << ": error: " << error.what() << std::endl;

@@ -169,8 +169,6 @@ int main(int argc, char** argv)
        "config/velodyne.yaml"},
       [&replay](common::DaemonContext& context) {
         const velodyne::DriverSettings settings = velodyne::loadDriverSettings(context.config);
-        context.config.optional<std::string>("lcm_url", "");  // read by runDaemon unless --lcm-url is given
-        context.config.optional<std::string>("log_level", "");
         context.config.rejectUnknownKeys();
         bus::RunLoop loop(context.lcm_url, context.logger);
         velodyne::PacketForwarder forwarder(settings, loop, context.logger);

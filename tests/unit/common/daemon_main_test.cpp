@@ -1,0 +1,82 @@
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "common/daemon_main.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+class DaemonMain : public ::testing::Test {
+ protected:
+  void SetUp() override
+  {
+    directory_ = fs::temp_directory_path() /
+                 ("ifar-daemon-main-" + std::to_string(::getpid()) + "-" +
+                  ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(directory_);
+  }
+  void TearDown() override { fs::remove_all(directory_); }
+
+  std::string writeConfig(const std::string& text) const
+  {
+    const fs::path path = directory_ / "daemon.yaml";
+    std::ofstream(path) << text;
+    return path.string();
+  }
+
+  /// Runs runDaemon with `arguments` (after the program name, console logging only); the body reads
+  /// nothing but what runDaemon reads, checks for unknown keys and records the URL it was given.
+  int run(std::vector<std::string> arguments)
+  {
+    arguments.insert(arguments.begin(), {"ifar-test", "--log-dir", ""});
+    std::vector<char*> argv;
+    for (std::string& argument : arguments) {
+      argv.push_back(argument.data());
+    }
+    return ifar::common::runDaemon(static_cast<int>(argv.size()), argv.data(),
+                                   {"daemon-main-test", "test daemon", ""},
+                                   [this](ifar::common::DaemonContext& context) {
+                                     context.config.rejectUnknownKeys();
+                                     url_ = context.lcm_url;
+                                     return 0;
+                                   });
+  }
+
+  fs::path directory_;
+  std::string url_ = "(not recorded)";
+};
+
+constexpr const char* kConfigured = "udpm://239.255.76.67:7667?ttl=0";
+constexpr const char* kCommandLine = "udpm://239.255.76.68:7668?ttl=0";
+
+TEST_F(DaemonMain, TheConfigsLcmUrlIsUsed)
+{
+  const std::string config = writeConfig(std::string("lcm_url: ") + kConfigured + "\nlog_level: warn\n");
+  EXPECT_EQ(run({"--config", config}), 0);
+  EXPECT_EQ(url_, kConfigured);
+}
+
+// The config keeps its lcm_url for the vehicle; a test or a replay on another bus overrides it.
+TEST_F(DaemonMain, LcmUrlOnTheCommandLineOverridesTheConfigsWithoutMakingItAnUnknownKey)
+{
+  const std::string config = writeConfig(std::string("lcm_url: ") + kConfigured + "\nlog_level: warn\n");
+  EXPECT_EQ(run({"--config", config, "--lcm-url", kCommandLine}), 0);
+  EXPECT_EQ(url_, kCommandLine);
+}
+
+TEST_F(DaemonMain, AnUnknownKeyStopsStartUpWithExitCodeTwo)
+{
+  const std::string config = writeConfig("lcm_urll: udpm://239.255.76.67:7667\n");
+  EXPECT_EQ(run({"--config", config, "--lcm-url", kCommandLine}), 2);
+  EXPECT_EQ(url_, "(not recorded)");
+}
+
+}  // namespace
