@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <string>
 
+#include "common/bus/heartbeat.hpp"
 #include "common/bus/run_loop.hpp"
 #include "common/daemon_main.hpp"
 #include "common/rate_limiter.hpp"
@@ -87,6 +88,7 @@ int run(ifar::common::DaemonContext& context)
   auto& logger = *context.logger;
 
   ifar::bus::RunLoop loop(context.lcm_url, context.logger);
+  ifar::bus::publishHeartbeats(loop, context.logger->name());
   auto opened = ifar::can::openBus(settings.bus, loop.lcm());
   if (!opened.bus) {
     logger.error("{}", opened.error);

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <string>
 
+#include "common/bus/heartbeat.hpp"
 #include "common/bus/run_loop.hpp"
 #include "common/daemon_main.hpp"
 #include "common/rate_limiter.hpp"
@@ -48,6 +49,7 @@ int run(ifar::common::DaemonContext& context, const std::string& vehicle_path,
   auto& logger = *context.logger;
 
   ifar::bus::RunLoop loop(context.lcm_url, context.logger);
+  ifar::bus::publishHeartbeats(loop, context.logger->name());
   auto opened = ifar::can::openBus(bus_settings, loop.lcm());
   if (!opened.bus) {
     logger.error("{}", opened.error);

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "common/bus/heartbeat.hpp"
 #include "common/bus/run_loop.hpp"
 #include "common/daemon_main.hpp"
 #include "common/time.hpp"
@@ -171,6 +172,7 @@ int main(int argc, char** argv)
         const velodyne::DriverSettings settings = velodyne::loadDriverSettings(context.config);
         context.config.rejectUnknownKeys();
         bus::RunLoop loop(context.lcm_url, context.logger);
+        bus::publishHeartbeats(loop, context.logger->name());
         velodyne::PacketForwarder forwarder(settings, loop, context.logger);
         velodyne::StatusClock status_clock;
         loop.every(settings.status_period_s,

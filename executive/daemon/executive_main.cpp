@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <string>
 
+#include "common/bus/heartbeat.hpp"
 #include "common/bus/run_loop.hpp"
 #include "common/daemon_main.hpp"
 #include "common/time.hpp"
@@ -33,6 +34,7 @@ int runExecutive(ifar::common::DaemonContext& context, const std::string& vehicl
       ifar::common::loadVehicleSettings(ifar::common::ConfigNode::loadFile(vehicle_file));
 
   ifar::bus::RunLoop loop(context.lcm_url, context.logger);
+  ifar::bus::publishHeartbeats(loop, context.logger->name());
   ifar::executive::ExecutiveNode node(loop, settings, obstacles, vehicle, context.logger);
   loop.every(kControlPeriodS, [&node]() { node.cycle(ifar::common::nowMicroseconds()); });
 

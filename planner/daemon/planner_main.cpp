@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "common/bus/heartbeat.hpp"
 #include "common/bus/run_loop.hpp"
 #include "common/daemon_main.hpp"
 #include "common/rate_limiter.hpp"
@@ -88,6 +89,7 @@ int runPlanner(common::DaemonContext& context)
   }
 
   bus::RunLoop loop(context.lcm_url, logger);
+  bus::publishHeartbeats(loop, logger->name());
   LoopState state(daemon.input);
   PlannerWorker<PlannerMessages> worker(
       std::move(planner),

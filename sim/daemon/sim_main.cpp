@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 
+#include "common/bus/heartbeat.hpp"
 #include "common/bus/run_loop.hpp"
 #include "common/daemon_main.hpp"
 #include "common/rate_limiter.hpp"
@@ -125,6 +126,7 @@ int runSimulator(ifar::common::DaemonContext& context, const CommandLine& comman
   }
 
   ifar::bus::RunLoop loop(context.lcm_url, context.logger);
+  ifar::bus::publishHeartbeats(loop, context.logger->name());
   auto opened = ifar::can::openBus(bus_settings, loop.lcm());
   if (!opened.bus) {
     logger.error("CAN bus: {}", opened.error);

@@ -24,6 +24,7 @@
 #include "common/time.hpp"
 #include "ifar/affordance_t.hpp"
 #include "ifar/exec_status_t.hpp"
+#include "ifar/heartbeat_t.hpp"
 #include "ifar/path_t.hpp"
 #include "ifar/velocity_cmd_t.hpp"
 #include "ifar/world_state_t.hpp"
@@ -146,6 +147,7 @@ struct LoggedRun {
   std::vector<ifar::affordance_t> affordances;
   std::vector<ifar::path_t> paths_after_first_affordance;
   int max_push_plans = 0;
+  std::map<std::string, int> heartbeats;  // beats per process name
 };
 
 template <typename Message>
@@ -177,6 +179,11 @@ LoggedRun readLog(const std::string& path)
       ifar::affordance_t affordance;
       if (decodeEvent(*event, affordance)) {
         run.affordances.push_back(affordance);
+      }
+    } else if (event->channel == "HEARTBEAT") {
+      ifar::heartbeat_t beat;
+      if (decodeEvent(*event, beat)) {
+        ++run.heartbeats[beat.process];
       }
     } else if (event->channel == "GLOBAL_PATH") {
       ifar::path_t path_message;
@@ -240,6 +247,12 @@ class SystemTest : public ::testing::Test {
                                 "EXEC_STATUS", "VELOCITY_CMD", "FORCE", "SIM_GROUND_TRUTH"}) {
       EXPECT_GT(run.channel_counts.count(channel) != 0 ? run.channel_counts.at(channel) : 0, 0)
           << channel << " is missing from the log";
+    }
+    // Every daemon beats once a second; the shortest run lasts well over 30 s.
+    for (const char* process :
+         {"sim", "velodyne-driver", "force-driver", "motor-driver", "planner", "executive"}) {
+      EXPECT_GE(run.heartbeats.count(process) != 0 ? run.heartbeats.at(process) : 0, 20)
+          << "too few heartbeats from " << process << " in the log";
     }
   }
 
