@@ -66,10 +66,16 @@ LcmBridgeBus::LcmBridgeBus(lcm::LCM& lcm, std::string channel) : lcm_(lcm), chan
   subscription_ = lcm_.subscribe(channel_, &LcmBridgeBus::handleMessage, this);
 }
 
-void LcmBridgeBus::handleMessage(const lcm::ReceiveBuffer* /*buffer*/, const std::string& /*channel*/,
-                                 const ifar::can_frame_t* message)
+// Raw, not typed: LCM's typed subscription prints an error for a message that does not decode and drops
+// it uncounted; here it counts as a bad frame.
+void LcmBridgeBus::handleMessage(const lcm::ReceiveBuffer* buffer, const std::string& /*channel*/)
 {
-  onMessage(*message);
+  ifar::can_frame_t message{};
+  if (message.decode(buffer->data, 0, static_cast<int>(buffer->data_size)) < 0) {
+    ++counters_.bad_frames;
+    return;
+  }
+  onMessage(message);
 }
 
 LcmBridgeBus::~LcmBridgeBus()

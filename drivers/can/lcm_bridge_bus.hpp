@@ -39,8 +39,7 @@ class LcmBridgeBus final : public CanBus {
   void onMessage(const ifar::can_frame_t& message);
 
  private:
-  void handleMessage(const lcm::ReceiveBuffer* buffer, const std::string& channel,
-                     const ifar::can_frame_t* message);
+  void handleMessage(const lcm::ReceiveBuffer* buffer, const std::string& channel);
 
   lcm::LCM& lcm_;
   std::string channel_;

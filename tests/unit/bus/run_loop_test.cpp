@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 #include <string>
@@ -13,6 +14,7 @@
 
 #include "common/bus/run_loop.hpp"
 #include "ifar/goal_t.hpp"
+#include "ifar/velodyne_packet_t.hpp"
 
 namespace {
 
@@ -68,6 +70,33 @@ TEST(RunLoop, CountsMessagesThatDoNotDecode)
   loop.spinOnce(10);
   EXPECT_EQ(delivered, 1);
   EXPECT_EQ(loop.badMessages(), 1);
+}
+
+// LCM's generated decode resizes an array to the length the message claims before reading it: a negative
+// length throws std::length_error, which used to end the daemon.
+TEST(RunLoop, CountsMessagesWhoseDecodeThrows)
+{
+  ifar::bus::RunLoop loop("memq://", quietLogger());
+  std::vector<std::int32_t> sizes;
+  loop.subscribe<ifar::velodyne_packet_t>(
+      "VELODYNE_PACKET", [&](const ifar::velodyne_packet_t& packet, std::int64_t) { sizes.push_back(packet.size); });
+  ifar::velodyne_packet_t packet{};
+  packet.size = 3;
+  packet.data = {7, 8, 9};
+  std::vector<std::uint8_t> bytes(static_cast<std::size_t>(packet.getEncodedSize()));
+  ASSERT_EQ(packet.encode(bytes.data(), 0, static_cast<int>(bytes.size())), static_cast<int>(bytes.size()));
+  std::vector<std::uint8_t> negative_size = bytes;
+  constexpr std::size_t kSizeOffset = 8 + 8 + 4 + 4;  // fingerprint, utime, device time, port
+  std::fill_n(negative_size.begin() + kSizeOffset, 4, std::uint8_t{0xff});
+  loop.lcm().publish("VELODYNE_PACKET", negative_size.data(), static_cast<unsigned>(negative_size.size()));
+  loop.lcm().publish("VELODYNE_PACKET", bytes.data(), static_cast<unsigned>(bytes.size()));
+  for (int spin = 0; spin < 10 && sizes.empty(); ++spin) {
+    loop.spinOnce(10);
+  }
+  loop.spinOnce(10);
+  EXPECT_EQ(sizes, (std::vector<std::int32_t>{3}));
+  EXPECT_EQ(loop.badMessages(), 1);
+  EXPECT_EQ(loop.handlerErrors(), 0);
 }
 
 TEST(RunLoop, TimersFireAndStopEndsRun)

@@ -57,6 +57,11 @@ TEST(LcmBridge, TwoEndpointsTalkAndOwnFramesAreNotEchoed)
   lcm.publish("CAN_TEST", &bad);
   EXPECT_EQ(second.receive(microseconds(10'000)).status, IoStatus::kTimeout);
   EXPECT_EQ(second.counters().bad_frames, 1);
+
+  const std::uint8_t garbage[4] = {1, 2, 3, 4};  // not a can_frame_t: counted, not printed by LCM
+  lcm.publish("CAN_TEST", garbage, sizeof(garbage));
+  EXPECT_EQ(second.receive(microseconds(10'000)).status, IoStatus::kTimeout);
+  EXPECT_EQ(second.counters().bad_frames, 2);
 }
 
 }  // namespace
