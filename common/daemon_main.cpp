@@ -4,6 +4,7 @@
 #include <exception>
 #include <iostream>
 
+#include "common/command_line.hpp"
 #include "common/logging.hpp"
 
 namespace ifar::common {
@@ -26,10 +27,8 @@ int runDaemon(int argc, char** argv, const DaemonDescription& description,
   if (add_options) {
     add_options(app);
   }
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::ParseError& error) {
-    return app.exit(error);
+  if (const auto exit_code = parseCommandLine(app, argc, argv)) {
+    return *exit_code;
   }
 
   std::shared_ptr<spdlog::logger> logger;

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -230,14 +231,15 @@ int plot(const std::vector<SweepPoint>& points, const std::string& output)
 
 int main(int argc, char** argv)
 {
+  const bool help = argc == 2 && (std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0);
   if (argc != 3) {
     std::fprintf(
-        stderr,
+        help ? stdout : stderr,
         "usage: graph_sweep_plot SWEEP.csv OUT.png\n"
         "  SWEEP.csv: columns vertices, cpu_median_us, cpu_p99_us (graph_bench "
         "--benchmark_filter=SearchSweep\n"
         "  --benchmark_out=SWEEP.csv --benchmark_out_format=csv, or bench/graph/results/search_sweep.csv)\n");
-    return 2;
+    return help ? 0 : 2;
   }
   std::string error;
   const auto points = ifar::graph::bench::readSweep(argv[1], error);

@@ -36,6 +36,7 @@
 #include "bench/scenarios/system_runs.hpp"
 #include "bench/scenarios/tables.hpp"
 #include "bench/scenarios/task_selection.hpp"
+#include "common/command_line.hpp"
 #include "common/config.hpp"
 #include "common/vehicle.hpp"
 #include "planner/interaction/settings_loader.hpp"
@@ -269,7 +270,9 @@ int main(int argc, char** argv)
   app.add_flag("--smoke", smoke,
                "CI subset: one task per kind, 0.3 s sampling cap; the runner drives the room task only, 60 s "
                "simulated");
-  CLI11_PARSE(app, argc, argv);
+  if (const auto exit_code = ifar::common::parseCommandLine(app, argc, argv)) {
+    return *exit_code;
+  }
   if (smoke) {
     tasks = 1;
     sampling.time_cap_s = std::min(sampling.time_cap_s, 0.3);

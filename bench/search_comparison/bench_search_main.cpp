@@ -19,6 +19,7 @@
 #include "bench/baselines/sampling_planners.hpp"
 #include "bench/search_comparison/query_set.hpp"
 #include "bench/search_comparison/world_raster.hpp"
+#include "common/command_line.hpp"
 #include "common/grid_map/readers.hpp"
 #include "common/json_text.hpp"
 #include "common/percentile.hpp"
@@ -143,7 +144,9 @@ int main(int argc, char** argv)
       ->check(CLI::Range(1.0, 100.0))
       ->capture_default_str();
   app.add_flag("--unknown-free", unknown_free, "treat unknown map_server cells as free (default: blocked)");
-  CLI11_PARSE(app, argc, argv);
+  if (const auto exit_code = ifar::common::parseCommandLine(app, argc, argv)) {
+    return *exit_code;
+  }
 
   const std::vector<std::string> planners = splitList(planner_list);
   for (const std::string& planner : planners) {

@@ -15,6 +15,10 @@ int main(int argc, char** argv)
         "lcmtypes/fingerprints.txt holds these lines for every deployed type.\n");
     return 0;
   }
+  if (argc > 1) {
+    std::fprintf(stderr, "ifar-lcm-fingerprints: takes no arguments, got '%s' (see --help)\n", argv[1]);
+    return 2;
+  }
   for (const auto& sample : ifar::lcmtypes_samples::allSampleMessages()) {
     std::printf("%s 0x%016llx\n", sample.type_name.c_str(),
                 static_cast<unsigned long long>(sample.fingerprint));

@@ -6,6 +6,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "common/command_line.hpp"
 #include "sim/generators/generators.hpp"
 #include "sim/world/world_file.hpp"
 
@@ -19,7 +20,9 @@ int main(int argc, char** argv)
   app.add_option("--kind", kind_text, "room | room_objects | office | tunnel | demo_room")->required();
   app.add_option("--seed", seed, "random seed: the same seed gives the same world")->capture_default_str();
   app.add_option("--out", out, "world file to write (default: standard output)");
-  CLI11_PARSE(app, argc, argv);
+  if (const auto exit_code = ifar::common::parseCommandLine(app, argc, argv)) {
+    return *exit_code;
+  }
 
   const auto kind = ifar::sim::parseWorldKind(kind_text);
   if (!kind) {

@@ -7,6 +7,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "common/command_line.hpp"
 #include "common/config.hpp"
 #include "common/vehicle.hpp"
 #include "sim/importers/grid_importer.hpp"
@@ -45,7 +46,9 @@ int main(int argc, char** argv)
                  "grid maps: start x y [heading_rad] in metres (default: free cell nearest the centre)")
       ->expected(2, 3);
   app.add_option("--goal", goal, "grid maps: goal x y in metres")->expected(2);
-  CLI11_PARSE(app, argc, argv);
+  if (const auto exit_code = ifar::common::parseCommandLine(app, argc, argv)) {
+    return *exit_code;
+  }
 
   ifar::common::VehicleSettings vehicle;
   if (!vehicle_path.empty()) {

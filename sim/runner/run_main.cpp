@@ -13,6 +13,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "common/command_line.hpp"
 #include "common/config.hpp"
 #include "sim/generators/generators.hpp"
 #include "sim/runner/graph_picture.hpp"
@@ -107,7 +108,9 @@ int main(int argc, char** argv)
   app.add_option("--config-dir", config_dir,
                  "Directory with vehicle.yaml, planner.yaml, executive.yaml and sim.yaml")
       ->capture_default_str();
-  CLI11_PARSE(app, argc, argv);
+  if (const auto exit_code = ifar::common::parseCommandLine(app, argc, argv)) {
+    return *exit_code;
+  }
 
   ifar::runner::RunRequest request;
   try {

@@ -10,6 +10,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "common/command_line.hpp"
 #include "tools/ifar/process.hpp"
 
 namespace {
@@ -183,7 +184,9 @@ int main(int argc, char** argv)
   replay->add_option("--channels", replay_channels, "regular expression of channels to play (default all)");
   replay->add_option("--lcm-url", url, "LCM URL (default: LCM_DEFAULT_URL or LCM's default)");
 
-  CLI11_PARSE(app, argc, argv);
+  if (const auto exit_code = ifar::common::parseCommandLine(app, argc, argv)) {
+    return *exit_code;
+  }
   if (spy->parsed()) {
     return runSpy(jar, url);
   }

@@ -9,6 +9,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "common/command_line.hpp"
 #include "tools/launch/launch_config.hpp"
 #include "tools/launch/supervisor.hpp"
 
@@ -21,7 +22,9 @@ int main(int argc, char** argv)
   app.add_option("config", config_path, "launch file, e.g. config/launch/sim_demo.yaml")->required();
   app.add_option("--duration", duration_s, "stop everything after this many seconds (0 = run until Ctrl-C)");
   app.add_flag("--no-colour", no_colour, "plain output even on a terminal");
-  CLI11_PARSE(app, argc, argv);
+  if (const auto exit_code = ifar::common::parseCommandLine(app, argc, argv)) {
+    return *exit_code;
+  }
 
   ifar::launch::LaunchSpec spec;
   try {

@@ -10,6 +10,7 @@
 #include <lcm/lcm-cpp.hpp>
 
 #include "common/bus/run_loop.hpp"
+#include "common/command_line.hpp"
 #include "common/time.hpp"
 #include "ifar/e_stop_t.hpp"
 
@@ -24,7 +25,9 @@ int main(int argc, char** argv)
   app.add_flag("--once", once, "send one message and exit instead of resending until Ctrl-C");
   app.add_option("--reason", reason, "why, for the logs")->capture_default_str();
   app.add_option("--lcm-url", url, "LCM URL (default: LCM_DEFAULT_URL or LCM's default)");
-  CLI11_PARSE(app, argc, argv);
+  if (const auto exit_code = ifar::common::parseCommandLine(app, argc, argv)) {
+    return *exit_code;
+  }
   lcm::LCM bus(ifar::bus::resolveLcmUrl(url));
   if (!bus.good()) {
     std::cerr << "ifar-estop: error: cannot start LCM" << std::endl;

@@ -12,6 +12,7 @@
 #include <CLI/CLI.hpp>
 
 #include "common/bus/run_loop.hpp"
+#include "common/command_line.hpp"
 #include "common/time.hpp"
 #include "ifar/exec_status_t.hpp"
 #include "ifar/goal_t.hpp"
@@ -63,7 +64,9 @@ int main(int argc, char** argv)
                  "then wait up to this many seconds for EXEC_STATUS to report the goal reached, resending "
                  "the goal every second; exit 1 if it is not reached");
   app.add_option("--lcm-url", url, "LCM URL (default: LCM_DEFAULT_URL or LCM's default)");
-  CLI11_PARSE(app, argc, argv);
+  if (const auto exit_code = ifar::common::parseCommandLine(app, argc, argv)) {
+    return *exit_code;
+  }
   if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(wait_s) || wait_s < 0.0) {
     std::cerr << "ifar-goal: error: the goal and --wait must be finite numbers, --wait not negative"
               << std::endl;

@@ -12,6 +12,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "common/command_line.hpp"
 #include "common/grid_map/readers.hpp"
 #include "planner/graph/graph_file.hpp"
 #include "planner/graph/prior_map.hpp"
@@ -79,7 +80,9 @@ int main(int argc, char** argv)
   app.add_flag("--check", check, "compare with the .scen optimal lengths; exit 2 on a mismatch");
   app.add_option("--tolerance", tolerance, "relative tolerance for --check")->check(CLI::PositiveNumber);
   app.add_option("--save-graph", save_path, "also save the built DV-graph (prior map) to this file");
-  CLI11_PARSE(app, argc, argv);
+  if (const auto exit_code = ifar::common::parseCommandLine(app, argc, argv)) {
+    return *exit_code;
+  }
 
   if (scen_path.empty() && (start.size() != 2 || goal.size() != 2)) {
     std::cerr << "ifar plan: give --scen FILE or both --start X Y and --goal X Y\n";

@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "common/command_line.hpp"
 #include "common/config.hpp"
 #include "common/vehicle.hpp"
 #include "sim/world/world_file.hpp"
@@ -23,7 +24,9 @@ int main(int argc, char** argv)
   app.add_option(
       "--vehicle", vehicle_path,
       "vehicle.yaml for the push limit and footprint (default: built-in values of config/vehicle.yaml)");
-  CLI11_PARSE(app, argc, argv);
+  if (const auto exit_code = ifar::common::parseCommandLine(app, argc, argv)) {
+    return *exit_code;
+  }
 
   const auto loaded = ifar::sim::loadWorldFile(world_path);
   if (!loaded.ok()) {

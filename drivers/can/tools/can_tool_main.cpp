@@ -16,6 +16,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "common/command_line.hpp"
 #include "common/config.hpp"
 #include "drivers/can/candump_log.hpp"
 #include "drivers/can/open_bus.hpp"
@@ -152,7 +153,9 @@ int main(int argc, char** argv)
   play_command->add_option("--speed", options.speed, "time scale; 0 = as fast as possible")
       ->capture_default_str();
   app.require_subcommand(1);
-  CLI11_PARSE(app, argc, argv);
+  if (const auto exit_code = ifar::common::parseCommandLine(app, argc, argv)) {
+    return *exit_code;
+  }
 
   try {
     const ifar::can::BusSettings settings = resolveBus(options);
