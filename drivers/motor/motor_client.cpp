@@ -149,7 +149,7 @@ std::vector<can::Frame> MotorClient::update(std::int64_t now_us)
       statusword_ ? driveStateFromStatusword(*statusword_) : DriveState::kNotReadyToSwitchOn;
 
   if (reason != StopReason::kNone) {
-    // A drive found enabled that this client did not enable (say, the executive restarted while the
+    // A drive found enabled that this client did not enable (say, the motor driver restarted while the
     // drive kept its last target) is stopped too.
     const bool found_enabled =
         phase_ == ClientPhase::kWaitingForDrive && drive_state == DriveState::kOperationEnabled;

@@ -9,7 +9,7 @@
 //  - sends RPDO1 (controlword, target velocity) cyclically,
 //  - and performs a safe stop (zero velocity until standstill or stop_timeout, then shutdown 0x06) on a
 //    drive fault (statusword or EMCY), a lost heartbeat, a stale command, or setEnabled(false); a drive
-//    found enabled while no fresh command has arrived (a restarted executive) is stopped the same way.
+//    found enabled while no fresh command has arrived (a restarted motor driver) is stopped the same way.
 // Faults latch until requestFaultReset(); the client then sends the fault-reset edge (0x80) and
 // re-enables. A lost heartbeat or stale command clears by itself once heartbeats and fresh commands
 // are back: the client runs only while commands keep arriving.

@@ -9,7 +9,8 @@ PusherSettings PusherSettings::fromVehicle(const common::VehicleSettings& vehicl
   PusherSettings pusher;
   pusher.bumper_width_m = vehicle.bumper_width_m;
   pusher.bumper_friction = vehicle.bumper_friction;
-  pusher.bumper_to_axle_m = vehicle.length_m / 2.0;  // vehicle.yaml does not state the axle position
+  // vehicle.yaml puts the reference point at the centre of the footprint, on the wheel axle.
+  pusher.bumper_to_axle_m = vehicle.length_m / 2.0;
   pusher.inflation_m = vehicle.width_m / 2.0;
   pusher.max_push_force_n = vehicle.maxPushForce();
   return pusher;

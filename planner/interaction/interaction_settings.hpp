@@ -35,8 +35,8 @@ struct ObjectPhysics {
 struct PusherSettings {
   double bumper_width_m = 0.7;
   double bumper_friction = 0.5;
-  /// Distance from the bumper face back to the rear axle centre (the vehicle's reference point, where
-  /// its instantaneous centre of rotation lies on the axle line).
+  /// Distance from the bumper face back to the vehicle's reference point, the centre of the footprint on
+  /// the wheel axle (vehicle.yaml); the instantaneous centre of rotation lies on the axle line.
   double bumper_to_axle_m = 0.45;
   /// Obstacles in the local layer are inflated by this (the vehicle's half width).
   double inflation_m = 0.35;

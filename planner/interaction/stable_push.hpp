@@ -2,7 +2,7 @@
 // Quasi-static stable pushing with a flat bumper (Lynch and Mason 1996, "Stable pushing: mechanics,
 // controllability, and planning"): the object sticks to the bumper for every rotation centre in the
 // set STABLE, built here from the friction cones at the two ends of the line contact and the object's
-// ellipsoidal limit surface. The vehicle's rotation centre lies on its rear axle line, so STABLE maps
+// ellipsoidal limit surface. The vehicle's rotation centre lies on its wheel axle line, so STABLE maps
 // to turning radii: straight pushes and arcs with |radius| >= rho_min, per contact edge.
 //
 // Frames: "body" is the object's frame (centroid at the origin). The "contact frame" of a contact
