@@ -94,7 +94,9 @@ int runRecord(const std::string& directory, const std::string& name_pattern, dou
     // Always writes FILE.0, renaming older files out of the way and deleting the oldest.
     arguments.push_back("--rotate=" + std::to_string(rotate));
   } else {
-    arguments.push_back("--increment");
+    // The short form: lcm-logger 1.3.1's long --increment takes an argument, so it swallowed the file
+    // name when it came last (with --split-mb 0) and the log went to ./lcmlog-DATE.00.
+    arguments.push_back("-i");
   }
   if (split_mb > 0.0) {
     arguments.push_back("--split-mb=" + std::to_string(split_mb));
@@ -165,10 +167,12 @@ int main(int argc, char** argv)
   record->add_option("--dir", directory, "folder for the logs")->capture_default_str();
   record->add_option("--name", name_pattern, "file name, strftime-formatted")->capture_default_str();
   record->add_option("--split-mb", split_mb, "start a new numbered file after this many MB (0 = never)")
+      ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   record
       ->add_option("--rotate", rotate,
                    "keep only this many files, newest as NAME.0 (0 = number them instead)")
+      ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
   record->add_option("--channels", channels, "regular expression of channels to record")
       ->capture_default_str();

@@ -53,4 +53,17 @@ wait "$listener_pid" || status=$?
 listener_pid=""
 cat "$work/expect.out"
 [ $status = 0 ] || { echo "FAIL: replayed messages did not all arrive intact"; exit 1; }
-echo "PASS: record and replay of every message type"
+
+# --split-mb 0 (never split) writes into --dir under --name too (it once went to ./lcmlog-DATE.00).
+(cd "$work" && exec ifar record --split-mb 0 --dir "$work/unsplit" --name 'run-%Y.lcmlog' > "$work/unsplit.out" 2>&1) &
+logger_pid=$!
+for _ in $(seq 50); do grep -q 'Opening log file' "$work/unsplit.out" && break; sleep 0.1; done
+kill -INT "$logger_pid" 2>/dev/null || true
+wait "$logger_pid" || true
+logger_pid=""
+expected="$work/unsplit/run-$(date +%Y).lcmlog.00"
+[ -e "$expected" ] || { echo "FAIL: --split-mb 0 did not write $expected"; ls -R "$work"; cat "$work/unsplit.out"; exit 1; }
+if ifar record --split-mb -1 --dir "$work/negative" > "$work/negative.out" 2>&1; then
+  echo "FAIL: --split-mb -1 accepted"; exit 1
+fi
+echo "PASS: record and replay of every message type; --split-mb 0 names its file as asked"
