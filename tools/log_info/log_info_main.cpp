@@ -2,7 +2,9 @@
 // project type recognised from each message's fingerprint (the first 8 bytes of an LCM message). With
 // --check every message is decoded as its type and re-encoded to the same bytes; any message that does
 // not (or whose type is unknown) is counted per channel and the exit status is 1; LCM's own LCM_SELF_TEST
-// messages are left out of the check.
+// messages are left out of the check. A log that is corrupt (bytes that are no event, an event cut short
+// or claiming more bytes than the file has) or holds no event at all fails the check too; without
+// --check the events that could be read are listed and the corruption is a warning on stderr.
 
 #include <algorithm>
 #include <cstdint>
@@ -12,8 +14,9 @@
 #include <vector>
 
 #include <CLI/CLI.hpp>
-#include <lcm/lcm-cpp.hpp>
 
+#include "common/command_line.hpp"
+#include "common/lcm_log/log_reader.hpp"
 #include "lcmtypes/samples/sample_messages.hpp"
 
 namespace {
@@ -27,17 +30,32 @@ struct ChannelSummary {
   std::int64_t undecodable = 0;  // --check: messages that do not decode, or not to the same bytes
 };
 
-std::int64_t fingerprintOf(const lcm::LogEvent& event)
+std::int64_t fingerprintOf(const ifar::lcm_log::LogEvent& event)
 {
-  if (event.datalen < 8) {
+  if (event.data.size() < 8) {
     return 0;
   }
-  const auto* bytes = static_cast<const std::uint8_t*>(event.data);
   std::uint64_t value = 0;
-  for (int index = 0; index < 8; ++index) {
-    value = (value << 8U) | bytes[index];  // LCM encodes the fingerprint big-endian
+  for (std::size_t index = 0; index < 8; ++index) {
+    value = (value << 8U) | event.data[index];  // LCM encodes the fingerprint big-endian
   }
   return static_cast<std::int64_t>(value);
+}
+
+/// Every problem the reader kept, one a line, each line starting with `prefix`.
+void printProblems(std::FILE* stream, const char* prefix, const std::string& path,
+                   const ifar::lcm_log::LogReader& log)
+{
+  std::fprintf(stream, "%s%s is corrupt: %llu problem%s, %llu bytes skipped (not counted above)\n", prefix,
+               path.c_str(), static_cast<unsigned long long>(log.problemCount()),
+               log.problemCount() == 1 ? "" : "s", static_cast<unsigned long long>(log.skippedBytes()));
+  for (const ifar::lcm_log::LogProblem& problem : log.problems()) {
+    std::fprintf(stream, "%s  %s\n", prefix, problem.description.c_str());
+  }
+  if (log.problemCount() > log.problems().size()) {
+    std::fprintf(stream, "%s  ... and %llu more\n", prefix,
+                 static_cast<unsigned long long>(log.problemCount() - log.problems().size()));
+  }
 }
 
 }  // namespace
@@ -49,12 +67,15 @@ int main(int argc, char** argv)
   bool check = false;
   app.add_option("log", path, "the .lcmlog file")->required()->check(CLI::ExistingFile);
   app.add_flag("--check", check,
-               "decode every message as its project type; exit 1 if any message does not decode");
-  CLI11_PARSE(app, argc, argv);
+               "decode every message as its project type; exit 1 if any message does not decode, the log is "
+               "corrupt or it holds no events");
+  if (const auto exit_code = ifar::common::parseCommandLine(app, argc, argv)) {
+    return *exit_code;
+  }
 
-  lcm::LogFile log(path, "r");
-  if (!log.good()) {
-    std::fprintf(stderr, "ifar log-info: error: cannot read '%s' as an LCM log\n", path.c_str());
+  ifar::lcm_log::LogReader log = ifar::lcm_log::LogReader::open(path);
+  if (!log.openError().empty()) {
+    std::fprintf(stderr, "ifar log-info: error: cannot read an LCM log: %s\n", log.openError().c_str());
     return 1;
   }
   const std::vector<ifar::lcmtypes_samples::SampleMessage> samples =
@@ -66,25 +87,25 @@ int main(int argc, char** argv)
   std::vector<std::uint8_t> reencoded;
   std::map<std::string, ChannelSummary> channels;
   std::int64_t total = 0;
-  while (const lcm::LogEvent* event = log.readNextEvent()) {
-    auto& summary = channels[event->channel];
-    const auto found = types.find(fingerprintOf(*event));
+  ifar::lcm_log::LogEvent event;
+  while (log.next(event)) {
+    auto& summary = channels[event.channel];
+    const auto found = types.find(fingerprintOf(event));
     if (summary.count == 0) {
-      summary.first_utime = event->timestamp;
+      summary.first_utime = event.timestamp_us;
       summary.type_name = found != types.end() ? found->second->type_name : "(not a project type)";
     }
     // LCM_SELF_TEST is LCM's own udpm loopback probe, not a project message.
-    if (check && event->channel != "LCM_SELF_TEST") {
-      const ifar::common::ByteView bytes(static_cast<const std::uint8_t*>(event->data),
-                                         static_cast<std::size_t>(event->datalen));
+    if (check && event.channel != "LCM_SELF_TEST") {
+      const ifar::common::ByteView bytes(event.data.data(), event.data.size());
       const bool decodes = found != types.end() && found->second->reencode(bytes, reencoded) &&
                            reencoded.size() == bytes.size() &&
                            std::equal(reencoded.begin(), reencoded.end(), bytes.begin());
       summary.undecodable += decodes ? 0 : 1;
     }
     ++summary.count;
-    summary.bytes += event->datalen;
-    summary.last_utime = event->timestamp;
+    summary.bytes += static_cast<std::int64_t>(event.data.size());
+    summary.last_utime = event.timestamp_us;
     ++total;
   }
   std::printf("%-20s %-20s %9s %9s %9s %11s\n", "channel", "type", "messages", "rate Hz", "span s", "bytes");
@@ -97,9 +118,21 @@ int main(int argc, char** argv)
   std::printf("%lld messages on %zu channels in %s\n", static_cast<long long>(total), channels.size(),
               path.c_str());
   if (!check) {
+    if (!log.clean()) {
+      printProblems(stderr, "ifar log-info: warning: ", path, log);
+    }
     return 0;
   }
   std::int64_t failures = 0;
+  if (!log.clean()) {
+    printProblems(stdout, "check: ", path, log);
+    failures += static_cast<std::int64_t>(log.problemCount());
+  }
+  if (total == 0) {
+    // An empty log is no evidence that anything was recorded: a recorder that never ran leaves one.
+    std::printf("check: %s holds no events\n", path.c_str());
+    ++failures;
+  }
   for (const auto& [channel, summary] : channels) {
     if (summary.undecodable > 0) {
       std::printf("check: %s: %lld of %lld messages do not decode as %s\n", channel.c_str(),

@@ -9,8 +9,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include <lcm/lcm-cpp.hpp>
-
+#include "common/lcm_log/log_reader.hpp"
 #include "ifar/pose_t.hpp"
 #include "ifar/world_state_t.hpp"
 
@@ -217,22 +216,25 @@ LastMessages readLastMessages(const std::string& log_path, const std::string& gr
   constexpr double kSpacingM = 0.05;
   std::map<std::int64_t, geometry::Point> object_starts;
   LastMessages last;
-  lcm::LogFile log(log_path, "r");
-  if (!log.good()) {
-    last.error = log_path + ": cannot open as an LCM log";
+  lcm_log::LogReader log = lcm_log::LogReader::open(log_path);
+  if (!log.openError().empty()) {
+    last.error = "cannot read an LCM log: " + log.openError();  // names the file
     return last;
   }
-  for (const lcm::LogEvent* event = log.readNextEvent(); event != nullptr; event = log.readNextEvent()) {
-    if (event->channel == graph_channel) {
+  lcm_log::LogEvent event;
+  while (log.next(event)) {
+    // The reader bounds a data length by int32, so the size fits LCM's int.
+    const auto size = static_cast<int>(event.data.size());
+    if (event.channel == graph_channel) {
       dv_graph_t graph{};
-      if (graph.decode(event->data, 0, event->datalen) < 0) {
+      if (graph.decode(event.data.data(), 0, size) < 0) {
         ++last.undecodable;
       } else {
         last.graph = std::move(graph);
       }
-    } else if (event->channel == path_channel) {
+    } else if (event.channel == path_channel) {
       path_t path{};
-      if (path.decode(event->data, 0, event->datalen) < 0) {
+      if (path.decode(event.data.data(), 0, size) < 0) {
         ++last.undecodable;
       } else {
         for (const push_plan_t& plan : path.push_plans) {
@@ -245,16 +247,16 @@ LastMessages readLastMessages(const std::string& log_path, const std::string& gr
         }
         last.path = std::move(path);
       }
-    } else if (event->channel == pose_channel) {
+    } else if (event.channel == pose_channel) {
       pose_t pose{};
-      if (pose.decode(event->data, 0, event->datalen) < 0) {
+      if (pose.decode(event.data.data(), 0, size) < 0) {
         ++last.undecodable;
       } else {
         appendSpaced(last.run.trajectory, geometry::Point(pose.position[0], pose.position[1]), kSpacingM);
       }
-    } else if (event->channel == truth_channel) {
+    } else if (event.channel == truth_channel) {
       world_state_t truth{};
-      if (truth.decode(event->data, 0, event->datalen) < 0) {
+      if (truth.decode(event.data.data(), 0, size) < 0) {
         ++last.undecodable;
         continue;
       }
@@ -270,6 +272,13 @@ LastMessages readLastMessages(const std::string& log_path, const std::string& gr
           appendSpaced(track, position, kSpacingM);
         }
       }
+    }
+  }
+  if (!log.clean()) {
+    if (log.eventCount() == 0) {
+      last.error = log_path + ": no LCM event could be read: " + log.problemSummary();
+    } else {
+      last.log_problems = log.problemSummary();
     }
   }
   return last;

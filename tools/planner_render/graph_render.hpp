@@ -73,7 +73,10 @@ struct LastMessages {
   std::optional<path_t> path;
   RunOverlay run;  ///< trajectory from the POSE channel, push plans from every path, object tracks
   std::size_t undecodable = 0;  // events on the channels that did not decode (skipped)
-  std::string error;            // the log could not be opened; empty otherwise
+  std::string error;            // the log could not be opened, or no event in it could be read; else empty
+  /// The log is corrupt but some events were read: how many problems, bytes skipped and the first bad
+  /// byte (for a warning); empty when the log is clean.
+  std::string log_problems;
 };
 
 /// The last graph and path of an LCM log file, and the run overlay from its other channels.

@@ -6,6 +6,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "common/command_line.hpp"
 #include "tools/planner_render/graph_render.hpp"
 
 int main(int argc, char** argv)
@@ -35,7 +36,9 @@ int main(int argc, char** argv)
       ->check(CLI::PositiveNumber);
   std::string window_text;
   app.add_option("--window", window_text, "draw only this world rectangle: X0,Y0,X1,Y1 in metres");
-  CLI11_PARSE(app, argc, argv);
+  if (const auto exit_code = ifar::common::parseCommandLine(app, argc, argv)) {
+    return *exit_code;
+  }
   if (!window_text.empty()) {
     options.window = ifar::planner_render::parseWindow(window_text);
     if (!options.window) {
@@ -50,6 +53,10 @@ int main(int argc, char** argv)
   if (!last.error.empty()) {
     std::cerr << "error: " << last.error << "\n";
     return 1;
+  }
+  if (!last.log_problems.empty()) {
+    std::cerr << "warning: " << log_path
+              << " is corrupt, drawn from the events that could be read: " << last.log_problems << "\n";
   }
   if (last.undecodable > 0) {
     std::cerr << "warning: " << log_path << ": " << last.undecodable

@@ -1,15 +1,18 @@
 // ifar run-summary LOG --goal X Y: what a recorded run achieved, from its LCM log: arrived or not, distance
 // driven and time (simulator ground truth, else POSE), pushes and replans (EXEC_STATUS), affordance
-// updates, and the executive's last mode and reason. --json prints the same as one JSON line.
+// updates, and the executive's last mode and reason. --json prints the same as one JSON line. A corrupt
+// log is summarised from the events that could be read, with a warning on stderr naming the first bad
+// byte; a log in which no event can be read is an error.
 
 #include <cmath>
 #include <cstdio>
 #include <string>
 
 #include <CLI/CLI.hpp>
-#include <lcm/lcm-cpp.hpp>
 
 #include "common/json_text.hpp"
+#include "common/command_line.hpp"
+#include "common/lcm_log/log_reader.hpp"
 #include "ifar/affordance_t.hpp"
 #include "ifar/exec_status_t.hpp"
 #include "ifar/path_t.hpp"
@@ -41,9 +44,11 @@ struct Track {
 };
 
 template <typename Message>
-bool decode(const lcm::LogEvent& event, Message& message)
+bool decode(const ifar::lcm_log::LogEvent& event, Message& message)
 {
-  return message.decode(event.data, 0, static_cast<int>(event.datalen)) == static_cast<int>(event.datalen);
+  // The reader bounds a data length by int32, so the size fits LCM's int.
+  const auto size = static_cast<int>(event.data.size());
+  return message.decode(event.data.data(), 0, size) == size;
 }
 
 }  // namespace
@@ -61,11 +66,13 @@ int main(int argc, char** argv)
   app.add_option("--goal-y", goal_y, "goal y, metres")->required();
   app.add_option("--tolerance", tolerance, "arrival radius, metres")->capture_default_str();
   app.add_flag("--json", json, "one JSON line instead of text");
-  CLI11_PARSE(app, argc, argv);
+  if (const auto exit_code = ifar::common::parseCommandLine(app, argc, argv)) {
+    return *exit_code;
+  }
 
-  lcm::LogFile log(path, "r");
-  if (!log.good()) {
-    std::fprintf(stderr, "ifar run-summary: error: cannot read '%s' as an LCM log\n", path.c_str());
+  ifar::lcm_log::LogReader log = ifar::lcm_log::LogReader::open(path);
+  if (!log.openError().empty()) {
+    std::fprintf(stderr, "ifar run-summary: error: cannot read an LCM log: %s\n", log.openError().c_str());
     return 1;
   }
   Track truth;
@@ -76,33 +83,44 @@ int main(int argc, char** argv)
   int affordance_updates = 0;
   int paths = 0;
   int undecodable = 0;
-  while (const lcm::LogEvent* event = log.readNextEvent()) {
-    if (event->channel == "SIM_GROUND_TRUTH") {
+  ifar::lcm_log::LogEvent event;
+  while (log.next(event)) {
+    if (event.channel == "SIM_GROUND_TRUTH") {
       ifar::world_state_t state{};
-      if (decode(*event, state)) {
+      if (decode(event, state)) {
         truth.add(state.vehicle_x, state.vehicle_y, state.utime);
       } else {
         ++undecodable;
       }
-    } else if (event->channel == "POSE") {
+    } else if (event.channel == "POSE") {
       ifar::pose_t message{};
-      if (decode(*event, message)) {
+      if (decode(event, message)) {
         pose.add(message.position[0], message.position[1], message.utime);
       } else {
         ++undecodable;
       }
-    } else if (event->channel == "EXEC_STATUS") {
-      if (decode(*event, last_status)) {
+    } else if (event.channel == "EXEC_STATUS") {
+      if (decode(event, last_status)) {
         has_status = true;
         arrived_mode = arrived_mode || last_status.mode == ifar::exec_status_t::MODE_ARRIVED;
       } else {
         ++undecodable;
       }
-    } else if (event->channel == "AFFORDANCE") {
+    } else if (event.channel == "AFFORDANCE") {
       ++affordance_updates;
-    } else if (event->channel == "GLOBAL_PATH") {
+    } else if (event.channel == "GLOBAL_PATH") {
       ++paths;
     }
+  }
+  if (!log.clean()) {
+    if (log.eventCount() == 0) {
+      std::fprintf(stderr, "ifar run-summary: error: '%s': no LCM event could be read: %s\n", path.c_str(),
+                   log.problemSummary().c_str());
+      return 1;
+    }
+    std::fprintf(
+        stderr, "ifar run-summary: warning: '%s' is corrupt, summarised from the %llu events read: %s\n",
+        path.c_str(), static_cast<unsigned long long>(log.eventCount()), log.problemSummary().c_str());
   }
   const Track& track = truth.has_position ? truth : pose;
   if (!track.has_position) {
