@@ -10,8 +10,8 @@
 
 #include <CLI/CLI.hpp>
 
-#include "common/json_text.hpp"
 #include "common/command_line.hpp"
+#include "common/json_text.hpp"
 #include "common/lcm_log/log_reader.hpp"
 #include "ifar/affordance_t.hpp"
 #include "ifar/exec_status_t.hpp"

@@ -38,8 +38,9 @@ TEST(Heartbeat, BeatsEachPeriodAndReportsABadMessageOnce)
   ifar::bus::RunLoop loop("memq://", std::make_shared<spdlog::logger>(
                                          "heartbeat_test", std::make_shared<spdlog::sinks::null_sink_mt>()));
   std::vector<ifar::heartbeat_t> beats;
-  loop.subscribe<ifar::heartbeat_t>(ifar::bus::kHeartbeatChannel,
-                                    [&](const ifar::heartbeat_t& beat, std::int64_t) { beats.push_back(beat); });
+  loop.subscribe<ifar::heartbeat_t>(
+      ifar::bus::kHeartbeatChannel,
+      [&](const ifar::heartbeat_t& beat, std::int64_t) { beats.push_back(beat); });
   loop.subscribe<ifar::goal_t>("GOAL", [](const ifar::goal_t&, std::int64_t) {});
   ifar::bus::publishHeartbeats(loop, "tester", 0.02);
 

@@ -79,7 +79,8 @@ TEST(RunLoop, CountsMessagesWhoseDecodeThrows)
   ifar::bus::RunLoop loop("memq://", quietLogger());
   std::vector<std::int32_t> sizes;
   loop.subscribe<ifar::velodyne_packet_t>(
-      "VELODYNE_PACKET", [&](const ifar::velodyne_packet_t& packet, std::int64_t) { sizes.push_back(packet.size); });
+      "VELODYNE_PACKET",
+      [&](const ifar::velodyne_packet_t& packet, std::int64_t) { sizes.push_back(packet.size); });
   ifar::velodyne_packet_t packet{};
   packet.size = 3;
   packet.data = {7, 8, 9};

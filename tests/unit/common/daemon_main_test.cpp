@@ -18,9 +18,9 @@ class DaemonMain : public ::testing::Test {
  protected:
   void SetUp() override
   {
-    directory_ = fs::temp_directory_path() /
-                 ("ifar-daemon-main-" + std::to_string(::getpid()) + "-" +
-                  ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    directory_ =
+        fs::temp_directory_path() / ("ifar-daemon-main-" + std::to_string(::getpid()) + "-" +
+                                     ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::create_directories(directory_);
   }
   void TearDown() override { fs::remove_all(directory_); }
