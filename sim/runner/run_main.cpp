@@ -3,6 +3,8 @@
 // simulated second; the summary to stdout (with --json as one JSON object on the last line).
 // Exit code 0 when the vehicle arrived, 1 when it did not, 2 on bad input (world, goal, config).
 
+#include <unistd.h>
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -10,6 +12,7 @@
 #include <iostream>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include <CLI/CLI.hpp>
 
@@ -64,6 +67,22 @@ ifar::sim::WorldResult loadWorld(const std::string& name, std::uint64_t seed)
     }
   }
   return ifar::sim::loadWorldFile(name);
+}
+
+/// Why a picture cannot be written to `path` (its folder missing, not a folder or not writable), checked
+/// before a run of minutes whose picture would otherwise be lost at its end; empty when it can.
+std::string outputPathProblem(const std::string& path)
+{
+  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  const std::string shown = folder.empty() ? "." : folder.string();
+  std::error_code error;
+  if (!std::filesystem::is_directory(folder.empty() ? "." : folder, error)) {
+    return "folder '" + shown + "' does not exist or is not a folder";
+  }
+  if (::access(shown.c_str(), W_OK) != 0) {
+    return "folder '" + shown + "' is not writable";
+  }
+  return {};
 }
 
 }  // namespace
@@ -146,6 +165,15 @@ int main(int argc, char** argv)
       return kExitBadInput;
     }
   }
+  for (const auto& [option, path] : {std::pair<const char*, const std::string&>{"--png", png_path},
+                                     std::pair<const char*, const std::string&>{"--graph-png", graph_png_path}}) {
+    if (!path.empty()) {
+      if (const std::string problem = outputPathProblem(path); !problem.empty()) {
+        std::cerr << "error: " << option << ": cannot write '" << path << "': " << problem << "\n";
+        return kExitBadInput;
+      }
+    }
+  }
   request.max_sim_time_s = max_time_s;
   request.planner.interaction_enabled = !no_interaction;
 
@@ -191,11 +219,13 @@ int main(int argc, char** argv)
     return kExitBadInput;
   }
 
+  bool pictures_written = true;  // a picture asked for and not written fails the run as bad input
   if (!png_path.empty()) {
     const std::string error =
         ifar::runner::writeRunPicture(request.world, request.vehicle, request.goal, summary, png_path);
     if (!error.empty()) {
       std::cerr << "error: --png: " << error << "\n";
+      pictures_written = false;
     } else {
       std::cerr << "picture written to " << png_path << "\n";
     }
@@ -204,6 +234,7 @@ int main(int argc, char** argv)
     const std::string error = graph_picture.writePng(graph_png_path, graph_options);
     if (!error.empty()) {
       std::cerr << "error: --graph-png: " << error << "\n";
+      pictures_written = false;
     } else {
       std::cerr << "planner graph at " << graph_picture.keptTimeS() << " s written to " << graph_png_path
                 << "\n";
@@ -222,6 +253,9 @@ int main(int argc, char** argv)
         summary.replans, summary.affordance_updates, summary.goal_distance_m, summary.planner_frame.frames,
         summary.planner_frame.median_ms, summary.planner_frame.p99_ms, summary.planner_frame.max_ms,
         summary.interaction.median_ms, summary.interaction.p99_ms, summary.interaction.max_ms);
+  }
+  if (!pictures_written) {
+    return kExitBadInput;
   }
   return summary.arrived ? kExitArrived : kExitNotArrived;
 }

@@ -35,6 +35,10 @@ expect_bad_input "negative graph time" "--graph-at: must be a number of seconds 
   ifar-run "$room" --graph-png /tmp/unused.png --graph-at -1 --config-dir "$config"
 expect_bad_input "malformed graph window" "--graph-window: expected X0,Y0,X1,Y1" \
   ifar-run "$room" --graph-png /tmp/unused.png --graph-window 1,2,3 --config-dir "$config"
+expect_bad_input "picture into a missing folder" "--png: cannot write '/nonexistent/run.png': folder '/nonexistent' does not exist" \
+  ifar-run "$room" --png /nonexistent/run.png --config-dir "$config"
+expect_bad_input "graph picture into a missing folder" "--graph-png: cannot write '/nonexistent/graph.png'" \
+  ifar-run "$room" --graph-png /nonexistent/graph.png --config-dir "$config"
 
 # --help works and names the command's options.
 if ! ifar-run --help | grep -q -- "--no-interaction"; then
