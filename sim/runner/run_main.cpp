@@ -165,8 +165,9 @@ int main(int argc, char** argv)
       return kExitBadInput;
     }
   }
-  for (const auto& [option, path] : {std::pair<const char*, const std::string&>{"--png", png_path},
-                                     std::pair<const char*, const std::string&>{"--graph-png", graph_png_path}}) {
+  for (const auto& [option, path] :
+       {std::pair<const char*, const std::string&>{"--png", png_path},
+        std::pair<const char*, const std::string&>{"--graph-png", graph_png_path}}) {
     if (!path.empty()) {
       if (const std::string problem = outputPathProblem(path); !problem.empty()) {
         std::cerr << "error: " << option << ": cannot write '" << path << "': " << problem << "\n";
