@@ -16,6 +16,8 @@
 #include "drivers/can/lcm_bridge_bus.hpp"
 #include "drivers/can/open_bus.hpp"
 #include "drivers/force_sensor/force_monitor.hpp"
+#include "drivers/force_sensor/force_sensor_config.hpp"
+#include "drivers/motor/motor_config.hpp"
 #include "ifar/can_bus_status_t.hpp"
 #include "ifar/force_t.hpp"
 
@@ -35,23 +37,11 @@ DriverSettings loadSettings(const ifar::common::ConfigNode& root)
   settings.bus = ifar::can::loadBusSettings(root);
   settings.raw_channel = root.optional<std::string>("raw_channel", "CAN_VEHICLE");
   settings.status_channel = root.optional<std::string>("status_channel", "CAN_STATUS");
-  const auto sensor = root.child("force_sensor");
-  const int frame_id = sensor.required<int>("frame_id");
-  if (frame_id < 0 || frame_id > 0x7FF) {
-    sensor.fail("frame_id", "must be a standard id, 0..2047 (0x7FF)");
-  }
-  settings.monitor.frame_id = static_cast<std::uint32_t>(frame_id);
-  const int silence_ms = sensor.optional<int>("silence_timeout_ms", 50);
-  if (silence_ms <= 0) {
-    sensor.fail("silence_timeout_ms", "must be positive");
-  }
-  settings.monitor.silence_timeout_us = silence_ms * 1000LL;
-  settings.monitor.stuck_counter_frames = sensor.optional<int>("stuck_counter_frames", 3);
-  if (settings.monitor.stuck_counter_frames < 2) {
-    sensor.fail("stuck_counter_frames", "must be at least 2");
-  }
-  settings.force_channel = sensor.optional<std::string>("channel", "FORCE");
-  root.acceptAllUnder("motor");  // the motor client's section of the shared file
+  const ifar::force_sensor::ForceSensorConfig sensor = ifar::force_sensor::loadForceSensorConfig(root);
+  settings.monitor = sensor.monitor;
+  settings.force_channel = sensor.channel;
+  // The motor driver's section of the shared file, checked here too: one can.yaml stops both or neither.
+  ifar::motor::loadMotorSection(root);
   return settings;
 }
 

@@ -23,7 +23,7 @@ std::uint8_t nodeId(const common::ConfigNode& node, const std::string& key)
 
 }  // namespace
 
-MotorConfig loadMotorConfig(const common::ConfigNode& root, const common::VehicleSettings& vehicle)
+MotorConfig loadMotorSection(const common::ConfigNode& root)
 {
   const common::ConfigNode node = root.child("motor");
   MotorConfig config;
@@ -40,6 +40,12 @@ MotorConfig loadMotorConfig(const common::ConfigNode& root, const common::Vehicl
   }
   config.cycle_us = positiveMilliseconds(node, "cycle_ms", 10);
   config.status_channel = node.optional<std::string>("status_channel", config.status_channel);
+  return config;
+}
+
+MotorConfig loadMotorConfig(const common::ConfigNode& root, const common::VehicleSettings& vehicle)
+{
+  MotorConfig config = loadMotorSection(root);
   config.drive.wheel_track_m = vehicle.wheel_track_m;
   config.drive.wheel_radius_m = vehicle.wheel_radius_m;
   return config;

@@ -26,6 +26,10 @@ struct MotorConfig {
   std::string status_channel = "MOTOR_STATUS";
 };
 
+/// Reads root.motor alone, without the wheel geometry. Throws as loadMotorConfig does; ifar-force-driver
+/// checks the motor section of the shared can.yaml with it, so a bad file stops both daemons alike.
+MotorConfig loadMotorSection(const common::ConfigNode& root);
+
 /// Reads root.motor; wheel geometry comes from the vehicle. Throws common::ConfigError naming the key
 /// for node ids outside 1..127, equal node ids, or non-positive periods.
 MotorConfig loadMotorConfig(const common::ConfigNode& root, const common::VehicleSettings& vehicle);

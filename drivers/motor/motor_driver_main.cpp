@@ -16,6 +16,7 @@
 #include "common/time.hpp"
 #include "common/vehicle.hpp"
 #include "drivers/can/open_bus.hpp"
+#include "drivers/force_sensor/force_sensor_config.hpp"
 #include "drivers/motor/differential_drive.hpp"
 #include "drivers/motor/motor_config.hpp"
 #include "drivers/motor/motor_status_message.hpp"
@@ -35,8 +36,9 @@ int run(ifar::common::DaemonContext& context, const std::string& vehicle_path,
           ? vehicle_path
           : (std::filesystem::path(context.config.sourceName()).parent_path() / "vehicle.yaml").string();
   const auto bus_settings = ifar::can::loadBusSettings(context.config);
-  // The force sensor's part of the shared file belongs to ifar-force-driver; its types are still checked.
-  context.config.acceptAllUnder("force_sensor");
+  // The force sensor's section of the shared file belongs to ifar-force-driver, checked here too: one
+  // can.yaml stops both or neither.
+  ifar::force_sensor::loadForceSensorConfig(context.config);
   context.config.optional<std::string>("raw_channel", "");
   context.config.optional<std::string>("status_channel", "");
   if (context.config.has("motor")) {

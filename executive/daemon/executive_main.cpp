@@ -22,9 +22,10 @@ constexpr double kControlPeriodS = 0.02;
 int runExecutive(ifar::common::DaemonContext& context, const std::string& vehicle_path)
 {
   // The executive's own file first, so its errors are reported whatever the vehicle file says.
-  const ifar::executive::ExecutiveSettings settings = ifar::executive::loadExecutiveSettings(context.config);
+  // The obstacles section before the rest: loadExecutiveSettings marks it all read.
   const ifar::executive::ObstacleSettings obstacles =
       ifar::executive::loadObstacleSettings(context.config.child("obstacles"));
+  const ifar::executive::ExecutiveSettings settings = ifar::executive::loadExecutiveSettings(context.config);
   // Without --vehicle, vehicle.yaml is taken from beside the executive's config file.
   const std::string vehicle_file =
       vehicle_path.empty()

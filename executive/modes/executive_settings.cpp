@@ -167,7 +167,8 @@ ExecutiveSettings loadExecutiveSettings(const common::ConfigNode& node)
   pushed_object.guard_horizon_s = positive(node, "pushed_object.guard_horizon_s");
   approach.squeeze_clearance_m = pushed_object.guard_clearance_m;
 
-  // The daemon and the headless runner read this section with loadObstacleSettings.
+  // The daemon and the headless runner read this section with loadObstacleSettings, first: it rejects
+  // unknown keys of its own section.
   node.acceptAllUnder("obstacles");
   node.rejectUnknownKeys();
   return settings;

@@ -47,6 +47,8 @@ ObstacleSettings loadObstacleSettings(const common::ConfigNode& node)
                             std::to_string(settings.cell_m));
   }
   node.rejectUnknownKeys();
+  // The executive's loader accepts this whole section, so an unknown key here is caught here.
+  node.rejectUnknownKeys();
   return settings;
 }
 

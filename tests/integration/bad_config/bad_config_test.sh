@@ -52,7 +52,16 @@ else
   expect_rejection "$work/wrong_type.yaml" "key '$section.$nested': expected" "wrong type of $section.$nested"
 fi
 
-# 3. Not YAML at all.
+# 3. An unknown key in each section (a top-level key whose value is an indented map). A file two daemons
+# share (can.yaml) is checked whole by both.
+for section in $(grep -E '^[a-z_]+: *(#.*)?$' "$good" | cut -d: -f1); do
+  awk -v s="$section" '{ print } index($0, s ":") == 1 { print "  not_a_setting: 1" }' "$good" \
+    > "$work/unknown_in_$section.yaml"
+  expect_rejection "$work/unknown_in_$section.yaml" "key '$section.not_a_setting': unknown key" \
+    "unknown key in $section"
+done
+
+# 4. Not YAML at all.
 printf 'a: [1, 2\n' > "$work/syntax.yaml"
 expect_rejection "$work/syntax.yaml" "YAML syntax error" "syntax error"
 
