@@ -1,6 +1,7 @@
 #include "common/config.hpp"
 
 #include <cstdint>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -122,6 +123,28 @@ std::vector<std::string> splitKey(const std::string& key)
   return parts;
 }
 
+/// yaml-cpp keeps both entries of a key given twice in one map and lookups see the first: an edit
+/// appended to a file would be silently ignored, so a repeated key is an error naming its line.
+void rejectDuplicateKeys(const YAML::Node& node, const std::string& path, const std::string& source_name)
+{
+  if (node.IsMap()) {
+    std::set<std::string> seen;
+    for (const auto& entry : node) {
+      const std::string key = entry.first.Scalar();
+      const std::string full_path = joinPath(path, key);
+      if (!seen.insert(key).second) {
+        throw ConfigError(source_name + ":" + std::to_string(entry.first.Mark().line + 1) + ": key '" +
+                          full_path + "': given twice in the same map");
+      }
+      rejectDuplicateKeys(entry.second, full_path, source_name);
+    }
+  } else if (node.IsSequence()) {
+    for (std::size_t index = 0; index < node.size(); ++index) {
+      rejectDuplicateKeys(node[index], path + "[" + std::to_string(index) + "]", source_name);
+    }
+  }
+}
+
 }  // namespace
 
 ConfigNode::ConfigNode(const YAML::Node& node, std::string path,
@@ -136,6 +159,10 @@ ConfigNode::ConfigNode(const YAML::Node& node, std::string path,
 
 ConfigNode ConfigNode::loadFile(const std::string& path)
 {
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error)) {
+    throw ConfigError(path + ": is a folder, not a configuration file");
+  }
   std::ifstream stream(path);
   if (!stream) {
     throw ConfigError(path + ": cannot open the configuration file");
@@ -161,6 +188,7 @@ ConfigNode ConfigNode::loadString(const std::string& text, const std::string& so
     throw ConfigError(source_name + ": the top level must be a map of settings, found " +
                       describeValue(root));
   }
+  rejectDuplicateKeys(root, "", source_name);
   return ConfigNode(root, "", std::make_shared<const std::string>(source_name),
                     std::make_shared<std::set<std::string>>());
 }

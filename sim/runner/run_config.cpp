@@ -1,8 +1,10 @@
 #include "sim/runner/run_config.hpp"
 
 #include <filesystem>
+#include <stdexcept>
 
 #include "common/config.hpp"
+#include "common/logging.hpp"
 #include "planner/daemon/daemon_settings.hpp"
 #include "planner/interaction/interaction_settings.hpp"
 #include "sim/daemon/daemon_settings.hpp"
@@ -19,7 +21,12 @@ common::ConfigNode loadFrom(const std::string& directory, const std::string& fil
 /// stay valid for both.
 void readDaemonKeys(const common::ConfigNode& root)
 {
-  root.optional<std::string>("log_level", "info");
+  const std::string level = root.optional<std::string>("log_level", "info");
+  try {
+    common::parseLogLevel(level);
+  } catch (const std::invalid_argument& error) {
+    root.fail("log_level", error.what());
+  }
   root.optional<std::string>("lcm_url", "");
 }
 
@@ -50,7 +57,8 @@ RunRequest loadRunSettings(const std::string& config_directory)
   const common::ConfigNode sim_root = loadFrom(config_directory, "sim.yaml");
   readDaemonKeys(sim_root);
   request.simulator = sim::loadSimDaemonSettings(sim_root).simulator;
-  sim_root.acceptAllUnder("bus");  // the CAN bus: the runner connects nothing
+  sim_root.child("bus");           // required, as by ifar-sim ...
+  sim_root.acceptAllUnder("bus");  // ... but the runner connects no CAN bus
   sim_root.rejectUnknownKeys();
   return request;
 }

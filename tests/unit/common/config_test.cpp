@@ -119,6 +119,25 @@ TEST(Config, MissingFileIsAnError)
             "/nonexistent/x.yaml: cannot open the configuration file");
 }
 
+TEST(Config, AFolderIsNotAConfigurationFile)
+{
+  EXPECT_EQ(errorOf([] { ConfigNode::loadFile("/tmp"); }), "/tmp: is a folder, not a configuration file");
+}
+
+// An edit appended to a file would otherwise be ignored: lookups see the first of the two.
+TEST(Config, AKeyGivenTwiceInOneMapNamesItsSecondLine)
+{
+  EXPECT_EQ(errorOf([] { ConfigNode::loadString("votes: 10\nname: x\nvotes: 12\n", "d.yaml"); }),
+            "d.yaml:3: key 'votes': given twice in the same map");
+  EXPECT_EQ(errorOf([] { ConfigNode::loadString("graph:\n  votes: 10\n  votes: 12\n", "d.yaml"); }),
+            "d.yaml:3: key 'graph.votes': given twice in the same map");
+  EXPECT_EQ(errorOf([] {
+              ConfigNode::loadString("layers:\n  - {name: a, cell: 1}\n  - {name: b, name: c}\n", "d.yaml");
+            }),
+            "d.yaml:3: key 'layers[1].name': given twice in the same map");
+  EXPECT_NO_THROW(ConfigNode::loadString("a:\n  votes: 1\nb:\n  votes: 2\n", "d.yaml"));
+}
+
 TEST(Config, TopLevelMustBeAMap)
 {
   EXPECT_EQ(errorOf([] { ConfigNode::loadString("- 1\n- 2\n", "l.yaml"); }),
