@@ -70,7 +70,15 @@ function(ifar_gtest)
   if(ARG_RUN_SERIAL)
     set(serial TRUE)
   endif()
-  gtest_discover_tests(${ARG_NAME} PROPERTIES LABELS "${ARG_LABELS}" TIMEOUT ${ARG_TIMEOUT} RUN_SERIAL ${serial}
+  # One label only: gtest_discover_tests flattens a list, so "LABELS integration system TIMEOUT 300
+  # RUN_SERIAL TRUE" reached ctest as the label "integration" and properties named "system", "300" and
+  # "TRUE". The system tests then had neither their timeout nor RUN_SERIAL, ran at once, and their
+  # simulators fed each other's lidar packets on UDP 2368.
+  list(LENGTH ARG_LABELS label_count)
+  if(label_count GREATER 1)
+    message(FATAL_ERROR "ifar_gtest(${ARG_NAME}): one label only, got '${ARG_LABELS}'")
+  endif()
+  gtest_discover_tests(${ARG_NAME} PROPERTIES LABELS ${ARG_LABELS} TIMEOUT ${ARG_TIMEOUT} RUN_SERIAL ${serial}
                        DISCOVERY_TIMEOUT 60)
 endfunction()
 
