@@ -11,6 +11,10 @@ namespace ifar::common {
 
 inline constexpr int kBadInputExitCode = 2;
 
+/// An option check "a number, at least `minimum`" whose message says so in words ("--seed: must be at
+/// least 0, got '-1'"); CLI11's NonNegativeNumber prints its range up to 1.8e308.
+CLI::Validator atLeast(double minimum);
+
 /// Parses argv into `app`. Empty when the program goes on; else the code to exit with, after CLI11 printed
 /// the help text or the error.
 std::optional<int> parseCommandLine(CLI::App& app, int argc, char** argv);

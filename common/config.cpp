@@ -133,8 +133,10 @@ void rejectDuplicateKeys(const YAML::Node& node, const std::string& path, const 
       const std::string key = entry.first.Scalar();
       const std::string full_path = joinPath(path, key);
       if (!seen.insert(key).second) {
-        throw ConfigError(source_name + ":" + std::to_string(entry.first.Mark().line + 1) + ": key '" +
-                          full_path + "': given twice in the same map");
+        std::string message = source_name;
+        message += ":" + std::to_string(entry.first.Mark().line + 1);
+        message += ": key '" + full_path + "': given twice in the same map";
+        throw ConfigError(message);
       }
       rejectDuplicateKeys(entry.second, full_path, source_name);
     }

@@ -2,7 +2,9 @@
 
 #include <cstdlib>
 #include <exception>
+#include <functional>
 #include <iostream>
+#include <stdexcept>
 
 #include "common/command_line.hpp"
 #include "common/logging.hpp"
@@ -39,10 +41,28 @@ int runDaemon(int argc, char** argv, const DaemonDescription& description,
     logging.log_directory = log_directory;
     logging.config_level = config.optional<std::string>("log_level", "");
     logging.command_line_level = log_level;
-    try {
-      chooseLogLevel(logging, std::getenv("SPDLOG_LEVEL"));
-    } catch (const std::invalid_argument& error) {
-      throw ConfigError(std::string("log level: ") + error.what());
+    // Each source checked on its own, so the message names where the bad level came from (the config's
+    // is checked even when another source overrides it: the file stays wrong).
+    const char* environment_level = std::getenv("SPDLOG_LEVEL");
+    const auto check_level = [](const std::string& level,
+                                const std::function<void(const std::string&)>& fail) {
+      try {
+        parseLogLevel(level);
+      } catch (const std::invalid_argument& error) {
+        fail(error.what());
+      }
+    };
+    if (!logging.config_level.empty()) {
+      check_level(logging.config_level,
+                  [&config](const std::string& problem) { config.fail("log_level", problem); });
+    }
+    if (!log_level.empty()) {
+      check_level(log_level,
+                  [](const std::string& problem) { throw ConfigError("--log-level: " + problem); });
+    }
+    if (environment_level != nullptr && *environment_level != '\0') {
+      check_level(environment_level,
+                  [](const std::string& problem) { throw ConfigError("SPDLOG_LEVEL: " + problem); });
     }
     logger = makeLogger(description.name, logging);
     // Read even when --lcm-url overrides it, so the daemon's unknown-key check accepts the key.

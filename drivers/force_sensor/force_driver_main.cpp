@@ -40,8 +40,11 @@ DriverSettings loadSettings(const ifar::common::ConfigNode& root)
   const ifar::force_sensor::ForceSensorConfig sensor = ifar::force_sensor::loadForceSensorConfig(root);
   settings.monitor = sensor.monitor;
   settings.force_channel = sensor.channel;
-  // The motor driver's section of the shared file, checked here too: one can.yaml stops both or neither.
-  ifar::motor::loadMotorSection(root);
+  // The motor driver's section of the shared file, when there is one, checked here too: one can.yaml
+  // stops both or neither.
+  if (root.has("motor")) {
+    ifar::motor::loadMotorSection(root);
+  }
   return settings;
 }
 

@@ -36,9 +36,11 @@ int run(ifar::common::DaemonContext& context, const std::string& vehicle_path,
           ? vehicle_path
           : (std::filesystem::path(context.config.sourceName()).parent_path() / "vehicle.yaml").string();
   const auto bus_settings = ifar::can::loadBusSettings(context.config);
-  // The force sensor's section of the shared file belongs to ifar-force-driver, checked here too: one
-  // can.yaml stops both or neither.
-  ifar::force_sensor::loadForceSensorConfig(context.config);
+  // The force sensor's section of the shared file belongs to ifar-force-driver; when there is one, it is
+  // checked here too: one can.yaml stops both or neither.
+  if (context.config.has("force_sensor")) {
+    ifar::force_sensor::loadForceSensorConfig(context.config);
+  }
   context.config.optional<std::string>("raw_channel", "");
   context.config.optional<std::string>("status_channel", "");
   if (context.config.has("motor")) {

@@ -1,5 +1,7 @@
 #include "drivers/velodyne/driver_settings.hpp"
 
+#include <arpa/inet.h>
+
 namespace ifar::velodyne {
 namespace {
 
@@ -18,6 +20,11 @@ DriverSettings loadDriverSettings(const common::ConfigNode& node)
 {
   DriverSettings settings;
   settings.bind_address = node.optional<std::string>("bind_address", settings.bind_address);
+  in_addr parsed{};
+  if (inet_pton(AF_INET, settings.bind_address.c_str(), &parsed) != 1) {
+    node.fail("bind_address",
+              "must be an IPv4 address such as 0.0.0.0 or 192.168.1.77, got '" + settings.bind_address + "'");
+  }
   settings.data_port = readPort(node, "data_port", settings.data_port);
   settings.position_packets = node.optional<bool>("position_packets", settings.position_packets);
   settings.position_port = readPort(node, "position_port", settings.position_port);

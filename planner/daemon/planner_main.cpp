@@ -84,7 +84,8 @@ int runPlanner(common::DaemonContext& context)
     if (error.empty()) {
       logger->info("prior graph {}: {} vertices", daemon.prior_graph, planner.graph().vertexCount());
     } else {
-      logger->error("prior graph not loaded, starting empty: {}", error);
+      // A prior map asked for and missing is a bad config: starting empty would plan without it unnoticed.
+      config.child("daemon").fail("prior_graph", "cannot load the prior graph: " + error);
     }
   }
 

@@ -18,7 +18,9 @@ int main(int argc, char** argv)
   std::uint64_t seed = 1;
   std::string out;
   app.add_option("--kind", kind_text, "room | room_objects | office | tunnel | demo_room")->required();
-  app.add_option("--seed", seed, "random seed: the same seed gives the same world")->capture_default_str();
+  app.add_option("--seed", seed, "random seed: the same seed gives the same world")
+      ->check(ifar::common::atLeast(0))
+      ->capture_default_str();
   app.add_option("--out", out, "world file to write (default: standard output)");
   if (const auto exit_code = ifar::common::parseCommandLine(app, argc, argv)) {
     return *exit_code;

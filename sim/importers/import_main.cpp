@@ -56,7 +56,7 @@ int main(int argc, char** argv)
       vehicle = ifar::common::loadVehicleSettings(ifar::common::ConfigNode::loadFile(vehicle_path));
     } catch (const ifar::common::ConfigError& error) {
       std::cerr << "error: " << error.what() << "\n";
-      return 1;
+      return ifar::common::kBadInputExitCode;
     }
   }
 
@@ -84,7 +84,7 @@ int main(int argc, char** argv)
   }
   if (!result->ok()) {
     std::cerr << "error: " << result->error() << "\n";
-    return 1;
+    return ifar::common::kBadInputExitCode;
   }
   if (out.empty()) {
     std::cout << ifar::sim::formatWorld(result->world());

@@ -167,12 +167,12 @@ int main(int argc, char** argv)
   record->add_option("--dir", directory, "folder for the logs")->capture_default_str();
   record->add_option("--name", name_pattern, "file name, strftime-formatted")->capture_default_str();
   record->add_option("--split-mb", split_mb, "start a new numbered file after this many MB (0 = never)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(ifar::common::atLeast(0))
       ->capture_default_str();
   record
       ->add_option("--rotate", rotate,
                    "keep only this many files, newest as NAME.0 (0 = number them instead)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(ifar::common::atLeast(0))
       ->capture_default_str();
   record->add_option("--channels", channels, "regular expression of channels to record")
       ->capture_default_str();
@@ -184,6 +184,7 @@ int main(int argc, char** argv)
   auto* replay = app.add_subcommand("replay", "lcm-logplayer: publish a recorded log onto LCM again");
   replay->add_option("log", log, "the .lcmlog file")->required();
   replay->add_option("--speed", speed, "playback speed multiplier (0 = as fast as possible)")
+      ->check(ifar::common::atLeast(0))
       ->capture_default_str();
   replay->add_option("--channels", replay_channels, "regular expression of channels to play (default all)");
   replay->add_option("--lcm-url", url, "LCM URL (default: LCM_DEFAULT_URL or LCM's default)");

@@ -20,7 +20,8 @@ int main(int argc, char** argv)
   double duration_s = 0.0;
   bool no_colour = false;
   app.add_option("config", config_path, "launch file, e.g. config/launch/sim_demo.yaml")->required();
-  app.add_option("--duration", duration_s, "stop everything after this many seconds (0 = run until Ctrl-C)");
+  app.add_option("--duration", duration_s, "stop everything after this many seconds (0 = run until Ctrl-C)")
+      ->check(ifar::common::atLeast(0));
   app.add_flag("--no-colour", no_colour, "plain output even on a terminal");
   if (const auto exit_code = ifar::common::parseCommandLine(app, argc, argv)) {
     return *exit_code;

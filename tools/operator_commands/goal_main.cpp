@@ -59,7 +59,9 @@ int main(int argc, char** argv)
   app.add_option("y", y, "goal y in metres, world frame")->required();
   app.add_option("--id", goal_id, "goal id (default: the current time in seconds)");
   app.add_flag("--cancel", cancel, "cancel the goal with this id instead");
-  app.add_option("--repeats", repeats, "how many times to send it, 0.2 s apart")->capture_default_str();
+  app.add_option("--repeats", repeats, "how many times to send it, 0.2 s apart")
+      ->check(ifar::common::atLeast(1))
+      ->capture_default_str();
   app.add_option("--wait", wait_s,
                  "then wait up to this many seconds for EXEC_STATUS to report the goal reached, resending "
                  "the goal every second; exit 1 if it is not reached");

@@ -44,7 +44,7 @@ int main(int argc, char** argv)
     if (!options.window) {
       std::cerr << "error: --window: expected " << ifar::planner_render::kWindowFormat << ", got '"
                 << window_text << "'\n";
-      return 1;
+      return ifar::common::kBadInputExitCode;
     }
   }
 

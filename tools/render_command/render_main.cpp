@@ -31,7 +31,7 @@ int main(int argc, char** argv)
   const auto loaded = ifar::sim::loadWorldFile(world_path);
   if (!loaded.ok()) {
     std::cerr << "error: " << loaded.error() << "\n";
-    return 1;
+    return ifar::common::kBadInputExitCode;
   }
   ifar::common::VehicleSettings vehicle;
   if (!vehicle_path.empty()) {
@@ -39,12 +39,12 @@ int main(int argc, char** argv)
       vehicle = ifar::common::loadVehicleSettings(ifar::common::ConfigNode::loadFile(vehicle_path));
     } catch (const ifar::common::ConfigError& error) {
       std::cerr << "error: " << error.what() << "\n";
-      return 1;
+      return ifar::common::kBadInputExitCode;
     }
   }
   if (resolution < 0.0 || (app.count("--resolution") > 0 && !(resolution > 0.0))) {
     std::cerr << "error: --resolution must be positive metres per pixel\n";
-    return 2;
+    return ifar::common::kBadInputExitCode;
   }
   const auto& world = loaded.world();
   if (resolution == 0.0) {

@@ -23,8 +23,10 @@
 
 namespace {
 
+constexpr const char* kDefaultConfig = "config/can.yaml";
+
 struct Options {
-  std::string config = "config/can.yaml";
+  std::string config = kDefaultConfig;
   std::string bus_kind;
   std::string interface;
   std::string channel;
@@ -46,6 +48,10 @@ ifar::can::BusSettings resolveBus(const Options& options)
 {
   ifar::can::BusSettings settings;
   std::ifstream probe(options.config);
+  if (!probe && options.config != kDefaultConfig) {
+    // The default is optional (the tool runs anywhere); a file asked for by name is not.
+    throw std::invalid_argument("--config: cannot open '" + options.config + "'");
+  }
   if (probe) {
     const auto root = ifar::common::ConfigNode::loadFile(options.config);
     settings = ifar::can::loadBusSettings(root);
@@ -147,10 +153,12 @@ int main(int argc, char** argv)
   app.fallthrough();  // set before the subcommands, which inherit it: `ifar can dump --bus lcm` works
   auto* dump_command = app.add_subcommand("dump", "print received frames in candump -l format");
   dump_command->add_option("-l,--log", options.output, "append to this file instead of printing");
-  dump_command->add_option("-n,--count", options.count, "stop after this many frames (0 = run until killed)");
+  dump_command->add_option("-n,--count", options.count, "stop after this many frames (0 = run until killed)")
+      ->check(ifar::common::atLeast(0));
   auto* play_command = app.add_subcommand("play", "send the frames of a candump log with their timing");
   play_command->add_option("file", options.input, "candump -l log")->required();
   play_command->add_option("--speed", options.speed, "time scale; 0 = as fast as possible")
+      ->check(ifar::common::atLeast(0))
       ->capture_default_str();
   app.require_subcommand(1);
   if (const auto exit_code = ifar::common::parseCommandLine(app, argc, argv)) {

@@ -61,7 +61,16 @@ for section in $(grep -E '^[a-z_]+: *(#.*)?$' "$good" | cut -d: -f1); do
     "unknown key in $section"
 done
 
-# 4. Not YAML at all.
+# 4. A file the config names that cannot be loaded (the planner's prior graph).
+if grep -qE '^  prior_graph:' "$good"; then
+  # (the vehicle file, named relative to the repository, from the copies beside the config)
+  sed -E -e 's|^  prior_graph:.*|  prior_graph: /nonexistent/prior.graph|' \
+    -e "s|^vehicle_config:.*|vehicle_config: $work/vehicle.yaml|" "$good" > "$work/missing_prior.yaml"
+  expect_rejection "$work/missing_prior.yaml" "key 'daemon.prior_graph': cannot load the prior graph" \
+    "missing prior graph"
+fi
+
+# 5. Not YAML at all.
 printf 'a: [1, 2\n' > "$work/syntax.yaml"
 expect_rejection "$work/syntax.yaml" "YAML syntax error" "syntax error"
 

@@ -79,4 +79,20 @@ TEST_F(DaemonMain, AnUnknownKeyStopsStartUpWithExitCodeTwo)
   EXPECT_EQ(url_, "(not recorded)");
 }
 
+TEST_F(DaemonMain, ABadLogLevelNamesWhereItCameFrom)
+{
+  const std::string config = writeConfig("log_level: loud\n");
+  ::testing::internal::CaptureStderr();
+  EXPECT_EQ(run({"--config", config}), 2);
+  EXPECT_NE(
+      ::testing::internal::GetCapturedStderr().find(config + ": key 'log_level': unknown log level 'loud'"),
+      std::string::npos);
+
+  const std::string good = writeConfig("log_level: warn\n");
+  ::testing::internal::CaptureStderr();
+  EXPECT_EQ(run({"--config", good, "--log-level", "chatty"}), 2);
+  EXPECT_NE(::testing::internal::GetCapturedStderr().find("--log-level: unknown log level 'chatty'"),
+            std::string::npos);
+}
+
 }  // namespace

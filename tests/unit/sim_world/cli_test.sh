@@ -14,7 +14,8 @@ if ifar-worldgen --kind castle --out "$work/x.yaml" 2>"$work/err"; then echo "un
 grep -q "unknown kind 'castle'" "$work/err"
 
 printf 'name: bad\nunits: furlong\nstart: {x: 0, y: 0}\n' > "$work/bad.yaml"
-if ifar-render "$work/bad.yaml" 2>"$work/err"; then echo "bad world rendered"; exit 1; fi
+status=0; ifar-render "$work/bad.yaml" 2>"$work/err" || status=$?
+[ "$status" -eq 2 ] || { echo "bad world: exit code $status, expected 2"; exit 1; }
 grep -q "bad.yaml: key 'units': unknown units 'furlong'" "$work/err"
 
 svg="$IFAR_SHARED_DATA/namosim/minimal_stilman_2005.svg"
@@ -26,6 +27,7 @@ else
   echo "skipping SVG import: $svg is absent"
 fi
 printf '<svg viewBox="0 0 10 10"><path id="robot_0" d="M 1 1 h 1 v 1 z"/><path id="w" type="wall" d="M 0 0 L 5"/></svg>' > "$work/bad.svg"
-if ifar-import "$work/bad.svg" 2>"$work/err"; then echo "malformed SVG accepted"; exit 1; fi
+status=0; ifar-import "$work/bad.svg" 2>"$work/err" || status=$?
+[ "$status" -eq 2 ] || { echo "malformed SVG: exit code $status, expected 2"; exit 1; }
 grep -q "element <path> 'w' (line 1): path data at character 9: command 'L' expects 2 numbers" "$work/err"
 echo "sim_world_cli: all checks passed"

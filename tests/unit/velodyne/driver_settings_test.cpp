@@ -41,6 +41,14 @@ TEST(VelodyneDriverSettings, BadValuesNameTheKey)
   }
   EXPECT_THROW(loadDriverSettings(ConfigNode::loadString("status_period_s: 0", "v.yaml")), ConfigError);
   EXPECT_THROW(loadDriverSettings(ConfigNode::loadString("position_packets: maybe", "v.yaml")), ConfigError);
+  try {
+    loadDriverSettings(ConfigNode::loadString("bind_address: 999.1.1.1", "v.yaml"));
+    FAIL() << "expected a ConfigError";
+  } catch (const ConfigError& error) {
+    EXPECT_EQ(std::string(error.what()),
+              "v.yaml: key 'bind_address': must be an IPv4 address such as 0.0.0.0 or 192.168.1.77, got "
+              "'999.1.1.1'");
+  }
 }
 
 }  // namespace
