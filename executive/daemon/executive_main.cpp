@@ -19,6 +19,23 @@ namespace {
 
 constexpr double kControlPeriodS = 0.02;
 
+/// Publishes zero velocity three times when it goes out of scope.
+struct StopOnExit {
+  ifar::executive::ExecutiveNode& node;
+  spdlog::logger& logger;
+  StopOnExit(const StopOnExit&) = delete;
+  StopOnExit(StopOnExit&&) = delete;
+  StopOnExit& operator=(const StopOnExit&) = delete;
+  StopOnExit& operator=(StopOnExit&&) = delete;
+  ~StopOnExit()
+  {
+    for (int repeat = 0; repeat < 3; ++repeat) {
+      node.publishStop(ifar::common::nowMicroseconds());
+    }
+    logger.info("executive stopped; zero velocity published");
+  }
+};
+
 int runExecutive(ifar::common::DaemonContext& context, const std::string& vehicle_path)
 {
   // The executive's own file first, so its errors are reported whatever the vehicle file says.
@@ -40,13 +57,10 @@ int runExecutive(ifar::common::DaemonContext& context, const std::string& vehicl
   loop.every(kControlPeriodS, [&node]() { node.cycle(ifar::common::nowMicroseconds()); });
 
   context.logger->info("executive running at {:.0f} Hz", 1.0 / kControlPeriodS);
-  const int code = loop.run();
-  // Leaving: make sure the last command anyone hears is a stop.
-  for (int repeat = 0; repeat < 3; ++repeat) {
-    node.publishStop(ifar::common::nowMicroseconds());
-  }
-  context.logger->info("executive stopped; zero velocity published");
-  return code;
+  // Leaving, by a signal or by an exception on its way out of the loop, the last command anyone hears is
+  // a stop (the motor driver would stop the drives on the stale command anyway, 200 ms later).
+  const StopOnExit stop_on_exit{node, *context.logger};
+  return loop.run();
 }
 
 }  // namespace
