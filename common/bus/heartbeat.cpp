@@ -42,16 +42,27 @@ LoopHealth healthBetween(const LoopCounters& previous, const LoopCounters& curre
   return health;
 }
 
-void publishHeartbeats(RunLoop& loop, const std::string& process, double period_s)
+LoopHealth withDaemonProblem(LoopHealth health, const std::string& problem)
+{
+  if (problem.empty()) {
+    return health;
+  }
+  health.level = heartbeat_t::HEALTH_DEGRADED;
+  health.message = health.message.empty() ? problem : problem + "; " + health.message;
+  return health;
+}
+
+void publishHeartbeats(RunLoop& loop, const std::string& process, double period_s, DaemonProblem problem)
 {
   heartbeat_t beat{};
   beat.process = process;
   beat.pid = static_cast<std::int32_t>(::getpid());
   beat.sequence = 0;
   LoopCounters previous = countersOf(loop);
-  loop.every(period_s, [&loop, beat, previous]() mutable {
+  loop.every(period_s, [&loop, beat, previous, problem = std::move(problem)]() mutable {
     const LoopCounters current = countersOf(loop);
-    const LoopHealth health = healthBetween(previous, current);
+    const LoopHealth health =
+        withDaemonProblem(healthBetween(previous, current), problem ? problem() : std::string());
     previous = current;
     beat.utime = common::nowMicroseconds();
     beat.health = health.level;

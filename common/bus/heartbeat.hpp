@@ -4,6 +4,7 @@
 // loop's own: what went wrong on the bus since the previous beat.
 
 #include <cstdint>
+#include <functional>
 #include <string>
 
 #include "common/bus/run_loop.hpp"
@@ -29,8 +30,16 @@ struct LoopHealth {
 /// OK when no counter grew from `previous` to `current`, else DEGRADED naming each that did and by how much.
 LoopHealth healthBetween(const LoopCounters& previous, const LoopCounters& current);
 
+/// `health` with the daemon's own problem (empty = none) put first: DEGRADED when there is one.
+LoopHealth withDaemonProblem(LoopHealth health, const std::string& problem);
+
+/// What a daemon reports about its own job at each beat ("stale inputs: pose"); empty when it is fine.
+using DaemonProblem = std::function<std::string()>;
+
 /// Publishes a heartbeat_t for `process` on kHeartbeatChannel from `loop` every `period_s` seconds (the
-/// first one period after the loop starts), with this process's id and a sequence from 0.
-void publishHeartbeats(RunLoop& loop, const std::string& process, double period_s = 1.0);
+/// first one period after the loop starts), with this process's id and a sequence from 0; `problem`
+/// (may be empty) is asked at each beat.
+void publishHeartbeats(RunLoop& loop, const std::string& process, double period_s = 1.0,
+                       DaemonProblem problem = {});
 
 }  // namespace ifar::bus

@@ -52,8 +52,8 @@ int runExecutive(ifar::common::DaemonContext& context, const std::string& vehicl
       ifar::common::loadVehicleSettings(ifar::common::ConfigNode::loadFile(vehicle_file));
 
   ifar::bus::RunLoop loop(context.lcm_url, context.logger);
-  ifar::bus::publishHeartbeats(loop, context.logger->name());
   ifar::executive::ExecutiveNode node(loop, settings, obstacles, vehicle, context.logger);
+  ifar::bus::publishHeartbeats(loop, context.logger->name(), 1.0, [&node] { return node.healthProblem(); });
   loop.every(kControlPeriodS, [&node]() { node.cycle(ifar::common::nowMicroseconds()); });
 
   context.logger->info("executive running at {:.0f} Hz", 1.0 / kControlPeriodS);

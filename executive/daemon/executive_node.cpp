@@ -119,6 +119,7 @@ Output ExecutiveNode::cycle(std::int64_t now_us)
     loop_.publish("EXEC_STATUS", status);
   }
   last_status_ = std::move(status);
+  last_cycle_status_ = output.status;
   if (output.mode_changed) {
     logger_->info("mode {}: {}", modeName(output.status.mode), output.status.reason);
   }
@@ -131,6 +132,11 @@ Output ExecutiveNode::cycle(std::int64_t now_us)
     logger_->warn("blocked passage: {}", output.blocked_passage->text);
   }
   return output;
+}
+
+std::string ExecutiveNode::healthProblem() const
+{
+  return last_cycle_status_ ? executive::healthProblem(*last_cycle_status_) : "no control cycle yet";
 }
 
 void ExecutiveNode::publishStop(std::int64_t now_us)

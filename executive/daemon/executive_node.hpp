@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <string>
 
 #include <spdlog/spdlog.h>
 
@@ -42,6 +43,8 @@ class ExecutiveNode {
   std::int64_t malformedPackets() const { return obstacles_.malformedPackets(); }
   /// The inputs the last cycle gave the executive (obstacles and pushed object included).
   const Inputs& inputs() const { return inputs_; }
+  /// For the heartbeat: healthProblem() of the last cycle's status, or that no cycle has run yet.
+  std::string healthProblem() const;
 
  private:
   /// Fills inputs_.obstacles and inputs_.pushed_object from the packets received so far.
@@ -55,6 +58,7 @@ class ExecutiveNode {
   std::int64_t malformed_paths_ = 0;
   int cycles_ = 0;
   std::optional<ifar::exec_status_t> last_status_;
+  std::optional<Status> last_cycle_status_;
   LocalObstacles obstacles_;
   double pushed_object_radius_m_;
   common::RateLimiter packet_warnings_;

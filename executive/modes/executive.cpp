@@ -130,6 +130,15 @@ Mode Executive::modeOf(Task task)
   return Mode::Stop;
 }
 
+std::string healthProblem(const Status& status)
+{
+  std::int32_t stale = status.stale;
+  if (status.mode == Mode::Idle || status.mode == Mode::Arrived) {
+    stale &= ~static_cast<std::int32_t>(kStalePath);
+  }
+  return stale == 0 ? std::string() : "stale inputs: " + describeStale(stale);
+}
+
 std::int32_t Executive::staleBits(std::int64_t now_us, const Inputs& inputs) const
 {
   std::int32_t bits = 0;

@@ -37,6 +37,10 @@ struct Status {
   std::string reason;
 };
 
+/// The executive's problem for its heartbeat: a stale pose, force or motor input always, a stale path
+/// while a goal is driven (idle or arrived, no path is expected); empty when it is fine.
+std::string healthProblem(const Status& status);
+
 /// A passage the vehicle could not get through: following toward `to` stalled `stalls` times within
 /// kStallSiteRadiusM of `from`. The daemon publishes it as BLOCKED_PASSAGE; the planner seals the
 /// narrowest point between the two and routes around it.

@@ -33,6 +33,18 @@ TEST(Heartbeat, HealthNamesEachCounterThatGrew)
   EXPECT_EQ(health.message, "2 undecodable messages, 1 failed publishes since the last beat");
 }
 
+TEST(Heartbeat, TheDaemonsOwnProblemComesFirst)
+{
+  const ifar::bus::LoopHealth ok{ifar::heartbeat_t::HEALTH_OK, ""};
+  EXPECT_EQ(ifar::bus::withDaemonProblem(ok, "").level, ifar::heartbeat_t::HEALTH_OK);
+  const auto stale = ifar::bus::withDaemonProblem(ok, "stale inputs: pose");
+  EXPECT_EQ(stale.level, ifar::heartbeat_t::HEALTH_DEGRADED);
+  EXPECT_EQ(stale.message, "stale inputs: pose");
+  const auto both = ifar::bus::withDaemonProblem(
+      ifar::bus::healthBetween(LoopCounters{0, 0, 0}, LoopCounters{1, 0, 0}), "stale inputs: pose");
+  EXPECT_EQ(both.message, "stale inputs: pose; 1 undecodable messages since the last beat");
+}
+
 TEST(Heartbeat, BeatsEachPeriodAndReportsABadMessageOnce)
 {
   ifar::bus::RunLoop loop("memq://", std::make_shared<spdlog::logger>(

@@ -129,5 +129,31 @@ TEST_F(ExecutiveNodeTest, SilentInputsStop)
   EXPECT_NE(output.status.stale & kStalePose, 0);
 }
 
+TEST_F(ExecutiveNodeTest, HealthNamesStaleInputsForTheHeartbeat)
+{
+  EXPECT_EQ(node_.healthProblem(), "no control cycle yet");
+  publishInputs();
+  node_.cycle(common::nowMicroseconds());
+  EXPECT_EQ(node_.healthProblem(), "");
+  node_.cycle(common::nowMicroseconds() + 500'000);
+  EXPECT_EQ(node_.healthProblem(), "stale inputs: pose, force, motor");
+}
+
+// Idle or arrived, no path is expected: only the inputs that must always flow count.
+TEST(ExecutiveHealth, AStalePathIsAProblemOnlyWhileAGoalIsDriven)
+{
+  Status status;
+  status.stale = kStalePath;
+  status.mode = Mode::Idle;
+  EXPECT_EQ(healthProblem(status), "");
+  status.mode = Mode::Arrived;
+  EXPECT_EQ(healthProblem(status), "");
+  status.mode = Mode::Follow;
+  EXPECT_EQ(healthProblem(status), "stale inputs: path");
+  status.mode = Mode::Idle;
+  status.stale = kStalePath | kStaleMotor;
+  EXPECT_EQ(healthProblem(status), "stale inputs: motor");
+}
+
 }  // namespace
 }  // namespace ifar::executive
