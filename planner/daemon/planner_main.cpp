@@ -14,6 +14,7 @@
 #include "common/bus/heartbeat.hpp"
 #include "common/bus/run_loop.hpp"
 #include "common/daemon_main.hpp"
+#include "common/input_silence.hpp"
 #include "common/rate_limiter.hpp"
 #include "common/time.hpp"
 #include "common/vehicle.hpp"
@@ -33,6 +34,8 @@ constexpr int kVelodyneDataPort = 2368;
 // Planner::applyAffordance names a refused estimate (unknown id, non-finite values) this way.
 constexpr const char* kAffordanceRejected = "affordance for object";
 constexpr const char* kBlockedPassage = "blocked passage";
+// An input silent this long makes the heartbeat DEGRADED: ten revolutions of packets, fifty poses.
+constexpr double kSilentInputS = 1.0;
 
 /// Everything the LCM thread owns between callbacks.
 struct LoopState {
@@ -90,7 +93,11 @@ int runPlanner(common::DaemonContext& context)
   }
 
   bus::RunLoop loop(context.lcm_url, logger);
-  bus::publishHeartbeats(loop, logger->name());
+  common::InputSilence silence(common::monotonicMicroseconds(), kSilentInputS);
+  const std::size_t packets_input = silence.watch(daemon.channels.velodyne_packet);
+  const std::size_t pose_input = silence.watch(daemon.channels.pose);
+  bus::publishHeartbeats(loop, logger->name(), 1.0,
+                         [&silence] { return silence.problem(common::monotonicMicroseconds()); });
   LoopState state(daemon.input);
   PlannerWorker<PlannerMessages> worker(
       std::move(planner),
@@ -138,6 +145,7 @@ int runPlanner(common::DaemonContext& context)
   };
   loop.subscribe<velodyne_packet_t>(channels.velodyne_packet, [&](const velodyne_packet_t& packet,
                                                                   std::int64_t) {
+    silence.arrived(packets_input, common::monotonicMicroseconds());
     if (packet.port != kVelodyneDataPort) {
       return;  // position packets (port 8308) carry no points
     }
@@ -155,6 +163,7 @@ int runPlanner(common::DaemonContext& context)
     }
   });
   loop.subscribe<pose_t>(channels.pose, [&](const pose_t& pose, std::int64_t) {
+    silence.arrived(pose_input, common::monotonicMicroseconds());
     const InputVerdict verdict = state.assembler.addPose(toPoseSample(pose), common::nowMicroseconds());
     if (verdict != InputVerdict::Accepted && state.input_log.allow(common::monotonicMicroseconds())) {
       logger->warn("{}: pose at {} refused: {}", channels.pose, pose.utime, toString(verdict));

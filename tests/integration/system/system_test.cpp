@@ -147,7 +147,8 @@ struct LoggedRun {
   std::vector<ifar::affordance_t> affordances;
   std::vector<ifar::path_t> paths_after_first_affordance;
   int max_push_plans = 0;
-  std::map<std::string, int> heartbeats;  // beats per process name
+  std::map<std::string, int> heartbeats;     // beats per process name
+  std::map<std::string, int> ok_heartbeats;  // ... of them with health OK
 };
 
 template <typename Message>
@@ -184,6 +185,7 @@ LoggedRun readLog(const std::string& path)
       ifar::heartbeat_t beat;
       if (decodeEvent(*event, beat)) {
         ++run.heartbeats[beat.process];
+        run.ok_heartbeats[beat.process] += beat.health == ifar::heartbeat_t::HEALTH_OK ? 1 : 0;
       }
     } else if (event->channel == "GLOBAL_PATH") {
       ifar::path_t path_message;
@@ -253,6 +255,9 @@ class SystemTest : public ::testing::Test {
          {"sim", "velodyne-driver", "force-driver", "motor-driver", "planner", "executive"}) {
       EXPECT_GE(run.heartbeats.count(process) != 0 ? run.heartbeats.at(process) : 0, 20)
           << "too few heartbeats from " << process << " in the log";
+      // Healthy most of the time: its inputs flow and nothing malformed arrives.
+      EXPECT_GE(run.ok_heartbeats.count(process) != 0 ? run.ok_heartbeats.at(process) : 0, 15)
+          << "too few healthy heartbeats from " << process;
     }
   }
 
