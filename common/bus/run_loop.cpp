@@ -130,23 +130,6 @@ void RunLoop::guard(const std::string& channel, const std::function<void()>& bod
   }
 }
 
-bool RunLoop::decodes(const std::string& channel, const char* type_name, const std::function<bool()>& decode)
-{
-  std::string problem;
-  try {
-    if (decode()) {
-      return true;
-    }
-    problem = std::string("does not decode as ") + type_name;
-  } catch (const std::exception& error) {
-    problem = std::string("does not decode as ") + type_name + ": " + error.what();
-  } catch (...) {
-    problem = std::string("does not decode as ") + type_name + ": an exception that is not a std::exception";
-  }
-  reportBadMessage(channel, problem);
-  return false;
-}
-
 void RunLoop::reportBadMessage(const std::string& channel, const std::string& problem)
 {
   ++bad_messages_;

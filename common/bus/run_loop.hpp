@@ -12,6 +12,8 @@
 #include <spdlog/spdlog.h>
 #include <lcm/lcm-cpp.hpp>
 
+#include "common/lcm_decode.hpp"
+
 namespace ifar::bus {
 
 /// The URL to use: `configured` when not empty, else LCM_DEFAULT_URL when set, else "" (LCM's default
@@ -36,12 +38,13 @@ class RunLoop {
     auto callback = [this, channel, handler = std::move(handler)](const lcm::ReceiveBuffer* buffer,
                                                                   const std::string& /*channel*/) {
       Message message;
-      const bool decoded = decodes(channel, Message::getTypeName(), [&] {
-        return message.decode(buffer->data, 0, static_cast<int>(buffer->data_size)) >= 0;
-      });
-      if (decoded) {
-        guard(channel, [&] { handler(message, buffer->recv_utime); });
+      const common::DecodeResult decoded = common::decodeLcm(message, buffer->data, buffer->data_size);
+      if (!decoded.ok()) {
+        reportBadMessage(channel, "does not decode as " + std::string(Message::getTypeName()) +
+                                      (decoded.error.empty() ? "" : ": " + decoded.error));
+        return;
       }
+      guard(channel, [&] { handler(message, buffer->recv_utime); });
     };
     subscribeRaw(channel, std::move(callback));
   }
@@ -81,9 +84,6 @@ class RunLoop {
     std::function<void()> callback;
   };
   void guard(const std::string& channel, const std::function<void()>& body);
-  /// Runs `decode`; false (counted and logged) when it reports failure or throws: LCM's generated decode
-  /// resizes arrays to the length the message claims, so a negative length throws std::length_error.
-  bool decodes(const std::string& channel, const char* type_name, const std::function<bool()>& decode);
   void reportBadMessage(const std::string& channel, const std::string& problem);
   void runDueTimers();
   int nextTimeoutMs() const;

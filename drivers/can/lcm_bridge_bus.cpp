@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 
+#include "common/lcm_decode.hpp"
 #include "drivers/can/error_frame.hpp"
 #include "drivers/can/frame_queue.hpp"
 
@@ -71,7 +72,7 @@ LcmBridgeBus::LcmBridgeBus(lcm::LCM& lcm, std::string channel) : lcm_(lcm), chan
 void LcmBridgeBus::handleMessage(const lcm::ReceiveBuffer* buffer, const std::string& /*channel*/)
 {
   ifar::can_frame_t message{};
-  if (message.decode(buffer->data, 0, static_cast<int>(buffer->data_size)) < 0) {
+  if (!common::decodeLcm(message, buffer->data, buffer->data_size).ok()) {
     ++counters_.bad_frames;
     return;
   }

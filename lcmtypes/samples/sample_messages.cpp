@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "common/lcm_decode.hpp"
 #include "ifar/affordance_t.hpp"
 #include "ifar/blocked_passage_t.hpp"
 #include "ifar/can_bus_status_t.hpp"
@@ -389,7 +390,7 @@ SampleMessage sample(const std::string& channel, const Message& message)
   message.encode(result.encoded.data(), 0, static_cast<int>(result.encoded.size()));
   result.reencode = [](common::ByteView bytes, std::vector<std::uint8_t>& reencoded) {
     Message decoded;
-    if (decoded.decode(bytes.data(), 0, static_cast<int>(bytes.size())) != static_cast<int>(bytes.size())) {
+    if (common::decodeLcm(decoded, bytes.data(), bytes.size()).bytes != static_cast<int>(bytes.size())) {
       return false;
     }
     reencoded.resize(static_cast<std::size_t>(decoded.getEncodedSize()));

@@ -9,6 +9,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "common/lcm_decode.hpp"
 #include "common/lcm_log/log_reader.hpp"
 #include "ifar/pose_t.hpp"
 #include "ifar/world_state_t.hpp"
@@ -223,18 +224,16 @@ LastMessages readLastMessages(const std::string& log_path, const std::string& gr
   }
   lcm_log::LogEvent event;
   while (log.next(event)) {
-    // The reader bounds a data length by int32, so the size fits LCM's int.
-    const auto size = static_cast<int>(event.data.size());
     if (event.channel == graph_channel) {
       dv_graph_t graph{};
-      if (graph.decode(event.data.data(), 0, size) < 0) {
+      if (!common::decodeLcm(graph, event.data.data(), event.data.size()).ok()) {
         ++last.undecodable;
       } else {
         last.graph = std::move(graph);
       }
     } else if (event.channel == path_channel) {
       path_t path{};
-      if (path.decode(event.data.data(), 0, size) < 0) {
+      if (!common::decodeLcm(path, event.data.data(), event.data.size()).ok()) {
         ++last.undecodable;
       } else {
         for (const push_plan_t& plan : path.push_plans) {
@@ -249,14 +248,14 @@ LastMessages readLastMessages(const std::string& log_path, const std::string& gr
       }
     } else if (event.channel == pose_channel) {
       pose_t pose{};
-      if (pose.decode(event.data.data(), 0, size) < 0) {
+      if (!common::decodeLcm(pose, event.data.data(), event.data.size()).ok()) {
         ++last.undecodable;
       } else {
         appendSpaced(last.run.trajectory, geometry::Point(pose.position[0], pose.position[1]), kSpacingM);
       }
     } else if (event.channel == truth_channel) {
       world_state_t truth{};
-      if (truth.decode(event.data.data(), 0, size) < 0) {
+      if (!common::decodeLcm(truth, event.data.data(), event.data.size()).ok()) {
         ++last.undecodable;
         continue;
       }

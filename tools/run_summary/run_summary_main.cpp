@@ -12,6 +12,7 @@
 
 #include "common/command_line.hpp"
 #include "common/json_text.hpp"
+#include "common/lcm_decode.hpp"
 #include "common/lcm_log/log_reader.hpp"
 #include "ifar/affordance_t.hpp"
 #include "ifar/exec_status_t.hpp"
@@ -46,9 +47,8 @@ struct Track {
 template <typename Message>
 bool decode(const ifar::lcm_log::LogEvent& event, Message& message)
 {
-  // The reader bounds a data length by int32, so the size fits LCM's int.
-  const auto size = static_cast<int>(event.data.size());
-  return message.decode(event.data.data(), 0, size) == size;
+  return ifar::common::decodeLcm(message, event.data.data(), event.data.size()).bytes ==
+         static_cast<int>(event.data.size());
 }
 
 }  // namespace

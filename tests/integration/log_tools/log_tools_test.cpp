@@ -217,5 +217,44 @@ TEST_F(LogTools, RenderGraphDrawsFromTheEventsBeforeTheCorruptionOrFailsNamingFi
   EXPECT_TRUE(contains(failed.output, kHugeClaimProblem)) << failed.output;
 }
 
+/// The sample message of `channel` with the int32 at `offset` (from the fingerprint on) set to -1: an
+/// array that claims a negative length, which makes LCM's generated decode throw std::length_error.
+Bytes negativeLengthEvent(const std::string& channel, std::size_t offset, std::int64_t number)
+{
+  for (const auto& sample : lcmtypes_samples::allSampleMessages()) {
+    if (sample.channel == channel) {
+      Bytes message = sample.encoded;
+      for (std::size_t index = 0; index < 4; ++index) {
+        message.at(offset + index) = 0xff;
+      }
+      return eventBytes(number, 1'700'000'000'000'000 + number * 100'000, channel, message);
+    }
+  }
+  ADD_FAILURE() << "no sample on " << channel;
+  return {};
+}
+
+// A well-framed event whose message claims a negative array length: counted as undecodable, never a crash
+// (log-info aborted on the std::length_error).
+TEST_F(LogTools, AMessageClaimingANegativeArrayLengthIsUndecodableNotACrash)
+{
+  constexpr std::size_t kPacketSizeOffset = 8 + 8 + 4 + 4;  // fingerprint, utime, device time, port
+  constexpr std::size_t kWaypointCountOffset = 8 + 8 + 8 + 8 + 1 + 8 + 8;  // ... utime, goal, sequence,
+                                                                           // valid, length, cost
+  const std::string packets =
+      writeLog("negative.lcmlog", negativeLengthEvent("VELODYNE_PACKET", kPacketSizeOffset, 0));
+  const ToolRun check = run("ifar-log-info", {"--check", packets});
+  EXPECT_EQ(check.exit_code, 1) << check.output;
+  EXPECT_TRUE(contains(check.output, "1 messages on 1 channels")) << check.output;
+
+  Bytes bytes = sampleEvent("DV_GRAPH", 0);
+  append(bytes, negativeLengthEvent("GLOBAL_PATH", kWaypointCountOffset, 1));
+  const std::string log = writeLog("negative-path.lcmlog", bytes);
+  const std::string png = (directory_.path() / "negative-path.png").string();
+  const ToolRun drawn = run("ifar-render-graph", {log, "-o", png});
+  EXPECT_EQ(drawn.exit_code, 0) << drawn.output;
+  EXPECT_TRUE(contains(drawn.output, "1 messages did not decode and were skipped")) << drawn.output;
+}
+
 }  // namespace
 }  // namespace ifar::lcm_log::test
