@@ -2,14 +2,40 @@
 
 #include <cstdlib>
 #include <exception>
-#include <functional>
 #include <iostream>
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 #include "common/command_line.hpp"
 #include "common/logging.hpp"
 
 namespace ifar::common {
+namespace {
+
+/// parseLogLevel's complaint about `level`; empty when it is a level.
+std::string logLevelProblem(const std::string& level)
+{
+  try {
+    parseLogLevel(level);
+  } catch (const std::invalid_argument& error) {
+    return error.what();
+  }
+  return {};
+}
+
+}  // namespace
+
+DaemonKeys readDaemonKeys(const ConfigNode& config)
+{
+  DaemonKeys keys{config.optional<std::string>("log_level", ""), config.optional<std::string>("lcm_url", "")};
+  if (!keys.log_level.empty()) {
+    if (const std::string problem = logLevelProblem(keys.log_level); !problem.empty()) {
+      config.fail("log_level", problem);
+    }
+  }
+  return keys;
+}
 
 int runDaemon(int argc, char** argv, const DaemonDescription& description,
               const std::function<int(DaemonContext&)>& body,
@@ -37,37 +63,28 @@ int runDaemon(int argc, char** argv, const DaemonDescription& description,
   try {
     ConfigNode config = config_path.empty() ? ConfigNode::loadString("", "(no configuration file)")
                                             : ConfigNode::loadFile(config_path);
+    // Each source of a level checked on its own, so the message names where a bad one came from (the
+    // config's even when another source overrides it: the file stays wrong). The config's lcm_url is read
+    // even when --lcm-url overrides it, so the daemon's unknown-key check accepts the key.
+    const DaemonKeys keys = readDaemonKeys(config);
+    const char* environment_level = std::getenv("SPDLOG_LEVEL");
+    for (const auto& [source, level] :
+         {std::pair<std::string, std::string>{"--log-level", log_level},
+          std::pair<std::string, std::string>{"SPDLOG_LEVEL", environment_level ? environment_level : ""}}) {
+      if (!level.empty()) {
+        if (const std::string problem = logLevelProblem(level); !problem.empty()) {
+          std::string message = source;
+          message += ": " + problem;
+          throw ConfigError(message);
+        }
+      }
+    }
     LoggingOptions logging;
     logging.log_directory = log_directory;
-    logging.config_level = config.optional<std::string>("log_level", "");
+    logging.config_level = keys.log_level;
     logging.command_line_level = log_level;
-    // Each source checked on its own, so the message names where the bad level came from (the config's
-    // is checked even when another source overrides it: the file stays wrong).
-    const char* environment_level = std::getenv("SPDLOG_LEVEL");
-    const auto check_level = [](const std::string& level,
-                                const std::function<void(const std::string&)>& fail) {
-      try {
-        parseLogLevel(level);
-      } catch (const std::invalid_argument& error) {
-        fail(error.what());
-      }
-    };
-    if (!logging.config_level.empty()) {
-      check_level(logging.config_level,
-                  [&config](const std::string& problem) { config.fail("log_level", problem); });
-    }
-    if (!log_level.empty()) {
-      check_level(log_level,
-                  [](const std::string& problem) { throw ConfigError("--log-level: " + problem); });
-    }
-    if (environment_level != nullptr && *environment_level != '\0') {
-      check_level(environment_level,
-                  [](const std::string& problem) { throw ConfigError("SPDLOG_LEVEL: " + problem); });
-    }
     logger = makeLogger(description.name, logging);
-    // Read even when --lcm-url overrides it, so the daemon's unknown-key check accepts the key.
-    const std::string configured_url = config.optional<std::string>("lcm_url", "");
-    DaemonContext context{config, logger, lcm_url.empty() ? configured_url : lcm_url};
+    DaemonContext context{config, logger, lcm_url.empty() ? keys.lcm_url : lcm_url};
     return body(context);
   } catch (const ConfigError& error) {
     std::cerr << "ifar-" << description.name << ": error: " << error.what() << std::endl;

@@ -37,6 +37,17 @@ struct DaemonContext {
   std::string lcm_url;  // from --lcm-url, else the config's lcm_url, else "" (LCM_DEFAULT_URL / default)
 };
 
+/// The settings every daemon's config may hold at its top level; "" when not set.
+struct DaemonKeys {
+  std::string log_level;
+  std::string lcm_url;
+};
+
+/// Reads log_level and lcm_url (so the daemon's unknown-key check accepts them); throws ConfigError naming
+/// the file and the key for a log level that is not one. The headless runner reads the daemons' files
+/// with it too.
+DaemonKeys readDaemonKeys(const ConfigNode& config);
+
 /// `add_options` may register extra command-line options before parsing (may be empty).
 int runDaemon(int argc, char** argv, const DaemonDescription& description,
               const std::function<int(DaemonContext&)>& body,

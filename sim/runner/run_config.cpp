@@ -1,10 +1,9 @@
 #include "sim/runner/run_config.hpp"
 
 #include <filesystem>
-#include <stdexcept>
 
 #include "common/config.hpp"
-#include "common/logging.hpp"
+#include "common/daemon_main.hpp"
 #include "planner/daemon/daemon_settings.hpp"
 #include "planner/interaction/interaction_settings.hpp"
 #include "sim/daemon/daemon_settings.hpp"
@@ -17,19 +16,6 @@ common::ConfigNode loadFrom(const std::string& directory, const std::string& fil
   return common::ConfigNode::loadFile((std::filesystem::path(directory) / file).string());
 }
 
-/// The keys runDaemon reads for every daemon; the runner has no bus and logs nothing, but the files
-/// stay valid for both.
-void readDaemonKeys(const common::ConfigNode& root)
-{
-  const std::string level = root.optional<std::string>("log_level", "info");
-  try {
-    common::parseLogLevel(level);
-  } catch (const std::invalid_argument& error) {
-    root.fail("log_level", error.what());
-  }
-  root.optional<std::string>("lcm_url", "");
-}
-
 }  // namespace
 
 RunRequest loadRunSettings(const std::string& config_directory)
@@ -38,7 +24,7 @@ RunRequest loadRunSettings(const std::string& config_directory)
   request.vehicle = common::loadVehicleSettings(loadFrom(config_directory, "vehicle.yaml"));
 
   const common::ConfigNode planner_root = loadFrom(config_directory, "planner.yaml");
-  readDaemonKeys(planner_root);
+  common::readDaemonKeys(planner_root);
   const planner::PlannerConfig planner_config = planner::loadPlannerConfig(planner_root);
   request.planner = planner_config.planner;
   request.planner.vehicle = request.vehicle;
@@ -47,7 +33,7 @@ RunRequest loadRunSettings(const std::string& config_directory)
   request.path_resend_hz = planner_config.daemon.path_resend_hz;
 
   const common::ConfigNode executive_root = loadFrom(config_directory, "executive.yaml");
-  readDaemonKeys(executive_root);
+  common::readDaemonKeys(executive_root);
   // The `obstacles:` section first: loadExecutiveSettings leaves it to its own loader (required, as in
   // the executive daemon).
   request.obstacles = executive::loadObstacleSettings(executive_root.child("obstacles"));
@@ -55,7 +41,7 @@ RunRequest loadRunSettings(const std::string& config_directory)
   executive_root.rejectUnknownKeys();
 
   const common::ConfigNode sim_root = loadFrom(config_directory, "sim.yaml");
-  readDaemonKeys(sim_root);
+  common::readDaemonKeys(sim_root);
   request.simulator = sim::loadSimDaemonSettings(sim_root).simulator;
   sim_root.child("bus");           // required, as by ifar-sim ...
   sim_root.acceptAllUnder("bus");  // ... but the runner connects no CAN bus
