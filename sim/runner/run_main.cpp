@@ -73,14 +73,14 @@ ifar::sim::WorldResult loadWorld(const std::string& name, std::uint64_t seed)
 /// before a run of minutes whose picture would otherwise be lost at its end; empty when it can.
 std::string outputPathProblem(const std::string& path)
 {
-  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
-  const std::string shown = folder.empty() ? "." : folder.string();
+  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  const std::string folder = parent.empty() ? "." : parent.string();
   std::error_code error;
-  if (!std::filesystem::is_directory(folder.empty() ? "." : folder, error)) {
-    return "folder '" + shown + "' does not exist or is not a folder";
+  if (!std::filesystem::is_directory(folder, error)) {
+    return "folder '" + folder + "' does not exist or is not a folder";
   }
-  if (::access(shown.c_str(), W_OK) != 0) {
-    return "folder '" + shown + "' is not writable";
+  if (::access(folder.c_str(), W_OK) != 0) {
+    return "folder '" + folder + "' is not writable";
   }
   return {};
 }
