@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "planner/daemon/planner_messages.hpp"
+#include "sim/world/world_geometry.hpp"
 
 namespace ifar::runner {
 
@@ -44,11 +45,7 @@ std::string GraphPicture::writePng(const std::string& path,
     overlay.truth.push_back(obstacle.outline);
   }
   for (std::size_t index = 0; index < world_.objects.size() && index < object_poses_.size(); ++index) {
-    geometry::Polygon placed;
-    for (const geometry::Point& corner : world_.objects[index].outline) {
-      placed.push_back(object_poses_[index].transform(corner));
-    }
-    overlay.truth.push_back(std::move(placed));
+    overlay.truth.push_back(sim::placedOutline(world_.objects[index], object_poses_[index]));
   }
   return planner_render::renderGraph(*graph_, path_, options, overlay).writePng(path);
 }

@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include "sim/world/world_geometry.hpp"
 #include "tools/render/canvas.hpp"
 #include "tools/render_command/world_picture.hpp"
 
@@ -27,13 +28,8 @@ std::string writeRunPicture(const sim::World& world, const common::VehicleSettin
 
   // Final object poses as outlines over the filled start poses, so a push shows as a moved outline.
   for (std::size_t index = 0; index < world.objects.size() && index < summary.final_objects.size(); ++index) {
-    const sim::MovableObject& object = world.objects[index];
-    geometry::Polygon placed;
-    placed.reserve(object.outline.size());
-    for (const geometry::Point& corner : object.outline) {
-      placed.push_back(summary.final_objects[index].transform(corner));
-    }
-    canvas.drawPolygon(placed, {std::nullopt, kFinalObject, 2});
+    canvas.drawPolygon(sim::placedOutline(world.objects[index], summary.final_objects[index]),
+                       {std::nullopt, kFinalObject, 2});
   }
 
   std::vector<geometry::Point> trajectory;

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "sim/world/world_geometry.hpp"
+
 namespace ifar::sim {
 namespace {
 
@@ -44,10 +46,7 @@ std::vector<lidar::Prism> Simulator::movablePrisms() const
     lidar::Prism prism;
     prism.height_m = object.height_m;
     prism.reflectivity = object.reflectivity;
-    prism.outline.reserve(object.outline.size());
-    for (const auto& point : object.outline) {
-      prism.outline.push_back(states[index].pose.transform(point));
-    }
+    prism.outline = placedOutline(object, states[index].pose);
     prisms.push_back(std::move(prism));
   }
   return prisms;

@@ -6,10 +6,15 @@ namespace ifar::sim {
 
 geometry::Polygon placedOutline(const MovableObject& object)
 {
+  return placedOutline(object, object.pose);
+}
+
+geometry::Polygon placedOutline(const MovableObject& object, const geometry::Pose2& pose)
+{
   geometry::Polygon placed;
   placed.reserve(object.outline.size());
   for (const auto& vertex : object.outline) {
-    placed.push_back(object.pose.transform(vertex));
+    placed.push_back(pose.transform(vertex));
   }
   return placed;
 }

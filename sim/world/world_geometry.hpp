@@ -12,6 +12,8 @@ constexpr double kGravity = 9.81;
 
 /// The object's outline placed at its pose, in world coordinates.
 geometry::Polygon placedOutline(const MovableObject& object);
+/// The object's outline placed at `pose` (where the physics or a run has moved it), in world coordinates.
+geometry::Polygon placedOutline(const MovableObject& object, const geometry::Pose2& pose);
 
 /// The Coulomb force (N) needed to slide the object over the ground: friction x mass x g.
 double slidingForce(const MovableObject& object);
