@@ -8,22 +8,16 @@
 #include <filesystem>
 #include <fstream>
 
+#include "common/byte_order.hpp"
+
 namespace ifar::lcm_log {
 namespace {
 
+using common::readUint32Be;
+using common::readUint64Be;
+
 // Garbage is scanned in pieces this big: small enough to stay in cache, large enough for few reads.
 constexpr std::size_t kScanChunkSize = std::size_t{64} * 1024U;
-
-std::uint32_t readUint32Be(const std::uint8_t* bytes)
-{
-  return (static_cast<std::uint32_t>(bytes[0]) << 24U) | (static_cast<std::uint32_t>(bytes[1]) << 16U) |
-         (static_cast<std::uint32_t>(bytes[2]) << 8U) | static_cast<std::uint32_t>(bytes[3]);
-}
-
-std::uint64_t readUint64Be(const std::uint8_t* bytes)
-{
-  return (static_cast<std::uint64_t>(readUint32Be(bytes)) << 32U) | readUint32Be(bytes + 4);
-}
 
 std::string hex32(std::uint32_t value)
 {

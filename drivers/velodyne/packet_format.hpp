@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "common/byte_order.hpp"
 #include "common/span.hpp"
 
 namespace ifar::velodyne {
@@ -87,14 +88,7 @@ struct PacketInfo {
 PacketInfo inspectPacket(common::ByteView payload);
 
 /// Little-endian readers used by the codec (bounds are the caller's job).
-constexpr std::uint16_t readUint16Le(const std::uint8_t* bytes)
-{
-  return static_cast<std::uint16_t>(bytes[0] | (bytes[1] << 8));
-}
-constexpr std::uint32_t readUint32Le(const std::uint8_t* bytes)
-{
-  return static_cast<std::uint32_t>(bytes[0]) | (static_cast<std::uint32_t>(bytes[1]) << 8) |
-         (static_cast<std::uint32_t>(bytes[2]) << 16) | (static_cast<std::uint32_t>(bytes[3]) << 24);
-}
+using common::readUint16Le;
+using common::readUint32Le;
 
 }  // namespace ifar::velodyne

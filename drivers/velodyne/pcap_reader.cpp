@@ -4,6 +4,8 @@
 #include <fstream>
 #include <utility>
 
+#include "common/byte_order.hpp"
+
 namespace ifar::velodyne {
 namespace {
 
@@ -23,22 +25,9 @@ constexpr std::size_t kMinimumIpv4HeaderSize = 20;
 constexpr std::uint8_t kProtocolUdp = 17;
 constexpr std::size_t kUdpHeaderSize = 8;
 
-std::uint16_t readUint16Be(const std::uint8_t* bytes)
-{
-  return static_cast<std::uint16_t>((bytes[0] << 8) | bytes[1]);
-}
-
-std::uint32_t readUint32Be(const std::uint8_t* bytes)
-{
-  return (static_cast<std::uint32_t>(bytes[0]) << 24) | (static_cast<std::uint32_t>(bytes[1]) << 16) |
-         (static_cast<std::uint32_t>(bytes[2]) << 8) | static_cast<std::uint32_t>(bytes[3]);
-}
-
-std::uint32_t readUint32Little(const std::uint8_t* bytes)
-{
-  return static_cast<std::uint32_t>(bytes[0]) | (static_cast<std::uint32_t>(bytes[1]) << 8) |
-         (static_cast<std::uint32_t>(bytes[2]) << 16) | (static_cast<std::uint32_t>(bytes[3]) << 24);
-}
+using common::readUint16Be;
+using common::readUint32Be;
+using common::readUint32Le;
 
 }  // namespace
 
@@ -96,7 +85,7 @@ PcapReader::PcapReader(std::unique_ptr<std::istream> stream) : stream_(std::move
 
 std::uint32_t PcapReader::fileUint32(const std::uint8_t* bytes) const
 {
-  return swapped_ ? readUint32Be(bytes) : readUint32Little(bytes);
+  return swapped_ ? readUint32Be(bytes) : readUint32Le(bytes);
 }
 
 void PcapReader::readGlobalHeader()
@@ -107,7 +96,7 @@ void PcapReader::readGlobalHeader()
     return;
   }
   // The magic number tells the writer's byte order: try little-endian first, then big-endian.
-  const std::uint32_t magic = readUint32Little(header.data());
+  const std::uint32_t magic = readUint32Le(header.data());
   if (magic == kMagicMicroseconds || magic == kMagicNanoseconds) {
     swapped_ = false;
   } else {

@@ -15,6 +15,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "common/byte_order.hpp"
 #include "common/command_line.hpp"
 #include "common/lcm_log/log_reader.hpp"
 #include "lcmtypes/samples/sample_messages.hpp"
@@ -35,11 +36,8 @@ std::int64_t fingerprintOf(const ifar::lcm_log::LogEvent& event)
   if (event.data.size() < 8) {
     return 0;
   }
-  std::uint64_t value = 0;
-  for (std::size_t index = 0; index < 8; ++index) {
-    value = (value << 8U) | event.data[index];  // LCM encodes the fingerprint big-endian
-  }
-  return static_cast<std::int64_t>(value);
+  return static_cast<std::int64_t>(
+      ifar::common::readUint64Be(event.data.data()));  // LCM writes it big-endian
 }
 
 /// Every problem the reader kept, one a line, each line starting with `prefix`.
