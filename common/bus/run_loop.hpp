@@ -12,7 +12,7 @@
 #include <spdlog/spdlog.h>
 #include <lcm/lcm-cpp.hpp>
 
-#include "common/lcm_decode.hpp"
+#include "lcmtypes/checked_decode.hpp"
 
 namespace ifar::bus {
 
@@ -38,7 +38,7 @@ class RunLoop {
     auto callback = [this, channel, handler = std::move(handler)](const lcm::ReceiveBuffer* buffer,
                                                                   const std::string& /*channel*/) {
       Message message;
-      const common::DecodeResult decoded = common::decodeLcm(message, buffer->data, buffer->data_size);
+      const lcmtypes::DecodeResult decoded = lcmtypes::decodeLcm(message, buffer->data, buffer->data_size);
       if (!decoded.ok()) {
         reportBadMessage(channel, "does not decode as " + std::string(Message::getTypeName()) +
                                       (decoded.error.empty() ? "" : ": " + decoded.error));

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <chrono>
 
-#include "common/lcm_decode.hpp"
 #include "drivers/can/error_frame.hpp"
 #include "drivers/can/frame_queue.hpp"
+#include "lcmtypes/checked_decode.hpp"
 
 namespace ifar::can {
 namespace {
@@ -72,7 +72,7 @@ LcmBridgeBus::LcmBridgeBus(lcm::LCM& lcm, std::string channel) : lcm_(lcm), chan
 void LcmBridgeBus::handleMessage(const lcm::ReceiveBuffer* buffer, const std::string& /*channel*/)
 {
   ifar::can_frame_t message{};
-  if (!common::decodeLcm(message, buffer->data, buffer->data_size).ok()) {
+  if (!lcmtypes::decodeLcm(message, buffer->data, buffer->data_size).ok()) {
     ++counters_.bad_frames;
     return;
   }

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "common/lcm_decode.hpp"
 #include "ifar/affordance_t.hpp"
 #include "ifar/blocked_passage_t.hpp"
 #include "ifar/can_bus_status_t.hpp"
@@ -22,6 +21,7 @@
 #include "ifar/velodyne_packet_t.hpp"
 #include "ifar/velodyne_status_t.hpp"
 #include "ifar/world_state_t.hpp"
+#include "lcmtypes/checked_decode.hpp"
 
 namespace ifar::lcmtypes_samples {
 namespace {
@@ -390,7 +390,7 @@ SampleMessage sample(const std::string& channel, const Message& message)
   message.encode(result.encoded.data(), 0, static_cast<int>(result.encoded.size()));
   result.reencode = [](common::ByteView bytes, std::vector<std::uint8_t>& reencoded) {
     Message decoded;
-    if (common::decodeLcm(decoded, bytes.data(), bytes.size()).bytes != static_cast<int>(bytes.size())) {
+    if (lcmtypes::decodeLcm(decoded, bytes.data(), bytes.size()).bytes != static_cast<int>(bytes.size())) {
       return false;
     }
     reencoded.resize(static_cast<std::size_t>(decoded.getEncodedSize()));

@@ -9,10 +9,10 @@
 #include <unordered_map>
 #include <vector>
 
-#include "common/lcm_decode.hpp"
 #include "common/lcm_log/log_reader.hpp"
 #include "ifar/pose_t.hpp"
 #include "ifar/world_state_t.hpp"
+#include "lcmtypes/checked_decode.hpp"
 
 namespace ifar::planner_render {
 
@@ -226,14 +226,14 @@ LastMessages readLastMessages(const std::string& log_path, const std::string& gr
   while (log.next(event)) {
     if (event.channel == graph_channel) {
       dv_graph_t graph{};
-      if (!common::decodeLcm(graph, event.data.data(), event.data.size()).ok()) {
+      if (!lcmtypes::decodeLcm(graph, event.data.data(), event.data.size()).ok()) {
         ++last.undecodable;
       } else {
         last.graph = std::move(graph);
       }
     } else if (event.channel == path_channel) {
       path_t path{};
-      if (!common::decodeLcm(path, event.data.data(), event.data.size()).ok()) {
+      if (!lcmtypes::decodeLcm(path, event.data.data(), event.data.size()).ok()) {
         ++last.undecodable;
       } else {
         for (const push_plan_t& plan : path.push_plans) {
@@ -248,14 +248,14 @@ LastMessages readLastMessages(const std::string& log_path, const std::string& gr
       }
     } else if (event.channel == pose_channel) {
       pose_t pose{};
-      if (!common::decodeLcm(pose, event.data.data(), event.data.size()).ok()) {
+      if (!lcmtypes::decodeLcm(pose, event.data.data(), event.data.size()).ok()) {
         ++last.undecodable;
       } else {
         appendSpaced(last.run.trajectory, geometry::Point(pose.position[0], pose.position[1]), kSpacingM);
       }
     } else if (event.channel == truth_channel) {
       world_state_t truth{};
-      if (!common::decodeLcm(truth, event.data.data(), event.data.size()).ok()) {
+      if (!lcmtypes::decodeLcm(truth, event.data.data(), event.data.size()).ok()) {
         ++last.undecodable;
         continue;
       }

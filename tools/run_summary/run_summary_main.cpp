@@ -12,13 +12,13 @@
 
 #include "common/command_line.hpp"
 #include "common/json_text.hpp"
-#include "common/lcm_decode.hpp"
 #include "common/lcm_log/log_reader.hpp"
 #include "ifar/affordance_t.hpp"
 #include "ifar/exec_status_t.hpp"
 #include "ifar/path_t.hpp"
 #include "ifar/pose_t.hpp"
 #include "ifar/world_state_t.hpp"
+#include "lcmtypes/checked_decode.hpp"
 
 namespace {
 
@@ -47,7 +47,7 @@ struct Track {
 template <typename Message>
 bool decode(const ifar::lcm_log::LogEvent& event, Message& message)
 {
-  return ifar::common::decodeLcm(message, event.data.data(), event.data.size()).bytes ==
+  return ifar::lcmtypes::decodeLcm(message, event.data.data(), event.data.size()).bytes ==
          static_cast<int>(event.data.size());
 }
 

@@ -1,4 +1,4 @@
-#include "tests/unit/lcm_log/allocation_tracker.hpp"
+#include "tests/support/allocation_tracker.hpp"
 
 #include <atomic>
 #include <cstdlib>
@@ -11,7 +11,7 @@ std::atomic<std::size_t> largest_allocation{0};
 
 }  // namespace
 
-namespace ifar::lcm_log::test {
+namespace ifar::test {
 
 void startTrackingAllocations()
 {
@@ -25,7 +25,7 @@ std::size_t stopTrackingAllocations()
   return largest_allocation;
 }
 
-}  // namespace ifar::lcm_log::test
+}  // namespace ifar::test
 
 // Replacing the global operator new is the only way to see every allocation (std::string, std::vector,
 // the file stream's buffer). The array and sized forms forward to these two by the standard's defaults.
