@@ -133,8 +133,13 @@ int play(ifar::can::CanBus& bus, const Options& options)
     }
     ++sent;
   }
-  std::cerr << "ifar can play: sent " << sent << " frames, skipped " << opened.bus->counters().bad_frames
-            << " bad lines\n";
+  const auto skipped = opened.bus->counters().bad_frames;
+  std::cerr << "ifar can play: sent " << sent << " frames, skipped " << skipped << " bad lines\n";
+  if (sent == 0 && skipped > 0) {
+    // Every line was bad: the file is not a candump log, and playing nothing is not a success.
+    std::cerr << "ifar can play: error: no line of " << options.input << " is a candump -l frame\n";
+    return 1;
+  }
   return 0;
 }
 
