@@ -19,7 +19,7 @@ namespace ifar::executive {
 struct DoorwaySettings {
   bool enabled = true;
   double max_width_m =
-      1.3;  ///< a gap across the path narrower than this (between its two posts) is a doorway
+      1.2;  ///< a gap across the path narrower than this (between its two posts) is a doorway
   double look_ahead_m = 3.0;      ///< the path is searched for doorways this far ahead of the vehicle
   double min_ahead_m = 0.8;       ///< ... from this far (one the vehicle stands in is not started again)
   double approach_m = 1.0;        ///< the straight run starts this far before the door's centre

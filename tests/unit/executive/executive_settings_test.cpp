@@ -32,7 +32,7 @@ TEST(ExecutiveSettings, LoadsShippedConfig)
   EXPECT_DOUBLE_EQ(settings.tactile.no_motion_time_s, 2.0);
   EXPECT_DOUBLE_EQ(settings.tactile.contact_force_n, settings.approach.contact_force_n);
   EXPECT_TRUE(settings.doorway.enabled);
-  EXPECT_DOUBLE_EQ(settings.doorway.max_width_m, 1.3);
+  EXPECT_DOUBLE_EQ(settings.doorway.max_width_m, 1.2);
   EXPECT_DOUBLE_EQ(settings.doorway.speed, 0.6);
   EXPECT_EQ(settings.blocked_passage_on_sight, GapReportScope::NearPushedObjects);
   EXPECT_DOUBLE_EQ(settings.gap_report_repeat_s, 2.0);
