@@ -613,6 +613,27 @@ void Executive::countStall(Cycle& cycle, const geometry::Point& target)
   stalls_at_site_ = 0;
 }
 
+void Executive::giveUpUnreachableContact(Cycle& cycle, const std::string& contact)
+{
+  // The contact cannot be reached (the stand-off point boxed in, the guard stopping the creep): the plan
+  // costs more than planned, without bound. Algorithm 2's answer: tell the planner, wait for its replan.
+  AffordanceEvent event;
+  event.object_id = active_plan_.object_id;
+  event.pushable = false;
+  event.planned_cost = active_plan_.expected_cost;
+  event.measured_cost = active_plan_.expected_cost;
+  event.reason = AffordanceReason::CostHigher;
+  event.text = fmt::format("object {}: {} not reached: no motion for {:.1f} s on the way to it",
+                           active_plan_.object_id, contact, 2.0 * settings_.stall_timeout_s);
+  cycle.affordance = event;
+  task_ = Task::ReplanWait;
+  replan_requested_us_ = cycle.now_us;
+  ++replans_;
+  task_reason_ = fmt::format("waiting for replan: {}", event.text);
+  cycle.reason = task_reason_;
+  cycle.desired = {};
+}
+
 void Executive::stepApproach(Cycle& cycle)
 {
   cycle.target = active_plan_.contact_pose.position();
@@ -629,23 +650,7 @@ void Executive::stepApproach(Cycle& cycle)
     return;
   }
   if (standing_still) {
-    // The contact cannot be reached (the stand-off point boxed in, the guard stopping the creep): the plan
-    // costs more than planned, without bound. Algorithm 2's answer: tell the planner, wait for its replan.
-    AffordanceEvent event;
-    event.object_id = active_plan_.object_id;
-    event.pushable = false;
-    event.planned_cost = active_plan_.expected_cost;
-    event.measured_cost = active_plan_.expected_cost;
-    event.reason = AffordanceReason::CostHigher;
-    event.text = fmt::format("object {}: contact not reached: no motion for {:.1f} s on the way to it",
-                             active_plan_.object_id, 2.0 * settings_.stall_timeout_s);
-    cycle.affordance = event;
-    task_ = Task::ReplanWait;
-    replan_requested_us_ = cycle.now_us;
-    ++replans_;
-    task_reason_ = fmt::format("waiting for replan: {}", event.text);
-    cycle.reason = task_reason_;
-    cycle.desired = {};
+    giveUpUnreachableContact(cycle, "contact");
     return;
   }
   const ApproachStep result =
@@ -662,6 +667,8 @@ void Executive::stepApproach(Cycle& cycle)
   }
   push_control_index_ = 0;
   approach_escaped_object_.reset();
+  push_phase_ = PushPhase::Pushing;
+  anchorMotion(cycle);
   tracker_.begin(active_plan_);
   tactile_.begin(active_plan_, max_push_force_n_);
   task_ = Task::Push;
@@ -701,6 +708,19 @@ void Executive::stepPush(Cycle& cycle)
     }
     // Cheaper than planned: the push still opens the passage, so it goes on; the planner learns the
     // lower cost from the event.
+  }
+  if (result.phase != push_phase_) {
+    push_phase_ = result.phase;
+    anchorMotion(cycle);
+  }
+  if (result.phase == PushPhase::Switching && standingStill(cycle)) {
+    // Between primitives the vehicle drives round the object to its next contact like a first approach,
+    // and can be boxed in the same way: one stood 150 s beside a box in a Willow corridor until the run
+    // timed out (bench willow t3 at b72a599).
+    rememberPushedObject(object_position);
+    giveUpUnreachableContact(
+        cycle, fmt::format("contact edge {}", active_plan_.controls[result.control_index].contact_edge));
+    return;
   }
 
   if (result.phase == PushPhase::Finished) {

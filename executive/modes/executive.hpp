@@ -110,6 +110,8 @@ class Executive {
   bool pathCrossesDoorway(const Path& path) const;
   void stepApproach(Cycle& cycle);
   void stepPush(Cycle& cycle);
+  /// Sends AFFORDANCE "not reached" for the active plan's object and waits for the replan.
+  void giveUpUnreachableContact(Cycle& cycle, const std::string& contact);
   void stepReplanWait(Cycle& cycle);
   void stepBackOff(Cycle& cycle);
   /// Following (or an approach's collision-free leg) got nowhere: back off straight or reversing along
@@ -166,8 +168,9 @@ class Executive {
   int replans_ = 0;
 
   PushPlan active_plan_;
-  std::vector<geometry::Point> object_path_;            // see startObjectPath()
-  std::size_t push_control_index_ = 0;                  // the tracker's current primitive
+  std::vector<geometry::Point> object_path_;   // see startObjectPath()
+  std::size_t push_control_index_ = 0;         // the tracker's current primitive
+  PushPhase push_phase_ = PushPhase::Pushing;  // its phase last cycle: motion is re-anchored on a change
   std::vector<geometry::Point> object_free_obstacles_;  // reused buffer of objectFreeObstacles()
   Approach approach_;
   PushTracker tracker_;

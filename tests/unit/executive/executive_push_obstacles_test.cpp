@@ -95,7 +95,7 @@ class ExecutivePushObstaclesTest : public ::testing::Test {
     inputs.motor = Stamped<MotorReading>{MotorReading{true, false, ""}, now_us_};
     inputs.obstacles = Stamped<std::vector<Point>>{points, now_us_};
     const Output output = executive_.step(now_us_, inputs);
-    if (!(force_n && output.command.linear > 0.0)) {  // a stalling force stops forward motion
+    if (!held_ && !(force_n && output.command.linear > 0.0)) {  // a stalling force stops forward motion
       pose_ = testing::drive(pose_, output.command, kCycleUs * 1e-6);
     }
     return output;
@@ -128,6 +128,7 @@ class ExecutivePushObstaclesTest : public ::testing::Test {
   ExecutiveSettings settings_;
   common::VehicleSettings vehicle_;
   Executive executive_;
+  bool held_ = false;  // the vehicle does not move whatever it is commanded
   Path path_ = pushPath();
   Pose2 pose_{0.85, 0.0, 0.0};  // in the push lane behind the contact pose: no collision-free leg
   Point object_ = kObjectStart;
@@ -242,6 +243,46 @@ TEST_F(ExecutivePushObstaclesTest, AnApproachStuckTwiceOnItsWayReportsTheContact
   EXPECT_FALSE(event->pushable);
   EXPECT_NE(event->text.find("contact not reached"), std::string::npos) << event->text;
   EXPECT_EQ(output.status.pushes, 0);
+}
+
+TEST_F(ExecutivePushObstaclesTest, AContactSwitchThatGetsNowhereIsReportedAsNotReached)
+{
+  // After the first push the plan switches to the box's left face (edge 3), driving round it like a first
+  // approach. A vehicle that gets nowhere there (held in place from the switch's first cycle: boxed in,
+  // as one was beside a box in a Willow corridor) stood until the run timed out; now twice
+  // stall_timeout_s without motion reports the contact as not reached, as on a first approach.
+  PushPlan& plan = path_.push_plans.front();
+  PushControl switch_contact;
+  switch_contact.kind = PushControlKind::SwitchContact;
+  switch_contact.contact_edge = 3;
+  switch_contact.expected_vehicle_pose = {3.15, 1.2, -kPi / 2.0};
+  switch_contact.expected_object_pose = plan.controls.front().expected_object_pose;
+  PushControl sideways = plan.controls.front();
+  sideways.contact_edge = 3;
+  sideways.expected_vehicle_pose = {3.15, 0.6, -kPi / 2.0};
+  sideways.expected_object_pose = {3.15, -0.3, 0.0};
+  plan.controls.push_back(switch_contact);
+  plan.controls.push_back(sideways);
+
+  Output output;
+  std::optional<AffordanceEvent> event;
+  int held_cycles = 0;
+  for (int index = 0; index < 3000 && !event; ++index) {
+    output = cycle({});
+    event = output.affordance;
+    if (held_cycles > 0 || output.status.reason.find("switching to contact edge 3") != std::string::npos) {
+      held_ = true;
+      ++held_cycles;
+    }
+  }
+  ASSERT_TRUE(event) << output.status.reason;
+  EXPECT_EQ(event->object_id, 9);
+  EXPECT_FALSE(event->pushable);
+  EXPECT_EQ(event->reason, AffordanceReason::CostHigher);
+  EXPECT_EQ(event->text, "object 9: contact edge 3 not reached: no motion for 3.0 s on the way to it");
+  EXPECT_EQ(output.status.mode, Mode::ReplanWait);
+  EXPECT_TRUE(output.command.isZero());
+  EXPECT_NEAR(held_cycles * kCycleUs * 1e-6, 2.0 * settings_.stall_timeout_s, 0.1);
 }
 
 TEST_F(ExecutivePushObstaclesTest, APushUnderWayFinishesWhenTheReplannedPathDropsIt)
