@@ -40,7 +40,7 @@ class ClaimWalker {
         return field.name + " claims " + std::to_string(count) + " elements at byte " +
                std::to_string(position);
       }
-      const std::size_t element_size = minimumElementSize(field);
+      const std::size_t element_size = field.min_element_size;
       // Each element takes at least one byte, so a count beyond the bytes left is refused before it is
       // multiplied (an int64 length member could overflow the product).
       if (static_cast<std::uint64_t>(count) > left || static_cast<std::size_t>(count) * element_size > left) {
@@ -78,17 +78,6 @@ class ClaimWalker {
   }
 
  private:
-  std::size_t minimumElementSize(const Field& field) const
-  {
-    if (field.kind == FieldKind::kString) {
-      return 5;  // int32 length and the NUL it counts
-    }
-    if (field.kind == FieldKind::kStruct) {
-      return schema_.types()[field.struct_index].min_wire_size;
-    }
-    return fixedWireSize(field.kind);
-  }
-
   static bool isVariable(const Field& field)
   {
     return !field.dimensions.empty() && field.dimensions.front().is_variable;
@@ -139,26 +128,34 @@ class ClaimWalker {
   common::ByteView bytes_;
 };
 
-}  // namespace
-
-std::optional<std::string> findUnbackedClaim(const Schema& schema, const StructType& type,
-                                             common::ByteView message)
+/// Walks the whole message; `position` ends where it does when every claim is backed.
+std::optional<std::string> walkMessage(const Schema& schema, const StructType& type, common::ByteView message,
+                                       std::size_t& position)
 {
   if (message.size() < kHashSize) {
     return type.name + " needs its 8-byte type hash, " + std::to_string(message.size()) + " bytes given";
   }
-  std::size_t position = kHashSize;
+  position = kHashSize;
   if (auto problem = ClaimWalker(schema, message).walkStruct(type, position)) {
     return type.name + "." + *problem;
   }
   return std::nullopt;
 }
 
+}  // namespace
+
+std::optional<std::string> findUnbackedClaim(const Schema& schema, const StructType& type,
+                                             common::ByteView message)
+{
+  std::size_t position = 0;
+  return walkMessage(schema, type, message, position);
+}
+
 std::optional<std::size_t> encodedLength(const Schema& schema, const StructType& type,
                                          common::ByteView message)
 {
-  std::size_t position = kHashSize;
-  if (message.size() < kHashSize || ClaimWalker(schema, message).walkStruct(type, position)) {
+  std::size_t position = 0;
+  if (walkMessage(schema, type, message, position)) {
     return std::nullopt;
   }
   return position;

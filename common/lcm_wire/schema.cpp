@@ -289,21 +289,21 @@ std::size_t computeMinWireSize(std::vector<StructType>& types, std::size_t index
   state[index] = 1;
   std::size_t size = 0;
   bool fixed_size = true;
-  for (const Field& field : types[index].fields) {
+  for (Field& field : types[index].fields) {
     std::size_t count = 1;
     for (const Dimension& dimension : field.dimensions) {
       count = dimension.is_variable ? 0 : count * static_cast<std::size_t>(dimension.fixed_count);
       fixed_size = fixed_size && !dimension.is_variable;
     }
-    std::size_t element = fixedWireSize(field.kind);
+    field.min_element_size = fixedWireSize(field.kind);
     if (field.kind == FieldKind::kString) {
-      element = 5;  // int32 length, and the terminating NUL the length counts
+      field.min_element_size = 5;  // int32 length, and the terminating NUL the length counts
       fixed_size = false;
     } else if (field.kind == FieldKind::kStruct) {
-      element = computeMinWireSize(types, field.struct_index, state);
+      field.min_element_size = computeMinWireSize(types, field.struct_index, state);
       fixed_size = fixed_size && types[field.struct_index].fixed_size;
     }
-    size += count * element;
+    size += count * field.min_element_size;
   }
   // Only zero-length fixed arrays take no bytes; min_wire_size stays at least 1 so counts stay bounded,
   // and such a struct is not of fixed size (its one byte is not really there).

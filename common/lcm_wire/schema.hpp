@@ -53,6 +53,9 @@ struct Field {
   std::vector<Dimension> dimensions;  ///< empty for a scalar member
   /// For a member other members take their length from: its place among the struct's length_slots.
   std::size_t length_slot = kNoLengthSlot;
+  /// The fewest bytes one element takes on the wire (a string 5: its int32 length and the NUL it counts;
+  /// a struct its min_wire_size).
+  std::size_t min_element_size = 1;
 };
 
 struct StructType {

@@ -93,6 +93,9 @@ TEST(LcmWireSchema, ReadsMembersDimensionsAndNestedTypes)
   EXPECT_EQ(shape->fields[6].kind, FieldKind::kByte);
   // utime 8, empty name 5, scale 24, num_points 2, no points, closed 1, tag 4.
   EXPECT_EQ(shape->min_wire_size, 44U);
+  EXPECT_EQ(shape->fields[1].min_element_size, 5U);  // a string: its int32 length and the NUL
+  EXPECT_EQ(shape->fields[2].min_element_size, 4U);
+  EXPECT_EQ(points.min_element_size, 17U);  // a point_t
   EXPECT_FALSE(shape->fixed_size);
   EXPECT_EQ(shape->length_slots, 1U);
   EXPECT_EQ(shape->fields[3].length_slot, 0U);
