@@ -4,7 +4,6 @@
 // line, the tables as Markdown and the PNG plots. Exit status: 0 all rows present and no planner error; 2 a
 // planner errored; 3 rows are missing (a kind gave fewer tasks than asked).
 
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -15,7 +14,6 @@
 #include <limits>
 #include <map>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -26,6 +24,7 @@
 #include <CLI/CLI.hpp>
 
 #include "bench/baselines/sampling_planners.hpp"
+#include "bench/scenarios/forked_items.hpp"
 #include "bench/scenarios/plots.hpp"
 #include "bench/scenarios/result_row.hpp"
 #include "bench/scenarios/scenario_kind.hpp"
@@ -125,8 +124,8 @@ scenarios::ResultRow systemRow(scenarios::ScenarioKind kind, const std::string& 
   if (!run.ran) {
     row.status = "runner_unavailable";
     row.reason = run.reason;
-  } else if (run.reason.rfind("runner threw", 0) == 0) {
-    row.status = "error";
+  } else if (!run.failure_status.empty()) {
+    row.status = run.failure_status;
     row.reason = run.reason;
   } else if (!task.reachable_with_pushing) {
     row.status = "unreachable";
@@ -163,7 +162,7 @@ struct SystemJob {
   scenarios::Task task;
 };
 
-/// One runner run of a job: FAR mode or ours, filled in by whichever worker thread drove it.
+/// One runner run of a job: FAR mode or ours, filled in as its child process answers.
 struct SystemSlot {
   std::size_t job;  // index into the jobs
   bool ours;        // false: FAR mode
@@ -218,6 +217,12 @@ int main(int argc, char** argv)
   int timing_repeats = 5;
   app.add_option("--timing-repeats", timing_repeats,
                  "runs of each grid A*, FAR mode and ours query; the median CPU time is reported")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  double query_deadline_s = 60.0;
+  app.add_option("--query-deadline", query_deadline_s,
+                 "wall seconds one search query (with its timing repeats) may take in its child process "
+                 "before it is killed and recorded as a timeout")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   app.add_option("--factor", sampling.optimum_factor, "RRT*/BIT* stop within this factor of the optimum")
@@ -313,6 +318,8 @@ int main(int argc, char** argv)
   search_settings.planners = splitList(planner_list);
   search_settings.sampling = sampling;
   search_settings.timing_repeats = timing_repeats;
+  search_settings.query_deadline =
+      std::chrono::milliseconds(static_cast<long long>(std::ceil(query_deadline_s * 1000.0)));
   for (const std::string& planner : search_settings.planners) {
     if (std::find(scenarios::searchPlanners().begin(), scenarios::searchPlanners().end(), planner) ==
         scenarios::searchPlanners().end()) {
@@ -472,44 +479,59 @@ int main(int argc, char** argv)
       }
     }
   }
-  // Every (task, mode) run is independent and deterministic in simulated time: `jobs_count` threads take
-  // them in order; the rows keep that order whatever finishes first.
+  // Every (task, mode) run is independent and deterministic in simulated time: they start in order, and
+  // the rows keep that order whatever finishes first.
   std::vector<SystemSlot> slots;
   for (std::size_t job = 0; job < jobs.size(); ++job) {
     for (const bool ours : {false, true}) {
       slots.push_back({job, ours, {}, false});
     }
   }
-  std::atomic<std::size_t> next_slot{0};
-  std::mutex print_mutex;
-  const auto drive_slots = [&] {
-    for (std::size_t index = next_slot++; index < slots.size(); index = next_slot++) {
-      SystemSlot& slot = slots[index];
-      const SystemJob& job = jobs[slot.job];
-      const double used_minutes = std::chrono::duration<double>(Clock::now() - began).count() / 60.0;
-      if (system_budget_minutes > 0.0 && used_minutes > system_budget_minutes &&
-          scenarios::systemRunnerAvailable()) {
-        slot.skipped = true;
-        continue;
-      }
-      slot.run = runner->run(kept[job.world].world, job.task, slot.ours, budget.seconds(job.task.optimal));
-      const std::lock_guard<std::mutex> lock(print_mutex);
-      const scenarios::ResultRow row =
-          systemRow(job.kind, kept[job.world].name, job.task, slot.ours ? "ours" : "far", slot.run);
-      std::cerr << scenarios::kindName(job.kind) << " " << kept[job.world].name << " " << job.task.id << " "
-                << row.planner << ": " << row.status << " " << row.reason << " (" << slot.run.distance_m
-                << " m, " << slot.run.sim_time_s << " s simulated, " << slot.run.wall_time_s << " s wall)\n";
-    }
+  // Each run is driven in a child process of its own, `jobs_count` at once, so a runner that crashes or
+  // hangs costs its own row (status error or timeout, with the reason), not the suite.
+  scenarios::ForkedItems runs;
+  runs.count = slots.size();
+  runs.parallel = jobs_count;
+  runs.answer = [&](std::size_t index) {
+    const SystemSlot& slot = slots[index];
+    const SystemJob& job = jobs[slot.job];
+    return scenarios::toAnswer(
+        runner->run(kept[job.world].world, job.task, slot.ours, budget.seconds(job.task.optimal)));
   };
-  {
-    std::vector<std::thread> workers;
-    for (int worker = 0; worker < jobs_count; ++worker) {
-      workers.emplace_back(drive_slots);
+  // Wall time: the runner runs several times faster than simulated time (at most 0.28 s of wall per
+  // simulated second in the suite of 2026-11-27), so only a hung run meets this.
+  runs.deadline = [&](std::size_t index) {
+    const double seconds = 120.0 + budget.seconds(jobs[slots[index].job].task.optimal);
+    return std::chrono::milliseconds(static_cast<long long>(1000.0 * seconds));
+  };
+  runs.skip = [&](std::size_t) {
+    const double used_minutes = std::chrono::duration<double>(Clock::now() - began).count() / 60.0;
+    return system_budget_minutes > 0.0 && used_minutes > system_budget_minutes &&
+           scenarios::systemRunnerAvailable();
+  };
+  runs.finished = [&](std::size_t index, const scenarios::ForkedOutcome& outcome) {
+    SystemSlot& slot = slots[index];
+    const SystemJob& job = jobs[slot.job];
+    if (outcome.status == "skipped") {
+      slot.skipped = true;
+      return;
     }
-    for (std::thread& worker : workers) {
-      worker.join();
+    const std::optional<scenarios::SystemRun> run =
+        outcome.answered ? scenarios::systemRunFromAnswer(outcome.answer) : std::nullopt;
+    if (run) {
+      slot.run = *run;
+    } else {
+      slot.run.ran = true;
+      slot.run.failure_status = outcome.answered ? "error" : outcome.status;
+      slot.run.reason = "runner " + (outcome.answered ? "answer could not be read" : outcome.reason);
     }
-  }
+    const scenarios::ResultRow row =
+        systemRow(job.kind, kept[job.world].name, job.task, slot.ours ? "ours" : "far", slot.run);
+    std::cerr << scenarios::kindName(job.kind) << " " << kept[job.world].name << " " << job.task.id << " "
+              << row.planner << ": " << row.status << " " << row.reason << " (" << slot.run.distance_m
+              << " m, " << slot.run.sim_time_s << " s simulated, " << slot.run.wall_time_s << " s wall)\n";
+  };
+  scenarios::runForked(runs);
   std::map<std::size_t, std::vector<scenarios::PathPair>> driven_pairs;  // kept world -> trajectories
   int skipped = 0;
   for (std::size_t job_index = 0; job_index < jobs.size(); ++job_index) {

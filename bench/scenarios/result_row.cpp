@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 
+#include "bench/scenarios/answer_text.hpp"
 #include "common/json_text.hpp"
 
 namespace ifar::scenarios {
@@ -54,6 +56,58 @@ std::string toJsonLine(const ResultRow& row)
     line += ", \"interaction_max_ms\": " + number(row.interaction_max_ms);
   }
   return line + "}";
+}
+
+std::string toAnswer(const ResultRow& row)
+{
+  AnswerWriter writer;
+  for (const std::string* text : {&row.table, &row.planner, &row.kind, &row.world, &row.task}) {
+    writer.text(*text);
+  }
+  writer.flag(row.success);
+  for (const double value : {row.length, row.optimal, row.achievable, row.ms}) {
+    writer.number(value);
+  }
+  writer.text(row.status);
+  writer.text(row.reason);
+  for (const double value : {row.graph_vertices, row.sim_time_s}) {
+    writer.number(value);
+  }
+  writer.integer(row.pushes);
+  for (const double value :
+       {row.frame_median_ms, row.frame_p99_ms, row.frame_max_ms, row.interaction_max_ms}) {
+    writer.number(value);
+  }
+  return writer.answer();
+}
+
+std::optional<ResultRow> rowFromAnswer(std::string_view answer)
+{
+  AnswerReader reader(answer);
+  ResultRow row;
+  for (std::string* text : {&row.table, &row.planner, &row.kind, &row.world, &row.task}) {
+    reader.text(*text);
+  }
+  reader.flag(row.success);
+  for (double* value : {&row.length, &row.optimal, &row.achievable, &row.ms}) {
+    reader.number(*value);
+  }
+  reader.text(row.status);
+  reader.text(row.reason);
+  for (double* value : {&row.graph_vertices, &row.sim_time_s}) {
+    reader.number(*value);
+  }
+  std::int64_t pushes = 0;
+  reader.integer(pushes);
+  row.pushes = static_cast<int>(pushes);
+  for (double* value :
+       {&row.frame_median_ms, &row.frame_p99_ms, &row.frame_max_ms, &row.interaction_max_ms}) {
+    reader.number(*value);
+  }
+  if (!reader.complete()) {
+    return std::nullopt;
+  }
+  return row;
 }
 
 }  // namespace ifar::scenarios

@@ -3,7 +3,9 @@
 // bench/results/latest.jsonl, and SPL (Anderson et al. 2018).
 
 #include <cmath>
+#include <optional>
 #include <string>
+#include <string_view>
 
 namespace ifar::scenarios {
 
@@ -38,5 +40,10 @@ double successWeightedByPathLength(bool success, double optimal, double length);
 /// The row as one JSON object on one line (no trailing newline). Keys in a fixed order; non-finite
 /// numbers are written as null; strings escaped per RFC 8259.
 std::string toJsonLine(const ResultRow& row);
+
+/// Every field of the row as a child process's answer (answer_text.hpp), and back: exact, NaN included.
+/// nullopt when `answer` is not such an answer.
+std::string toAnswer(const ResultRow& row);
+std::optional<ResultRow> rowFromAnswer(std::string_view answer);
 
 }  // namespace ifar::scenarios

@@ -8,8 +8,10 @@
 // timed before it.
 //
 // A task that is unreachable even with pushing is a failure for every planner (status "unreachable").
-// A baseline that fails, times out or throws is a recorded failure with its reason, never dropped.
+// A baseline that fails, times out, throws, crashes or hangs is a recorded failure with its reason, never
+// dropped: the queries run in a child process (forked_items.hpp).
 
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -28,6 +30,9 @@ struct SearchSuiteSettings {
   std::vector<std::string> planners = searchPlanners();
   baselines::SamplingSettings sampling;
   int timing_repeats = 5;  ///< runs of each deterministic query; the median is reported (at least 1)
+  /// Wall time one query (all its timing repeats) may take in its child process before it is killed
+  /// and recorded as a timeout.
+  std::chrono::milliseconds query_deadline{std::chrono::seconds(60)};
 };
 
 /// The planned path of FAR mode and ours per task, for the trajectory plots.

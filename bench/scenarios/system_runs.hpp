@@ -6,7 +6,9 @@
 
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "bench/scenarios/task_selection.hpp"
@@ -18,6 +20,9 @@ namespace ifar::scenarios {
 struct SystemRun {
   bool ran = false;  // false: the runner is not available (or refused the request); see `reason`
   bool arrived = false;
+  /// Empty when the run ended on its own (arrived or not); "error" when the runner threw or crashed,
+  /// "timeout" when it hung and was killed. `reason` says how.
+  std::string failure_status;
   std::string reason;
   double distance_m = 0.0;
   double sim_time_s = 0.0;
@@ -30,6 +35,11 @@ struct SystemRun {
   double interaction_max_ms = NAN;
   std::vector<geometry::Pose2> trajectory;
 };
+
+/// Every field of the run as a child process's answer (answer_text.hpp), and back: exact, NaN included.
+/// nullopt when `answer` is not such an answer.
+std::string toAnswer(const SystemRun& run);
+std::optional<SystemRun> systemRunFromAnswer(std::string_view answer);
 
 /// False when this build has no headless runner.
 bool systemRunnerAvailable();

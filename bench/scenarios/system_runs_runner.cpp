@@ -59,6 +59,7 @@ SystemRun SystemRunner::run(const sim::World& world, const Task& task, bool inte
     }
   } catch (const std::exception& error) {
     run.arrived = false;
+    run.failure_status = "error";
     run.reason = std::string("runner threw: ") + error.what();
   }
   return run;
