@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <exception>
 #include <optional>
 #include <utility>
 
@@ -168,8 +169,17 @@ std::vector<ResultRow> runSearchSuite(ScenarioKind kind, const std::string& worl
   queries.items_per_child = rows.size();
   queries.answer = [&](std::size_t index) {
     const std::size_t task_index = index / planner_count;
-    return toAnswer(plannedRow(settings.planners[index % planner_count], tasks[task_index],
-                               far_references[task_index], maps, settings, grid_search, scratch));
+    ResultRow row;
+    try {
+      row = plannedRow(settings.planners[index % planner_count], tasks[task_index],
+                       far_references[task_index], maps, settings, grid_search, scratch);
+    } catch (const std::exception& error) {
+      row.length = NAN;
+      row.ms = NAN;
+      row.status = "error";
+      row.reason = std::string("planner threw: ") + error.what();
+    }
+    return toAnswer(row);
   };
   queries.deadline = [&](std::size_t) { return settings.query_deadline; };
   queries.finished = [&](std::size_t index, const ForkedOutcome& outcome) {

@@ -238,7 +238,11 @@ void Scenario::applyAffordance(const executive::AffordanceEvent& event, std::int
   update.push_force_n = event.push_force_n;
   update.affordance = event.affordance;
   ++summary_.affordance_updates;
-  publishPath(planner_.applyAffordance(update), utime);
+  const planner::FrameResult result = planner_.applyAffordance(update);
+  if (progress_) {
+    progress_(fmt::format("affordance: {}; planner: {}", event.text, result.status.message));
+  }
+  publishPath(result, utime);
 }
 
 void Scenario::applyBlockedPassage(const executive::BlockedPassage& passage, std::int64_t utime)

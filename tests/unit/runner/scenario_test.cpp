@@ -47,10 +47,15 @@ sim::World worldFile(const std::string& path)
   return loaded.world();
 }
 
-RunSummary runAndLog(const RunRequest& request)
+/// Runs `request`, printing its progress lines (and keeping them in `lines` when given) and its summary.
+RunSummary runAndLog(const RunRequest& request, std::vector<std::string>* lines = nullptr)
 {
-  RunSummary summary =
-      runScenario(request, [](const std::string& line) { std::fprintf(stderr, "%s\n", line.c_str()); });
+  RunSummary summary = runScenario(request, [lines](const std::string& line) {
+    std::fprintf(stderr, "%s\n", line.c_str());
+    if (lines != nullptr) {
+      lines->push_back(line);
+    }
+  });
   std::printf("%s\n", summaryJson(summary).c_str());
   return summary;
 }
@@ -130,10 +135,17 @@ TEST(RunnerScenario, HeavyBoxIsFoundUnpushableAndAvoided)
 {
   // The demo room with the doorway box at 2000 kg: it looks the same to the planner, so it is planned
   // as pushable; the push stalls, the executive reports it unpushable and the vehicle goes east.
-  const RunSummary summary =
-      runAndLog(requestFor(worldFile(kSourceDir + "/config/worlds/demo_room_heavy.yaml"), kDemoGoal, 240.0));
+  std::vector<std::string> lines;
+  const RunSummary summary = runAndLog(
+      requestFor(worldFile(kSourceDir + "/config/worlds/demo_room_heavy.yaml"), kDemoGoal, 240.0), &lines);
   EXPECT_TRUE(summary.arrived) << summary.reason;
   EXPECT_GE(summary.affordance_updates, 1);
+  // What the executive measured and what the planner made of it are in the progress lines.
+  EXPECT_TRUE(std::any_of(lines.begin(), lines.end(), [](const std::string& line) {
+    return line.rfind("affordance: object ", 0) == 0 &&
+           line.find("unpushable; planner: object ") != std::string::npos &&
+           line.find(" unpushable: edges removed") != std::string::npos;
+  }));
   EXPECT_GE(summary.replans, 1);
   EXPECT_EQ(summary.pushes, 0);
   EXPECT_TRUE(passesEastOpening(summary));
