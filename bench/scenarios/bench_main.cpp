@@ -399,7 +399,7 @@ int main(int argc, char** argv)
       continue;
     }
     for (const std::string& note : worlds.notes) {
-      notes.push_back(kind_name + ": " + note);
+      notes.push_back(std::string(kind_name).append(": ").append(note));
     }
     int carry = 0;
     int driven = 0;
@@ -608,10 +608,11 @@ int main(int argc, char** argv)
     for (const auto& [kind, world_index] : plotted_world) {
       const KeptWorld& world = kept[world_index];
       const std::string kind_name = scenarios::kindName(kind);
-      errors.push_back(scenarios::writePathPlot(
-          world.world, planned_pairs[world_index],
-          kind_name + " (" + world.name + "): planned paths, FAR mode blue, ours green",
-          plot_dir + "/paths_" + kind_name + ".png"));
+      std::string title = kind_name;
+      title.append(" (").append(world.name).append("): planned paths, FAR mode blue, ours green");
+      std::string file = plot_dir;
+      file.append("/paths_").append(kind_name).append(".png");
+      errors.push_back(scenarios::writePathPlot(world.world, planned_pairs[world_index], title, file));
     }
     for (const auto& [world_index, pairs] : driven_pairs) {
       const KeptWorld& world = kept[world_index];

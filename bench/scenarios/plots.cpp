@@ -84,15 +84,16 @@ std::string writeTimeVsGraphSizePlot(const std::vector<ResultRow>& rows, const s
                         geometry::Point(left + width + 40.0, bottom + height + 50.0), 1.0);
   const Color axis = Color::gray(40);
   const Color grid = Color::gray(225);
-  for (double x = x_min; x <= x_max + 1e-9; x += 1.0) {
+  // The limits are whole decades: one grid line and label per power of ten.
+  for (int decade = static_cast<int>(x_min); decade <= static_cast<int>(x_max); ++decade) {
+    const double x = decade;
     canvas.drawSegment(at(x, y_min), at(x, y_max), grid);
-    canvas.drawText(at(x, y_min) + geometry::Point(-12.0, -22.0), "1e" + std::to_string(static_cast<int>(x)),
-                    axis);
+    canvas.drawText(at(x, y_min) + geometry::Point(-12.0, -22.0), "1e" + std::to_string(decade), axis);
   }
-  for (double y = y_min; y <= y_max + 1e-9; y += 1.0) {
+  for (int decade = static_cast<int>(y_min); decade <= static_cast<int>(y_max); ++decade) {
+    const double y = decade;
     canvas.drawSegment(at(x_min, y), at(x_max, y), grid);
-    canvas.drawText(at(x_min, y) + geometry::Point(-50.0, -5.0), "1e" + std::to_string(static_cast<int>(y)),
-                    axis);
+    canvas.drawText(at(x_min, y) + geometry::Point(-50.0, -5.0), "1e" + std::to_string(decade), axis);
   }
   canvas.drawSegment(at(x_min, y_min), at(x_max, y_min), axis, 2);
   canvas.drawSegment(at(x_min, y_min), at(x_min, y_max), axis, 2);

@@ -246,7 +246,8 @@ std::string tableThreeSystem(const std::vector<ResultRow>& rows)
       "the tasks, success.\n\n| planner |";
   std::string rule = "|---|";
   for (const std::string& kind : kinds) {
-    text += " " + kind + " distance (m) | " + kind + " time (s) | " + kind + " success |";
+    text.append(" ").append(kind).append(" distance (m) | ").append(kind).append(" time (s) | ");
+    text.append(kind).append(" success |");
     rule += "---|---|---|";
   }
   text += "\n" + rule + "\n";
