@@ -41,6 +41,11 @@ struct InteractionEdge {
   double cost = 0.0;
   std::uint32_t push_plan = 0;
   bool alive = true;
+  // Where the push begins: the vehicle's position at first contact and the approach to it from `from`,
+  // which J includes. A vehicle already nearer the contact than `from` is (mid-approach, or pushing when
+  // the path is replanned) starts the push where it is; approach_m 0: not known, J as it stands.
+  geometry::Point contact = geometry::Point::Zero();
+  double approach_m = 0.0;
 };
 
 /// One end of an undirected visibility edge as seen from a vertex.

@@ -46,6 +46,8 @@ class SearchGraph {
   std::vector<std::uint32_t> interaction_;  // interaction edge index or kNoInteraction
   std::vector<std::int64_t> interaction_objects_;
   std::vector<std::uint32_t> interaction_plans_;
+  std::vector<geometry::Point> interaction_contacts_;  // InteractionEdge::contact
+  std::vector<double> interaction_approaches_;         // InteractionEdge::approach_m
   // Uniform grid over the vertex positions (vertices of cell c: cell_vertices_[cell_offsets_[c] ..
   // cell_offsets_[c + 1])), for attaching the robot in order of A* priority.
   geometry::Point cell_origin_ = geometry::Point::Zero();

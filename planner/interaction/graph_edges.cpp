@@ -28,6 +28,8 @@ InsertedInteractions insertInteractions(graph::DvGraph& graph, std::int64_t obje
     edge.object_id = object_id;
     edge.cost = pair.plan.cost;
     edge.push_plan = first_plan_handle + static_cast<std::uint32_t>(index);
+    edge.contact = pair.plan.contact_pose.position();
+    edge.approach_m = pair.plan.approach_distance_m;
     if (const auto added = graph.addInteractionEdge(edge)) {
       inserted.edges.push_back(*added);
     } else {

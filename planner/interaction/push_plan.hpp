@@ -42,8 +42,9 @@ struct PushPlan {
   double expected_force_n = 0.0;  ///< largest push force along the plan
   double push_work_nm = 0.0;      ///< sum of force x distance, N m
   double push_distance_m = 0.0;
-  double travel_distance_m = 0.0;  ///< approach from the start waypoint plus contact switches
-  double cost = 0.0;               ///< J in equivalent metres: work / reference force + travel
+  double travel_distance_m = 0.0;    ///< approach from the start waypoint plus contact switches
+  double approach_distance_m = 0.0;  ///< of which the approach from the start waypoint to contact_pose
+  double cost = 0.0;                 ///< J in equivalent metres: work / reference force + travel
   std::size_t expansions = 0;
   double planning_time_s = 0.0;
 };

@@ -518,6 +518,7 @@ void PushPlanner::completePlan(PushPlan& plan, std::size_t edge, double approach
   plan.contact_edge = edge;
   plan.contact_pose = vehiclePose(model_.pose, edge);
   plan.travel_distance_m = approach_m;
+  plan.approach_distance_m = approach_m;
   plan.push_distance_m = 0.0;
   plan.push_work_nm = 0.0;
   plan.expected_force_n = 0.0;

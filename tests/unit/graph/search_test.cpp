@@ -135,6 +135,50 @@ TEST(Search, InteractionEdgeTakenWhenCheaper)
   EXPECT_NEAR(plan(prior, Point(0, 0), Point(0, 3)).cost, detour.cost, 1e-12);
 }
 
+TEST(Search, APushStartsWhereTheRobotIsWhenItIsNearerTheContactThanItsWaypoint)
+{
+  // The robot stands between the push's start waypoint and its contact (as at a replan mid-approach or
+  // mid-push): going back to the waypoint and approaching again from it is not paid. J is chosen so that
+  // with that paid the detour wins by 0.3 m, and without it the push wins.
+  PriorMap prior = buildPriorMap(mapFromRows({"........", "@@@@@@@.", "........"}), 0.0);
+  const Point robot(0.6, 0.85);
+  const Point goal(0, 3);
+  const auto detour = plan(prior, robot, goal);
+  ASSERT_EQ(detour.status, SearchStatus::Found);
+  const Point behind(2.0, 0.5);
+  const double detour_from_behind = plan(prior, behind, goal).cost;
+  Vertex waypoint;
+  waypoint.kind = VertexKind::TopologicalWaypoint;
+  waypoint.object_id = 7;
+  waypoint.position = Point(0.5, 0.5);
+  const VertexId above = prior.graph.addVertex(waypoint);
+  waypoint.position = Point(0.5, 2.5);
+  const VertexId below = prior.graph.addVertex(waypoint);
+  const double to_waypoint = (Point(0.5, 0.5) - robot).norm();
+  const double onward = (Point(0.5, 2.5) - goal).norm();
+  const double cost = detour.cost + 0.3 - to_waypoint - onward;
+  InteractionEdge edge{above, below, 7, cost, 42};
+  edge.contact = Point(0.5, 0.9);
+  edge.approach_m = 0.4;
+  ASSERT_TRUE(prior.graph.addInteractionEdge(edge).has_value());
+  const auto pushed = plan(prior, robot, goal);
+  ASSERT_EQ(pushed.status, SearchStatus::Found);
+  const double to_contact = (Point(0.5, 0.9) - robot).norm();
+  EXPECT_NEAR(pushed.cost, to_contact + cost - 0.4 + onward, 1e-9);
+  ASSERT_EQ(pushed.path.size(), 4u);
+  EXPECT_EQ(pushed.path[1].vertex, above);  // the push still starts at its waypoint for the executive
+  EXPECT_EQ(pushed.path[2].push_plan, 42u);
+
+  // Farther from the contact than the waypoint is, the robot pays the whole approach.
+  EXPECT_NEAR(plan(prior, behind, goal).cost,
+              std::min((Point(0.5, 0.5) - behind).norm() + cost + onward, detour_from_behind), 1e-9);
+  // Without a known approach, J stands as it is and the detour wins, as before.
+  prior.graph.removeInteractionEdges(7);
+  edge.approach_m = 0.0;
+  ASSERT_TRUE(prior.graph.addInteractionEdge(edge).has_value());
+  EXPECT_NEAR(plan(prior, robot, goal).cost, detour.cost, 1e-9);
+}
+
 std::vector<VertexId> routeOf(const SearchResult& result)
 {
   std::vector<VertexId> route;
