@@ -1,5 +1,6 @@
 #include <cmath>
 #include <limits>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -102,19 +103,26 @@ TEST(Search, NonFiniteInputsRejected)
   EXPECT_EQ(plan(prior, Point(0, 0), Point(3, infinity)).status, SearchStatus::InvalidGoal);
 }
 
-TEST(Search, InteractionEdgeTakenWhenCheaper)
+/// Topological waypoints of object 7 on either side of the wall row of the two-corridor map, at (0.5, 0.5)
+/// above it and (0.5, 2.5) below.
+std::pair<VertexId, VertexId> addWaypointsAcrossTheWall(PriorMap& prior)
 {
-  // Two free corridors joined only far away; an interaction edge across the wall is cheaper.
-  PriorMap prior = buildPriorMap(mapFromRows({"........", "@@@@@@@.", "........"}), 0.0);
-  const auto detour = plan(prior, Point(0, 0), Point(0, 3));
-  ASSERT_EQ(detour.status, SearchStatus::Found);
   Vertex waypoint;
   waypoint.kind = VertexKind::TopologicalWaypoint;
   waypoint.object_id = 7;
   waypoint.position = Point(0.5, 0.5);
   const VertexId above = prior.graph.addVertex(waypoint);
   waypoint.position = Point(0.5, 2.5);
-  const VertexId below = prior.graph.addVertex(waypoint);
+  return {above, prior.graph.addVertex(waypoint)};
+}
+
+TEST(Search, InteractionEdgeTakenWhenCheaper)
+{
+  // Two free corridors joined only far away; an interaction edge across the wall is cheaper.
+  PriorMap prior = buildPriorMap(mapFromRows({"........", "@@@@@@@.", "........"}), 0.0);
+  const auto detour = plan(prior, Point(0, 0), Point(0, 3));
+  ASSERT_EQ(detour.status, SearchStatus::Found);
+  const auto [above, below] = addWaypointsAcrossTheWall(prior);
   ASSERT_TRUE(prior.graph.addInteractionEdge(InteractionEdge{above, below, 7, 3.0, 42}).has_value());
   const auto pushed = plan(prior, Point(0, 0), Point(0, 3));
   ASSERT_EQ(pushed.status, SearchStatus::Found);
@@ -147,13 +155,7 @@ TEST(Search, APushStartsWhereTheRobotIsWhenItIsNearerTheContactThanItsWaypoint)
   ASSERT_EQ(detour.status, SearchStatus::Found);
   const Point behind(2.0, 0.5);
   const double detour_from_behind = plan(prior, behind, goal).cost;
-  Vertex waypoint;
-  waypoint.kind = VertexKind::TopologicalWaypoint;
-  waypoint.object_id = 7;
-  waypoint.position = Point(0.5, 0.5);
-  const VertexId above = prior.graph.addVertex(waypoint);
-  waypoint.position = Point(0.5, 2.5);
-  const VertexId below = prior.graph.addVertex(waypoint);
+  const auto [above, below] = addWaypointsAcrossTheWall(prior);
   const double to_waypoint = (Point(0.5, 0.5) - robot).norm();
   const double onward = (Point(0.5, 2.5) - goal).norm();
   const double cost = detour.cost + 0.3 - to_waypoint - onward;
