@@ -361,10 +361,11 @@ SearchResult AStarSearch::run(const SearchGraph& graph, const ObstacleSet& obsta
   // than the waypoint is (on its way to the contact, or at the object when a push is replanned), starts
   // where the robot is: the way back to the waypoint and the approach from it are not paid. Without this a
   // push under way cost about twice the waypoint offset more than every other way at each replan.
+  // For arcs of a vertex the robot links to straight away (its parent is the start).
   const auto startArcCost = [&](std::uint32_t from, std::uint32_t arc) {
     const double cost = arcCost(from, arc);
     const std::uint32_t interaction = graph.interaction_[arc];
-    if (interaction == kNoInteraction || scratch.parent_[from] != start_index) {
+    if (interaction == kNoInteraction) {
       return cost;
     }
     const double approach = graph.interaction_approaches_[interaction];
@@ -448,7 +449,17 @@ SearchResult AStarSearch::run(const SearchGraph& graph, const ObstacleSet& obsta
       break;
     }
     for (std::uint32_t arc = graph.offsets_[vertex]; arc < graph.offsets_[vertex + 1]; ++arc) {
-      relax(vertex, graph.targets_[arc], startArcCost(vertex, arc));
+      relax(vertex, graph.targets_[arc], arcCost(vertex, arc));
+    }
+    // A vertex the robot links to straight away may start a push where the robot is: its interaction
+    // arcs again at that price (relax keeps the lower). Apart from the loop above, which stays as lean as
+    // it was for every other vertex.
+    if (scratch.parent_[vertex] == start_index) {
+      for (std::uint32_t arc = graph.offsets_[vertex]; arc < graph.offsets_[vertex + 1]; ++arc) {
+        if (graph.interaction_[arc] != kNoInteraction) {
+          relax(vertex, graph.targets_[arc], startArcCost(vertex, arc));
+        }
+      }
     }
     // The goal is attached lazily: its link from a vertex only matters once that vertex is expanded,
     // so testing visibility here gives the same result as attaching it to every vertex up front.
@@ -483,10 +494,11 @@ SearchResult AStarSearch::run(const SearchGraph& graph, const ObstacleSet& obsta
       // The arc the search took: an interaction arc when one gave this cost, else the visibility link.
       const std::uint32_t from = chain[index - 1];
       std::optional<std::uint32_t> taken;
+      const bool linked_to_robot = scratch.parent_[from] == start_index;
       for (std::uint32_t arc = graph.offsets_[from]; arc < graph.offsets_[from + 1]; ++arc) {
+        const double cost = linked_to_robot ? startArcCost(from, arc) : arcCost(from, arc);
         if (graph.targets_[arc] == vertex &&
-            std::abs(scratch.states_[from].cost + startArcCost(from, arc) - scratch.states_[vertex].cost) <
-                1e-9 &&
+            std::abs(scratch.states_[from].cost + cost - scratch.states_[vertex].cost) < 1e-9 &&
             (!taken ||
              (graph.interaction_[*taken] == kNoInteraction && graph.interaction_[arc] != kNoInteraction))) {
           taken = arc;  // the first interaction arc that gives the cost, else the first arc that does
