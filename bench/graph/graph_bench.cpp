@@ -47,7 +47,7 @@ double percentile(std::vector<double> values, double fraction)
     return 0.0;
   }
   std::sort(values.begin(), values.end());
-  const auto index = static_cast<std::size_t>(fraction * static_cast<double>(values.size() - 1) + 0.5);
+  const auto index = static_cast<std::size_t>(std::lround(fraction * static_cast<double>(values.size() - 1)));
   return values[std::min(index, values.size() - 1)];
 }
 
@@ -60,7 +60,7 @@ void AcrossTheCapeBuild(benchmark::State& state)
   }
   std::size_t vertices = 0;
   std::size_t edges = 0;
-  for (auto _ : state) {
+  for ([[maybe_unused]] auto _ : state) {
     const PriorMap prior = buildPriorMap(map.map, 0.0);
     vertices = prior.graph.vertexCount();
     edges = prior.graph.visibilityEdgeCount();
@@ -85,7 +85,7 @@ void AcrossTheCapeQueries(benchmark::State& state)
   SearchScratch scratch;
   std::vector<double> microseconds;
   std::size_t index = 0;
-  for (auto _ : state) {
+  for ([[maybe_unused]] auto _ : state) {
     const auto& scenario = scenarios.scenarios[index++ % scenarios.scenarios.size()];
     const double begin = threadMicroseconds();
     const auto result = findPath(graph, prior.obstacles, scenario.start, scenario.goal, scratch);
@@ -140,7 +140,7 @@ void runScene(benchmark::State& state, const Scene& scene)
   SearchScratch scratch;
   SearchResult result;
   std::vector<double> microseconds;
-  for (auto _ : state) {
+  for ([[maybe_unused]] auto _ : state) {
     const double begin = threadMicroseconds();
     result = findPath(scene.graph, *scene.obstacles, scene.start, scene.goal, scratch);
     microseconds.push_back(threadMicroseconds() - begin);

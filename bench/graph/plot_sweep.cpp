@@ -15,6 +15,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "tools/render/canvas.hpp"
@@ -162,8 +163,13 @@ int plot(const std::vector<SweepPoint>& points, const std::string& output)
     low_time = std::min({low_time, point.median_us, point.p99_us});
     high_time = std::max({high_time, point.median_us, point.p99_us});
   }
-  const auto [first_x, last_x] = decades(points.front().vertices, points.back().vertices);
-  const auto [first_y, last_y] = decades(low_time, high_time);
+  // Plain names, not structured bindings: C++17 does not let the lambda below capture those.
+  const std::pair<int, int> x_range = decades(points.front().vertices, points.back().vertices);
+  const std::pair<int, int> y_range = decades(low_time, high_time);
+  const int first_x = x_range.first;
+  const int last_x = x_range.second;
+  const int first_y = y_range.first;
+  const int last_y = y_range.second;
   const int x_decades = std::max(1, last_x - first_x);
   const int y_decades = std::max(1, last_y - first_y);
   const auto toPlot = [&](double vertices, double microseconds) {
@@ -206,6 +212,7 @@ int plot(const std::vector<SweepPoint>& points, const std::string& output)
   const Color p99_color{214, 39, 40};
   for (const auto& [color, use_p99] : {std::pair<Color, bool>{median_color, false}, {p99_color, true}}) {
     std::vector<Point> line;
+    line.reserve(points.size());
     for (const SweepPoint& point : points) {
       line.push_back(toPlot(point.vertices, use_p99 ? point.p99_us : point.median_us));
     }

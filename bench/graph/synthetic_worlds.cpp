@@ -46,8 +46,11 @@ DvGraph mergedGraph(const std::vector<ObstacleLoop>& loops, double width_m, doub
   settings.association_distance_m = 1e-6;
   settings.votes = 1000000;  // a static field: nothing disappears
   const double step = 0.5 * window_m;
-  for (double y = 0.0; y < height_m; y += step) {
-    for (double x = 0.0; x < width_m; x += step) {
+  // Integer counters: a summed double step could add or drop a window at the far edge.
+  for (int row = 0; row * step < height_m; ++row) {
+    const double y = row * step;
+    for (int column = 0; column * step < width_m; ++column) {
+      const double x = column * step;
       std::vector<ObstacleLoop> local;
       for (const auto& loop : loops) {
         const auto& corner = loop.vertices.front();

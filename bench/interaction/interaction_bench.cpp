@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <vector>
 
 #include <benchmark/benchmark.h>
@@ -21,7 +22,8 @@ using ifar::interaction::PlanStatus;
 double quantile(std::vector<double> samples, double fraction)
 {
   std::sort(samples.begin(), samples.end());
-  const auto index = static_cast<std::size_t>(fraction * static_cast<double>(samples.size() - 1) + 0.5);
+  const auto index =
+      static_cast<std::size_t>(std::lround(fraction * static_cast<double>(samples.size() - 1)));
   return samples[index];
 }
 
@@ -39,7 +41,7 @@ void allPairPlans(benchmark::State& state, const LocalScene& scene, bool analyti
   double expansions = 0.0;
   double plans = 0.0;
   double found = 0.0;
-  for (auto _ : state) {
+  for ([[maybe_unused]] auto _ : state) {
     const auto start = std::chrono::steady_clock::now();
     const auto result =
         ifar::interaction::planObjectInteractions(scene, 0, ObjectPhysics{0.4, 20.0}, settings);

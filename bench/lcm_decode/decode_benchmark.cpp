@@ -49,7 +49,7 @@ std::vector<std::uint8_t> graphBytes()
 template <typename Message>
 void decodeUnchecked(benchmark::State& state, const std::vector<std::uint8_t>& bytes)
 {
-  for (auto _ : state) {
+  for ([[maybe_unused]] auto _ : state) {
     Message message;
     benchmark::DoNotOptimize(message.decode(bytes.data(), 0, static_cast<int>(bytes.size())));
   }
@@ -59,7 +59,7 @@ void decodeUnchecked(benchmark::State& state, const std::vector<std::uint8_t>& b
 template <typename Message>
 void decodeChecked(benchmark::State& state, const std::vector<std::uint8_t>& bytes)
 {
-  for (auto _ : state) {
+  for ([[maybe_unused]] auto _ : state) {
     Message message;
     benchmark::DoNotOptimize(ifar::lcmtypes::decodeLcm(message, bytes.data(), bytes.size()).bytes);
   }

@@ -50,7 +50,7 @@ void BM_PerceptionFullFrame(benchmark::State& state)
 {
   const RoomFrame& frame = roomFrame();
   std::size_t polygons = 0;
-  for (auto _ : state) {
+  for ([[maybe_unused]] auto _ : state) {
     const PerceptionResult result = runPerception(frame.input, frame.settings);
     polygons = result.layer.polygons.size();
     benchmark::DoNotOptimize(polygons);
@@ -70,7 +70,7 @@ BENCHMARK(BM_PerceptionFullFrame)
 void BM_MotionCompensation(benchmark::State& state)
 {
   const RoomFrame& frame = roomFrame();
-  for (auto _ : state) {
+  for ([[maybe_unused]] auto _ : state) {
     benchmark::DoNotOptimize(compensateMotion(frame.input.points, frame.input.mount, frame.input.motion));
   }
 }
@@ -81,7 +81,7 @@ void BM_HeightFilterAndClassification(benchmark::State& state)
   const RoomFrame& frame = roomFrame();
   const std::vector<WorldPoint> world =
       compensateMotion(frame.input.points, frame.input.mount, frame.input.motion);
-  for (auto _ : state) {
+  for ([[maybe_unused]] auto _ : state) {
     const HeightFilterResult filtered = filterObstaclePoints(world, frame.settings);
     benchmark::DoNotOptimize(
         classifyByReflectivity(filtered.obstacle_points, frame.settings.movable_reflectivity_threshold));
@@ -97,7 +97,7 @@ void BM_LocalLayer(benchmark::State& state)
   const HeightFilterResult filtered = filterObstaclePoints(world, frame.settings);
   const ClassifiedPoints classified =
       classifyByReflectivity(filtered.obstacle_points, frame.settings.movable_reflectivity_threshold);
-  for (auto _ : state) {
+  for ([[maybe_unused]] auto _ : state) {
     benchmark::DoNotOptimize(buildLocalLayer(classified, ifar::geometry::Point(0.1, 0.0), frame.settings));
   }
 }

@@ -34,7 +34,7 @@ void castRevolutions(benchmark::State& state, const ifar::sim::World& world)
   }
   std::int64_t rays = 0;
   double checksum = 0.0;
-  for (auto _ : state) {
+  for ([[maybe_unused]] auto _ : state) {
     const double origin_x = x_position(random);
     const double origin_y = y_position(random);
     for (int azimuth = 0; azimuth < 1800; ++azimuth) {
@@ -51,7 +51,7 @@ void castRevolutions(benchmark::State& state, const ifar::sim::World& world)
         checksum += scene.cast(ray).horizontal_distance;
       }
     }
-    rays += 1800 * 16;
+    rays += std::int64_t{1800} * 16;
   }
   benchmark::DoNotOptimize(checksum);
   state.counters["rays_per_second"] =
@@ -80,7 +80,7 @@ void BM_HeadlessRoomDrive(benchmark::State& state)
 {
   double distance = 0.0;
   std::size_t packets = 0;
-  for (auto _ : state) {
+  for ([[maybe_unused]] auto _ : state) {
     ifar::sim::Simulator simulator(ifar::sim::builtinPushRoom(20.0, 0.5, 0.6, 4.0, 32.0),
                                    ifar::common::VehicleSettings{}, ifar::sim::SimulatorSettings{});
     const double start_x = simulator.physics().vehicleState().pose.x;

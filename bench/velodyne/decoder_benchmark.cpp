@@ -46,7 +46,7 @@ void decodeLoop(benchmark::State& state, ReturnMode mode)
   const std::vector<std::uint8_t> packet = syntheticPacket(mode);
   std::vector<Point> points;
   points.reserve(kBlocksPerPacket * kReturnsPerBlock);
-  for (auto _ : state) {
+  for ([[maybe_unused]] auto _ : state) {
     points.clear();
     const DecodeResult result = decodePacket(common::ByteView(packet), points);
     benchmark::DoNotOptimize(result);
@@ -71,7 +71,7 @@ BENCHMARK(BM_DecodeStrongestReturnPacket);
 void BM_ValidatePacket(benchmark::State& state)
 {
   const std::vector<std::uint8_t> packet = syntheticPacket(ReturnMode::kDual);
-  for (auto _ : state) {
+  for ([[maybe_unused]] auto _ : state) {
     benchmark::DoNotOptimize(inspectPacket(common::ByteView(packet)));
   }
   state.SetItemsProcessed(state.iterations());
@@ -92,7 +92,7 @@ void BM_ReadAndDecodeRealCapture(benchmark::State& state)
   file.read(contents.data(), static_cast<std::streamsize>(contents.size()));
   std::vector<Point> points;
   std::int64_t packets = 0;
-  for (auto _ : state) {
+  for ([[maybe_unused]] auto _ : state) {
     PcapReader reader(std::make_unique<std::istringstream>(contents));
     UdpDatagram datagram;
     while (reader.next(datagram) == PcapRecord::kUdpDatagram) {

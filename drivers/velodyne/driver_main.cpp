@@ -62,6 +62,7 @@ int runUdp(const DriverSettings& settings, bus::RunLoop& loop, PacketForwarder& 
                   ? " and position packets on port " + std::to_string(settings.position_port)
                   : std::string());
   std::vector<pollfd> descriptors;
+  descriptors.reserve(receivers.size());
   for (const auto& receiver : receivers) {
     descriptors.push_back(pollfd{receiver.fd(), POLLIN, 0});
   }

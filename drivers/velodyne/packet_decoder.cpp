@@ -48,8 +48,10 @@ double secondFiringOffset(const std::array<std::uint16_t, kBlocksPerPacket>& azi
   if (interpolation == AzimuthInterpolation::kVlpGrabber) {
     return azimuthStep(azimuths[0], azimuths[blocks_per_firing]) / 2.0;
   }
-  const double firing_blocks = static_cast<double>(kBlocksPerPacket / blocks_per_firing);
-  return azimuthStep(azimuths[0], azimuths[last_firing_block]) / (firing_blocks - 1.0) / 2.0;
+  const std::size_t firing_blocks = kBlocksPerPacket / blocks_per_firing;  // whole firings per packet
+  const double step_per_firing =
+      azimuthStep(azimuths[0], azimuths[last_firing_block]) / static_cast<double>(firing_blocks - 1);
+  return step_per_firing / 2.0;
 }
 
 double wrapAzimuth(double units)
@@ -87,7 +89,8 @@ DecodeResult decodePacket(common::ByteView payload, std::vector<Point>& points, 
     const std::uint8_t return_index = dual ? static_cast<std::uint8_t>(block % 2) : 0;
     const ReturnType return_type =
         !dual ? single_type : (block % 2 == 0 ? ReturnType::kLast : ReturnType::kStrongest);
-    const double firing_block = static_cast<double>(block / blocks_per_firing);
+    const std::size_t firing_block_index = block / blocks_per_firing;  // blocks of one firing share it
+    const double firing_block = static_cast<double>(firing_block_index);
 
     for (std::size_t firing = 0; firing < kFiringsPerBlock; ++firing) {
       double azimuth_units = azimuths[block];

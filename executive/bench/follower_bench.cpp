@@ -41,7 +41,7 @@ void BM_FollowerCycle(benchmark::State& state)
   const ifar::common::VehicleSettings vehicle;
   const ifar::executive::DifferentialDrive drive(vehicle);
   const ifar::executive::FollowerSettings settings;
-  for (auto _ : state) {
+  for ([[maybe_unused]] auto _ : state) {
     benchmark::DoNotOptimize(
         ifar::executive::follow({0.0, 0.0, 0.3}, {6.0, 5.0}, true, points, settings, drive));
   }
@@ -66,7 +66,7 @@ void BM_ExecutiveStepFollowing(benchmark::State& state)
   inputs.force = ifar::executive::Stamped<ifar::executive::ForceReading>{{0.0, false}, now_us};
   inputs.motor = ifar::executive::Stamped<ifar::executive::MotorReading>{{true, false, ""}, now_us};
   inputs.obstacles = ifar::executive::Stamped<std::vector<Point>>{clutter(2000), now_us};
-  for (auto _ : state) {
+  for ([[maybe_unused]] auto _ : state) {
     now_us += 20'000;
     inputs.pose->utime = inputs.path->utime = inputs.force->utime = inputs.motor->utime =
         inputs.obstacles->utime = now_us;
@@ -98,7 +98,7 @@ void BM_FindDoorway(benchmark::State& state)
   const std::vector<Point> path{{-2.0, -2.0}, {-0.15, -0.3}, {1.5, 2.5}};
   const ifar::executive::Footprint footprint;
   const ifar::executive::DoorwaySettings settings;
-  for (auto _ : state) {
+  for ([[maybe_unused]] auto _ : state) {
     benchmark::DoNotOptimize(ifar::executive::findDoorway(path, points, footprint, settings));
   }
   state.counters["points"] = static_cast<double>(points.size());

@@ -64,7 +64,7 @@ void BM_AddPacket(benchmark::State& state)
   obstacles.addPose(kStartUs, packets.pose);
   std::int64_t utime = kStartUs;
   std::size_t index = 0;
-  for (auto _ : state) {
+  for ([[maybe_unused]] auto _ : state) {
     const auto& packet = packets.packets[index];
     utime += kPacketPeriodUs;
     benchmark::DoNotOptimize(
@@ -93,7 +93,7 @@ void BM_PointsPerCycle(benchmark::State& state)
   sweep.addPose(kStartUs, packets.pose);
   const std::int64_t sweep_now = feed(sweep, packets);
   std::size_t count = 0;
-  for (auto _ : state) {
+  for ([[maybe_unused]] auto _ : state) {
     const std::vector<ifar::geometry::Point> points = obstacles.points(now);
     count = points.size();
     benchmark::DoNotOptimize(points.data());
@@ -117,7 +117,7 @@ void BM_FollowerOnLidarPoints(benchmark::State& state)
   follower.footprint = ifar::executive::vehicleFootprint(vehicle, 0.45);
   const ifar::executive::DifferentialDrive drive(vehicle);
   const ifar::geometry::Point target = packets.pose.transform(ifar::geometry::Point(8.0, 3.0));
-  for (auto _ : state) {
+  for ([[maybe_unused]] auto _ : state) {
     benchmark::DoNotOptimize(ifar::executive::follow(
         packets.pose, target, true,
         ifar::common::Span<const ifar::geometry::Point>(points.data(), points.size()), follower, drive));

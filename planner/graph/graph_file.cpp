@@ -113,7 +113,7 @@ GraphLoadResult parseGraph(const std::string& text, const std::string& source_na
     return result;
   };
   // Checksum first: a truncated or edited file is rejected before anything is parsed.
-  const std::size_t end = text.size() >= 1 && text.back() == '\n' ? text.size() - 1 : text.size();
+  const std::size_t end = !text.empty() && text.back() == '\n' ? text.size() - 1 : text.size();
   const std::size_t last_line = text.rfind('\n', end == 0 ? 0 : end - 1);
   const std::size_t checksum_start = last_line == std::string::npos ? 0 : last_line + 1;
   const std::string checksum_line = text.substr(checksum_start, end - checksum_start);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
 
 namespace ifar::graph {
 namespace {
@@ -76,7 +77,7 @@ bool isConvexCorner(const LoopCorner& corner)
 }
 
 ObstacleSet::ObstacleSet(std::vector<ObstacleLoop> loops, std::optional<Bounds> bounds, double bucket_size)
-    : bounds_(bounds)
+    : bounds_(std::move(bounds))
 {
   for (auto& loop : loops) {
     const bool finite = std::all_of(loop.vertices.begin(), loop.vertices.end(),

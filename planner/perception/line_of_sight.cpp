@@ -20,7 +20,10 @@ bool backgroundClearAlong(const LocalLayer& layer, const geometry::Point& from, 
   const geometry::Point direction = (to - from) / length;
   // Half-cell steps: no cell the segment crosses by more than a corner is missed.
   const double step = 0.5 * grid.cell_size_m;
-  for (double along = skip_m; along <= length - skip_m; along += step) {
+  // An integer count of steps: a summed double would drift and could drop or add the last step.
+  const auto steps = static_cast<long>(std::floor((length - 2.0 * skip_m) / step));
+  for (long index = 0; index <= steps; ++index) {
+    const double along = skip_m + static_cast<double>(index) * step;
     const std::optional<std::pair<int, int>> cell = grid.cellOf(from + direction * along);
     if (cell && layer.background_occupancy[static_cast<std::size_t>(cell->second) * cells +
                                            static_cast<std::size_t>(cell->first)] != 0) {

@@ -129,12 +129,12 @@ World generateOffice(std::uint64_t seed)
 
   // Loose boxes inside rooms, clear of doors, start and goal.
   for (std::size_t room = 0; room < rooms; ++room) {
-    for (int row = 0; row < 2; ++row) {
+    for (const Row& row : rows) {
       const int count = random.integer(0, 2);
       for (int placed = 0, tries = 0; placed < count && tries < 50; ++tries) {
         const double size = random.uniform(0.5, 1.0);
         const geometry::Point centre(random.uniform(bounds[room] + 1.0, bounds[room + 1] - 1.0),
-                                     random.uniform(rows[row].y0 + 1.0, rows[row].y1 - 1.0));
+                                     random.uniform(row.y0 + 1.0, row.y1 - 1.0));
         const Box2 box{centre.x() - size, centre.y() - size, centre.x() + size, centre.y() + size};
         bool free = !box.contains(start.position(), 1.5) && !box.contains(goal, 1.5);
         for (const auto& zone : keep_clear) {

@@ -75,11 +75,8 @@ class Scanner {
         if (!skipPast("]]>", scan)) {
           return scan;
         }
-      } else if (startsWith("<?") || startsWith("<!")) {
-        if (!skipPast(">", scan)) {
-          return scan;
-        }
-      } else if (startsWith("</")) {
+      } else if (startsWith("<?") || startsWith("<!") || startsWith("</")) {
+        // Declarations, doctype and end tags carry nothing the importer reads.
         if (!skipPast(">", scan)) {
           return scan;
         }

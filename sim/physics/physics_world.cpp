@@ -167,6 +167,7 @@ void PhysicsWorld::Implementation::buildObjects(const World& source)
     const double density = object.mass_kg / total_area;
     for (const auto& piece : pieces) {
       std::vector<b2Vec2> vertices;
+      vertices.reserve(piece.size());
       for (const auto& point : piece) {
         vertices.push_back(toBox2d(point));
       }

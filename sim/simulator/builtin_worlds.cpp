@@ -24,6 +24,12 @@ StaticObstacle wall(const std::string& name, double low_x, double low_y, double 
   return obstacle;
 }
 
+// Row-major index of a maze cell, computed in std::size_t so a large maze cannot overflow int.
+std::size_t mazeCellIndex(int column, int row, int columns)
+{
+  return static_cast<std::size_t>(row) * static_cast<std::size_t>(columns) + static_cast<std::size_t>(column);
+}
+
 void addBoundary(World& world, double width, double height, double thickness, double wall_height)
 {
   world.obstacles.push_back(wall("wall_south", 0.0, 0.0, width, thickness, wall_height));
@@ -98,7 +104,7 @@ World builtinTunnelNetwork(std::uint64_t seed, double width_m, double height_m, 
   const double cell_width = width_m / columns;
   const double cell_height = height_m / rows;
   // A maze by randomized depth-first carving: open_east/open_north mark removed walls.
-  const auto cell_count = static_cast<std::size_t>(columns * rows);
+  const auto cell_count = static_cast<std::size_t>(columns) * static_cast<std::size_t>(rows);
   std::vector<bool> visited(cell_count, false);
   std::vector<bool> open_east(cell_count, false);
   std::vector<bool> open_north(cell_count, false);
@@ -113,7 +119,7 @@ World builtinTunnelNetwork(std::uint64_t seed, double width_m, double height_m, 
       const int next_column = column + dx;
       const int next_row = row + dy;
       if (next_column >= 0 && next_column < columns && next_row >= 0 && next_row < rows &&
-          !visited[static_cast<std::size_t>(next_row * columns + next_column)]) {
+          !visited[mazeCellIndex(next_column, next_row, columns)]) {
         neighbours.emplace_back(next_column, next_row);
       }
     }
@@ -124,13 +130,13 @@ World builtinTunnelNetwork(std::uint64_t seed, double width_m, double height_m, 
     const auto [next_column, next_row] = neighbours[random.below(neighbours.size())];
     const int low_column = std::min(column, next_column);
     const int low_row = std::min(row, next_row);
-    const auto low_index = static_cast<std::size_t>(low_row * columns + low_column);
+    const auto low_index = mazeCellIndex(low_column, low_row, columns);
     if (next_column != column) {
       open_east[low_index] = true;
     } else {
       open_north[low_index] = true;
     }
-    visited[static_cast<std::size_t>(next_row * columns + next_column)] = true;
+    visited[mazeCellIndex(next_column, next_row, columns)] = true;
     stack.emplace_back(next_column, next_row);
   }
   // Some extra openings make loops, as a real tunnel network has.
@@ -142,7 +148,7 @@ World builtinTunnelNetwork(std::uint64_t seed, double width_m, double height_m, 
   int wall_number = 0;
   for (int row = 0; row < rows; ++row) {
     for (int column = 0; column < columns; ++column) {
-      const auto index = static_cast<std::size_t>(row * columns + column);
+      const auto index = mazeCellIndex(column, row, columns);
       const double x = column * cell_width;
       const double y = row * cell_height;
       if (column + 1 < columns && !open_east[index]) {

@@ -14,7 +14,7 @@ namespace {
 void BM_CandumpParse(benchmark::State& state)
 {
   const std::string line = "(1700000000.010000) can0 201#0F00E80300000000";
-  for (auto _ : state) {
+  for ([[maybe_unused]] auto _ : state) {
     benchmark::DoNotOptimize(ifar::can::parseCandumpLine(line));
   }
   state.SetItemsProcessed(state.iterations());
@@ -25,7 +25,7 @@ void BM_CandumpFormat(benchmark::State& state)
 {
   ifar::can::Frame frame = ifar::can::makeFrame(0x201, {0x0F, 0x00, 0xE8, 0x03, 0x00, 0x00, 0x00, 0x00});
   frame.timestamp_us = 1700000000010000;
-  for (auto _ : state) {
+  for ([[maybe_unused]] auto _ : state) {
     benchmark::DoNotOptimize(ifar::can::formatCandumpLine(frame, "can0"));
   }
   state.SetItemsProcessed(state.iterations());
@@ -35,7 +35,7 @@ BENCHMARK(BM_CandumpFormat);
 void BM_ForceFrameDecode(benchmark::State& state)
 {
   const ifar::can::Frame frame = ifar::force_sensor::encodeForceFrame({123.456, 7, false, false});
-  for (auto _ : state) {
+  for ([[maybe_unused]] auto _ : state) {
     benchmark::DoNotOptimize(ifar::force_sensor::decodeForceFrame(frame));
   }
   state.SetItemsProcessed(state.iterations());
@@ -48,7 +48,7 @@ void BM_MotorCycle(benchmark::State& state)
   ifar::motor::MotorClient client;
   ifar::motor::DriveEmulator drive;
   std::int64_t now = 0;
-  for (auto _ : state) {
+  for ([[maybe_unused]] auto _ : state) {
     now += 10'000;
     client.command(1000, now);
     for (const auto& frame : client.update(now))

@@ -34,7 +34,7 @@ void BM_PlannerFrame(benchmark::State& state)
   Planner planner{PlannerSettings{}};
   planner.setGoal(Goal{1, geometry::Point(9.0, 8.0)});
   std::size_t index = 0;
-  for (auto _ : state) {
+  for ([[maybe_unused]] auto _ : state) {
     const FrameResult result = planner.processFrame(frames()[index]);
     benchmark::DoNotOptimize(result.path.length_m);
     index = (index + 1) % frames().size();
@@ -50,7 +50,7 @@ void BM_PlannerReplan(benchmark::State& state)
     planner.processFrame(frame);
   }
   planner.setGoal(Goal{1, geometry::Point(9.0, 8.0)});
-  for (auto _ : state) {
+  for ([[maybe_unused]] auto _ : state) {
     const FrameResult result = planner.replan();
     benchmark::DoNotOptimize(result.path.length_m);
   }
@@ -82,7 +82,7 @@ void processFramesInTurn(benchmark::State& state, Planner& planner, const std::v
 {
   std::vector<double> sums(counters.size(), 0.0);
   std::size_t index = 0;
-  for (auto _ : state) {
+  for ([[maybe_unused]] auto _ : state) {
     const FrameResult result = planner.processFrame(frames[index]);
     std::size_t counter_index = 0;
     for (const FrameCounter& counter : counters) {
@@ -127,7 +127,7 @@ void BM_PlannerFirstFrameDemoRoom(benchmark::State& state)
     return;
   }
   double interaction_ms = 0.0;
-  for (auto _ : state) {
+  for ([[maybe_unused]] auto _ : state) {
     state.PauseTiming();
     Planner planner{PlannerSettings{}};
     planner.setGoal(Goal{1, geometry::Point(8.0, 26.0)});

@@ -26,7 +26,7 @@ void runWorld(benchmark::State& state, const std::string& world_file)
   request.goal = request.world.goals.front().position;
   request.max_sim_time_s = kSimulatedSeconds;
   double simulated = 0.0;
-  for (auto _ : state) {
+  for ([[maybe_unused]] auto _ : state) {
     const ifar::runner::RunSummary summary = ifar::runner::runScenario(request, {});
     benchmark::DoNotOptimize(summary.distance_m);
     simulated += summary.sim_time_s;
