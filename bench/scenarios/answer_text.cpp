@@ -1,8 +1,10 @@
 #include "bench/scenarios/answer_text.hpp"
 
 #include <cerrno>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 
 namespace ifar::scenarios {
 
@@ -77,6 +79,18 @@ bool AnswerReader::flag(bool& value)
     return false;
   }
   value = parsed == 1;
+  return true;
+}
+
+bool AnswerReader::field(int& value)
+{
+  std::int64_t parsed = 0;
+  if (!integer(parsed) || parsed < std::numeric_limits<int>::min() ||
+      parsed > std::numeric_limits<int>::max()) {
+    ok_ = false;
+    return false;
+  }
+  value = static_cast<int>(parsed);
   return true;
 }
 

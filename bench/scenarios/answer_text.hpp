@@ -15,6 +15,11 @@ class AnswerWriter {
   void integer(std::int64_t value);
   void flag(bool value) { integer(value ? 1 : 0); }
   void text(std::string_view value);
+  // One name for every kind, so one field list can drive a writer and a reader (result_row.cpp).
+  void field(double value) { number(value); }
+  void field(int value) { integer(value); }
+  void field(bool value) { flag(value); }
+  void field(const std::string& value) { text(value); }
   const std::string& answer() const { return answer_; }
 
  private:
@@ -30,6 +35,11 @@ class AnswerReader {
   bool integer(std::int64_t& value);
   bool flag(bool& value);
   bool text(std::string& value);
+  /// As AnswerWriter::field. An integer outside int's range is a failed read.
+  bool field(double& value) { return number(value); }
+  bool field(int& value);
+  bool field(bool& value) { return flag(value); }
+  bool field(std::string& value) { return text(value); }
   /// True when every byte was read and no read failed.
   bool complete() const { return ok_ && rest_.empty(); }
 

@@ -58,26 +58,40 @@ std::string toJsonLine(const ResultRow& row)
   return line + "}";
 }
 
+namespace {
+
+/// Every field of a row in answer order, to an AnswerWriter (Row = const ResultRow) or from an
+/// AnswerReader (Row = ResultRow): one list, so writing and reading cannot drift apart.
+template <typename Fields, typename Row>
+void rowFields(Fields& fields, Row& row)
+{
+  fields.field(row.table);
+  fields.field(row.planner);
+  fields.field(row.kind);
+  fields.field(row.world);
+  fields.field(row.task);
+  fields.field(row.success);
+  fields.field(row.length);
+  fields.field(row.optimal);
+  fields.field(row.achievable);
+  fields.field(row.ms);
+  fields.field(row.status);
+  fields.field(row.reason);
+  fields.field(row.graph_vertices);
+  fields.field(row.sim_time_s);
+  fields.field(row.pushes);
+  fields.field(row.frame_median_ms);
+  fields.field(row.frame_p99_ms);
+  fields.field(row.frame_max_ms);
+  fields.field(row.interaction_max_ms);
+}
+
+}  // namespace
+
 std::string toAnswer(const ResultRow& row)
 {
   AnswerWriter writer;
-  for (const std::string* text : {&row.table, &row.planner, &row.kind, &row.world, &row.task}) {
-    writer.text(*text);
-  }
-  writer.flag(row.success);
-  for (const double value : {row.length, row.optimal, row.achievable, row.ms}) {
-    writer.number(value);
-  }
-  writer.text(row.status);
-  writer.text(row.reason);
-  for (const double value : {row.graph_vertices, row.sim_time_s}) {
-    writer.number(value);
-  }
-  writer.integer(row.pushes);
-  for (const double value :
-       {row.frame_median_ms, row.frame_p99_ms, row.frame_max_ms, row.interaction_max_ms}) {
-    writer.number(value);
-  }
+  rowFields(writer, row);
   return writer.answer();
 }
 
@@ -85,25 +99,7 @@ std::optional<ResultRow> rowFromAnswer(std::string_view answer)
 {
   AnswerReader reader(answer);
   ResultRow row;
-  for (std::string* text : {&row.table, &row.planner, &row.kind, &row.world, &row.task}) {
-    reader.text(*text);
-  }
-  reader.flag(row.success);
-  for (double* value : {&row.length, &row.optimal, &row.achievable, &row.ms}) {
-    reader.number(*value);
-  }
-  reader.text(row.status);
-  reader.text(row.reason);
-  for (double* value : {&row.graph_vertices, &row.sim_time_s}) {
-    reader.number(*value);
-  }
-  std::int64_t pushes = 0;
-  reader.integer(pushes);
-  row.pushes = static_cast<int>(pushes);
-  for (double* value :
-       {&row.frame_median_ms, &row.frame_p99_ms, &row.frame_max_ms, &row.interaction_max_ms}) {
-    reader.number(*value);
-  }
+  rowFields(reader, row);
   if (!reader.complete()) {
     return std::nullopt;
   }

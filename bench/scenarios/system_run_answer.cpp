@@ -5,21 +5,34 @@
 
 namespace ifar::scenarios {
 
+namespace {
+
+/// Every field of a run but its trajectory, in answer order, to an AnswerWriter (Run = const
+/// SystemRun) or from an AnswerReader (Run = SystemRun). The trajectory follows with its count, which
+/// the reader checks against the answer's size before reserving.
+template <typename Fields, typename Run>
+void runFields(Fields& fields, Run& run)
+{
+  fields.field(run.ran);
+  fields.field(run.arrived);
+  fields.field(run.failure_status);
+  fields.field(run.reason);
+  fields.field(run.distance_m);
+  fields.field(run.sim_time_s);
+  fields.field(run.wall_time_s);
+  fields.field(run.pushes);
+  fields.field(run.frame_median_ms);
+  fields.field(run.frame_p99_ms);
+  fields.field(run.frame_max_ms);
+  fields.field(run.interaction_max_ms);
+}
+
+}  // namespace
+
 std::string toAnswer(const SystemRun& run)
 {
   AnswerWriter writer;
-  writer.flag(run.ran);
-  writer.flag(run.arrived);
-  writer.text(run.failure_status);
-  writer.text(run.reason);
-  for (const double value : {run.distance_m, run.sim_time_s, run.wall_time_s}) {
-    writer.number(value);
-  }
-  writer.integer(run.pushes);
-  for (const double value :
-       {run.frame_median_ms, run.frame_p99_ms, run.frame_max_ms, run.interaction_max_ms}) {
-    writer.number(value);
-  }
+  runFields(writer, run);
   writer.integer(static_cast<std::int64_t>(run.trajectory.size()));
   for (const geometry::Pose2& pose : run.trajectory) {
     writer.number(pose.x);
@@ -33,20 +46,7 @@ std::optional<SystemRun> systemRunFromAnswer(std::string_view answer)
 {
   AnswerReader reader(answer);
   SystemRun run;
-  reader.flag(run.ran);
-  reader.flag(run.arrived);
-  reader.text(run.failure_status);
-  reader.text(run.reason);
-  for (double* value : {&run.distance_m, &run.sim_time_s, &run.wall_time_s}) {
-    reader.number(*value);
-  }
-  std::int64_t pushes = 0;
-  reader.integer(pushes);
-  run.pushes = static_cast<int>(pushes);
-  for (double* value :
-       {&run.frame_median_ms, &run.frame_p99_ms, &run.frame_max_ms, &run.interaction_max_ms}) {
-    reader.number(*value);
-  }
+  runFields(reader, run);
   std::int64_t poses = 0;
   // Each pose takes at least 6 bytes, so a count the answer cannot hold is refused before reserving.
   if (!reader.integer(poses) || poses < 0 || static_cast<std::size_t>(poses) > answer.size() / 6) {
