@@ -11,6 +11,7 @@ enum class AffordanceReason {
   NoMotion,    ///< did not move under the maximum push force: unpushable
   CostHigher,  ///< measured cost above the plan by more than the threshold
   CostLower,   ///< measured cost below the plan by more than the threshold
+  Jammed,      ///< slid below the maximum force, then stopped under it: blocked where it stands, pushable
 };
 
 const char* affordanceReasonName(AffordanceReason reason);

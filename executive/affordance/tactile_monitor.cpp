@@ -16,15 +16,18 @@ const char* affordanceReasonName(AffordanceReason reason)
       return "cost higher than planned";
     case AffordanceReason::CostLower:
       return "cost lower than planned";
+    case AffordanceReason::Jammed:
+      return "jammed after sliding";
   }
   return "unknown";
 }
 
-void TactileMonitor::begin(const PushPlan& plan, double max_push_force_n)
+void TactileMonitor::begin(const PushPlan& plan, double max_push_force_n, bool jammed_before)
 {
   *this = TactileMonitor();
   plan_ = plan;
   max_push_force_ = max_push_force_n;
+  jammed_before_ = jammed_before;
 }
 
 double TactileMonitor::extrapolatedCost() const
@@ -104,6 +107,21 @@ std::optional<AffordanceEvent> TactileMonitor::update(std::int64_t now_us, doubl
     } else if (!reported_no_motion_ &&
                static_cast<double>(now_us - saturated_since_us_) >= settings.no_motion_time_s * 1e6) {
       reported_no_motion_ = true;
+      // An object that slid at least min_measured_distance_m below the maximum force and then stopped
+      // has met something (a wall, a corner, another object): it is light enough, only blocked where it
+      // stands. Calling it unpushable made bench Willow t0 give up a box it had pushed 5 m at 93 N
+      // along a corridor when it caught the corridor's end, and drive back round. A second jam of the
+      // same object is taken as unpushable, so a push planned into the same corner is not tried forever.
+      const double sliding_force = meanForce();
+      if (!jammed_before_ && pushed_distance_ >= settings.min_measured_distance_m &&
+          sliding_force < settings.max_force_fraction * max_push_force_) {
+        AffordanceEvent event = makeEvent(AffordanceReason::Jammed, sliding_force, extrapolatedCost());
+        event.text = fmt::format(
+            "object {} jammed: slid {:.2f} m at mean {:.0f} N, then did not move ({:.3f} m) for {:.1f} s "
+            "at {:.0f} N: pushable, blocked where it stands",
+            plan_.object_id, pushed_distance_, sliding_force, moved, settings.no_motion_time_s, force_n);
+        return event;
+      }
       AffordanceEvent event = makeEvent(AffordanceReason::NoMotion, force_n, extrapolatedCost());
       event.text = fmt::format(
           "object {} did not move ({:.3f} m) for {:.1f} s at {:.0f} N (maximum {:.0f} N): "

@@ -1,7 +1,7 @@
 #pragma once
 // Tactile adaptation while pushing (paper section VII.B, Algorithm 2): watches the bumper force and how
-// far the object moves, and says when the object is unpushable or costs clearly more or less than the
-// plan assumed.
+// far the object moves, and says when the object is unpushable, jammed against something after sliding, or
+// costs clearly more or less than the plan assumed.
 //
 // Object motion is the vehicle's own forward travel while the bumper is loaded (in a stable push the
 // object moves with the bumper), capped by the observed object displacement when perception provides
@@ -32,8 +32,9 @@ class TactileMonitor {
   /// `max_push_force_n`: the most the vehicle can push (traction limit, capped by the sensor range).
   TactileMonitor() = default;
 
-  /// Starts watching a push of `plan`.
-  void begin(const PushPlan& plan, double max_push_force_n);
+  /// Starts watching a push of `plan`. `jammed_before`: this object already jammed once (then a jam is
+  /// reported as NoMotion, unpushable).
+  void begin(const PushPlan& plan, double max_push_force_n, bool jammed_before = false);
 
   /// One sensor cycle. `in_contact_expected` is false while backing off or switching contact (then
   /// nothing is measured). Returns an event at most once per kind of finding per plan.
@@ -62,6 +63,7 @@ class TactileMonitor {
   std::int64_t saturated_since_us_ = 0;
   geometry::Point saturated_object_start_ = geometry::Point::Zero();
   double saturated_vehicle_travel_ = 0.0;
+  bool jammed_before_ = false;
   bool reported_no_motion_ = false;
   bool reported_cost_ = false;
 };

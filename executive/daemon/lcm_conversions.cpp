@@ -167,6 +167,9 @@ ifar::affordance_t toAffordanceMessage(const AffordanceEvent& event, std::int64_
     case AffordanceReason::CostLower:
       message.reason = ifar::affordance_t::REASON_COST_LOWER;
       break;
+    case AffordanceReason::Jammed:
+      message.reason = ifar::affordance_t::REASON_JAMMED;
+      break;
   }
   return message;
 }

@@ -166,6 +166,7 @@ void Executive::startGoal(std::int64_t goal_id)
     pushes_ = 0;
     replans_ = 0;
     stalls_at_site_ = 0;
+    jammed_objects_.clear();
   }
 }
 
@@ -670,7 +671,9 @@ void Executive::stepApproach(Cycle& cycle)
   push_phase_ = PushPhase::Pushing;
   anchorMotion(cycle);
   tracker_.begin(active_plan_);
-  tactile_.begin(active_plan_, max_push_force_n_);
+  const bool jammed_before = std::find(jammed_objects_.begin(), jammed_objects_.end(),
+                                       active_plan_.object_id) != jammed_objects_.end();
+  tactile_.begin(active_plan_, max_push_force_n_, jammed_before);
   task_ = Task::Push;
   stepPush(cycle);
 }
@@ -695,7 +698,11 @@ void Executive::stepPush(Cycle& cycle)
       cycle.now_us, cycle.force_n, cycle.pose, object_position, result.expects_contact, settings_.tactile);
   if (event) {
     cycle.affordance = event;
-    if (!event->pushable || event->reason == AffordanceReason::CostHigher) {
+    if (event->reason == AffordanceReason::Jammed) {
+      jammed_objects_.push_back(active_plan_.object_id);
+    }
+    if (!event->pushable || event->reason == AffordanceReason::CostHigher ||
+        event->reason == AffordanceReason::Jammed) {
       // Algorithm 2: the plan no longer holds; stop and wait for the planner to use the new estimate.
       rememberPushedObject(object_position);
       task_ = Task::ReplanWait;

@@ -179,6 +179,8 @@ class Executive {
   std::optional<geometry::Point> backoff_start_;  // where BackOff began reversing (set on its first step)
   bool backoff_after_stall_ = false;              // BackOff because following got nowhere, not after a push
   std::optional<std::int64_t> approach_escaped_object_;  // the object whose approach used its one escape
+  // Objects that jammed after sliding, this goal: a second jam of one is reported unpushable.
+  std::vector<std::int64_t> jammed_objects_;
   double stall_escape_sign_ = 0.0;  // after a stall: -1 reversing, +1 driving ahead, 0 not chosen yet
   bool stall_reversing_ = false;    // the escape reverses along the cost-to-go to a waypoint behind
   std::optional<double> stall_turn_heading_;  // after the straight escape: turning on the spot to this

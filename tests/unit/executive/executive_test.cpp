@@ -764,6 +764,49 @@ TEST_F(ExecutiveTest, UnpushableObjectWaitsForReplan)
   EXPECT_EQ(replanned.status.replans, 1);
 }
 
+TEST_F(ExecutiveTest, AnObjectJammedAfterSlidingStaysPushableOnceThenIsUnpushable)
+{
+  const Path path = pushPath(1, now_us_);
+  for (int cycle = 0; cycle < 3000 && executive_.mode() != Mode::Push; ++cycle) {
+    run(1, path);
+  }
+  ASSERT_EQ(executive_.mode(), Mode::Push);
+  // 1.5 s at the planned 100 N (0.45 m at 0.3 m/s), then the object catches a wall: maximum force, no
+  // motion.
+  run(75, path, 100.0);
+  ASSERT_TRUE(events_.empty());
+  const double stall_force = 0.95 * vehicle_.maxPushForce();
+  Output output;
+  for (int cycle = 0; cycle < 500 && events_.empty(); ++cycle) {
+    output = run(1, path, stall_force, true);
+  }
+  ASSERT_EQ(events_.size(), 1u);
+  EXPECT_EQ(events_[0].reason, AffordanceReason::Jammed);
+  EXPECT_TRUE(events_[0].pushable);
+  // What it slid at, not the 522 N it was held at (one cycle of travel at the higher force counts).
+  EXPECT_NEAR(events_[0].push_force_n, 100.0, 10.0);
+  EXPECT_EQ(output.status.mode, Mode::ReplanWait);
+
+  // The planner plans the object again from where it stands; it jams again: now it is unpushable.
+  Path again = pushPath(2, now_us_ + kCycleUs);
+  again.push_plans[0].contact_pose = pose_;
+  again.push_plans[0].controls[0].expected_vehicle_pose = {pose_.x + 0.9, 0.0, 0.0};
+  again.waypoints = {waypoint(pose_.x, 0.0), waypoint(pose_.x + 0.1, 0.0, WaypointKind::Topological, 9, 0),
+                     waypoint(pose_.x + 1.0, 0.0, WaypointKind::Push, 9, 0), waypoint(5.0, 0.0)};
+  for (int cycle = 0; cycle < 3000 && executive_.mode() != Mode::Push; ++cycle) {
+    run(1, again);
+  }
+  ASSERT_EQ(executive_.mode(), Mode::Push);
+  run(75, again, 100.0);
+  for (int cycle = 0; cycle < 500 && events_.size() < 2; ++cycle) {
+    output = run(1, again, stall_force, true);
+  }
+  ASSERT_EQ(events_.size(), 2u);
+  EXPECT_EQ(events_[1].reason, AffordanceReason::NoMotion);
+  EXPECT_FALSE(events_[1].pushable);
+  EXPECT_EQ(output.status.mode, Mode::ReplanWait);
+}
+
 TEST_F(ExecutiveTest, HigherCostWhilePushingWaitsForReplan)
 {
   const Path path = pushPath(1, now_us_);

@@ -131,6 +131,11 @@ TEST(LcmConversions, OutputMessagesUseTheWireConstants)
   EXPECT_EQ(affordance.reason, ifar::affordance_t::REASON_NO_MOTION);
   EXPECT_EQ(affordance.pushable, 0);
   EXPECT_EQ(affordance.object_id, 3);
+  event.pushable = true;
+  event.reason = AffordanceReason::Jammed;
+  const ifar::affordance_t jammed = toAffordanceMessage(event, 78);
+  EXPECT_EQ(jammed.reason, ifar::affordance_t::REASON_JAMMED);
+  EXPECT_EQ(jammed.pushable, 1);
 
   BlockedPassage passage;
   passage.goal_id = 4;

@@ -1,5 +1,6 @@
 #include "executive/affordance/tactile_monitor.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 
@@ -63,6 +64,65 @@ TEST(TactileMonitor, UnpushableAfterConfiguredTimeAtMaximumForceWithoutMotion)
   EXPECT_DOUBLE_EQ(result.event->push_force_n, 530.0);
   EXPECT_NEAR(result.event->affordance, 2.12, 1e-12);  // 0.4 x 530 N / 100 N
   EXPECT_DOUBLE_EQ(result.event->planned_cost, 3.0);
+}
+
+/// Slides the object 1 m at `sliding_force_n` (0.25 m/s), then holds it at 530 N, no motion, for 3 s:
+/// the first event after the slide and when it came (microseconds since the start).
+Feed slideThenStick(TactileMonitor& monitor, const TactileSettings& settings, double sliding_force_n)
+{
+  Feed result;
+  for (int cycle = 0; cycle <= 700; ++cycle) {  // 4 s sliding, then 3 s stuck, at 100 Hz
+    const bool sliding = cycle <= 400;
+    const double x = 0.0025 * std::min(cycle, 400);
+    const std::int64_t now_us = static_cast<std::int64_t>(cycle) * 10'000;
+    auto event = monitor.update(now_us, sliding ? sliding_force_n : 530.0, Pose2{x, 0.0, 0.0}, std::nullopt,
+                                true, settings);
+    if (event && !result.event && !sliding) {
+      result.event = event;
+      result.event_us = now_us;
+    }
+  }
+  return result;
+}
+
+TEST(TactileMonitor, AnObjectThatSlidThenStopsAtMaximumForceIsJammedNotUnpushable)
+{
+  TactileSettings settings;  // 2 s at >= 90 % of the maximum; slid >= 0.3 m first
+  TactileMonitor monitor;
+  monitor.begin(plan(), kMaxPushForce);
+  const Feed result = slideThenStick(monitor, settings, 100.0);
+  ASSERT_TRUE(result.event.has_value());
+  EXPECT_EQ(result.event_us, 6'010'000);  // 2 s after the first cycle at 530 N (4.01 s)
+  EXPECT_EQ(result.event->reason, AffordanceReason::Jammed);
+  EXPECT_TRUE(result.event->pushable);
+  // The force it slid at, not the 530 N it was held at: 1 m at 100 N (the 530 N cycles add no travel).
+  EXPECT_NEAR(result.event->push_force_n, 100.0, 1e-9);
+  EXPECT_NEAR(result.event->affordance, 0.4, 1e-9);
+  EXPECT_NEAR(result.event->measured_cost, 3.0, 1e-9);
+}
+
+TEST(TactileMonitor, ASecondJamOfTheSameObjectIsUnpushable)
+{
+  TactileSettings settings;
+  TactileMonitor monitor;
+  monitor.begin(plan(), kMaxPushForce, /*jammed_before=*/true);
+  const Feed result = slideThenStick(monitor, settings, 100.0);
+  ASSERT_TRUE(result.event.has_value());
+  EXPECT_EQ(result.event->reason, AffordanceReason::NoMotion);
+  EXPECT_FALSE(result.event->pushable);
+}
+
+TEST(TactileMonitor, AnObjectThatOnlySlidAtMaximumForceIsUnpushableWhenItStops)
+{
+  TactileSettings settings;
+  settings.cost_threshold = 1000.0;  // only the no-motion rule here
+  TactileMonitor monitor;
+  monitor.begin(plan(), kMaxPushForce);
+  // 500 N is at the maximum (>= 0.9 x 549 N): the object was as heavy as the vehicle can push all along.
+  const Feed result = slideThenStick(monitor, settings, 500.0);
+  ASSERT_TRUE(result.event.has_value());
+  EXPECT_EQ(result.event->reason, AffordanceReason::NoMotion);
+  EXPECT_FALSE(result.event->pushable);
 }
 
 TEST(TactileMonitor, ObjectThatMovesAtMaximumForceIsNotUnpushable)
