@@ -109,7 +109,7 @@ std::optional<AffordanceEvent> TactileMonitor::update(std::int64_t now_us, doubl
       reported_no_motion_ = true;
       // An object that slid at least min_measured_distance_m below the maximum force and then stopped
       // has met something (a wall, a corner, another object): it is light enough, only blocked where it
-      // stands. Calling it unpushable made bench Willow t0 give up a box it had pushed 5 m at 93 N
+      // stands. Calling it unpushable made bench Willow t0 give up a box it had pushed 3.9 m at 91 N
       // along a corridor when it caught the corridor's end, and drive back round. A second jam of the
       // same object is taken as unpushable, so a push planned into the same corner is not tried forever.
       const double sliding_force = meanForce();
