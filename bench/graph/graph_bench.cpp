@@ -15,6 +15,7 @@
 
 #include "bench/graph/synthetic_worlds.hpp"
 #include "common/grid_map/readers.hpp"
+#include "common/percentile.hpp"
 #include "planner/graph/prior_map.hpp"
 #include "planner/graph/search.hpp"
 
@@ -39,16 +40,6 @@ double threadMicroseconds()
   timespec now{};
   clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now);
   return static_cast<double>(now.tv_sec) * 1e6 + static_cast<double>(now.tv_nsec) * 1e-3;
-}
-
-double percentile(std::vector<double> values, double fraction)
-{
-  if (values.empty()) {
-    return 0.0;
-  }
-  std::sort(values.begin(), values.end());
-  const auto index = static_cast<std::size_t>(std::lround(fraction * static_cast<double>(values.size() - 1)));
-  return values[std::min(index, values.size() - 1)];
 }
 
 void AcrossTheCapeBuild(benchmark::State& state)
@@ -92,8 +83,8 @@ void AcrossTheCapeQueries(benchmark::State& state)
     microseconds.push_back(threadMicroseconds() - begin);
     benchmark::DoNotOptimize(result.length);
   }
-  state.counters["cpu_median_us"] = percentile(microseconds, 0.5);
-  state.counters["cpu_p99_us"] = percentile(microseconds, 0.99);
+  state.counters["cpu_median_us"] = ifar::common::nearestRankPercentile(microseconds, 50.0);
+  state.counters["cpu_p99_us"] = ifar::common::nearestRankPercentile(microseconds, 99.0);
   state.counters["peak_rss_MB"] = peakMemoryMegabytes();
 }
 BENCHMARK(AcrossTheCapeQueries)->Unit(benchmark::kMicrosecond)->Iterations(603);
@@ -107,32 +98,29 @@ struct Scene {
   Point goal;
 };
 
-Scene tunnelScene()
+/// The graph of `field` with one query from `start` to `goal`.
+Scene fieldScene(const RectangleField& field, const Point& start, const Point& goal)
 {
-  // 330 m x 270 m (the paper's Tunnel), 400 rectangles = 1,600 corners, corner-to-corner query (~450 m).
-  const RectangleField field{330.0, 270.0, 20, 20, 3.0, 12.0, 7};
   Scene scene;
   scene.obstacles = std::make_unique<ObstacleSet>(rectangles(field));
   const DvGraph graph = fullGraph(*scene.obstacles);
   scene.graph = SearchGraph::fromDvGraph(graph);
   scene.vertices = graph.vertexCount();
-  scene.start = Point(1.0, 1.0);
-  scene.goal = Point(329.0, 269.0);
+  scene.start = start;
+  scene.goal = goal;
   return scene;
+}
+
+Scene tunnelScene()
+{
+  // 330 m x 270 m (the paper's Tunnel), 400 rectangles = 1,600 corners, corner-to-corner query (~450 m).
+  return fieldScene(RectangleField{330.0, 270.0, 20, 20, 3.0, 12.0, 7}, Point(1.0, 1.0), Point(329.0, 269.0));
 }
 
 Scene roomScene()
 {
   // A 32 m x 32 m room with 16 pieces of furniture.
-  const RectangleField field{32.0, 32.0, 4, 4, 1.0, 4.0, 11};
-  Scene scene;
-  scene.obstacles = std::make_unique<ObstacleSet>(rectangles(field));
-  const DvGraph graph = fullGraph(*scene.obstacles);
-  scene.graph = SearchGraph::fromDvGraph(graph);
-  scene.vertices = graph.vertexCount();
-  scene.start = Point(0.5, 0.5);
-  scene.goal = Point(31.5, 31.5);
-  return scene;
+  return fieldScene(RectangleField{32.0, 32.0, 4, 4, 1.0, 4.0, 11}, Point(0.5, 0.5), Point(31.5, 31.5));
 }
 
 void runScene(benchmark::State& state, const Scene& scene)
@@ -153,8 +141,8 @@ void runScene(benchmark::State& state, const Scene& scene)
   state.counters["vertices"] = static_cast<double>(scene.vertices);
   state.counters["path_m"] = result.length;
   state.counters["expansions"] = static_cast<double>(result.expansions);
-  state.counters["cpu_median_us"] = percentile(microseconds, 0.5);
-  state.counters["cpu_p99_us"] = percentile(microseconds, 0.99);
+  state.counters["cpu_median_us"] = ifar::common::nearestRankPercentile(microseconds, 50.0);
+  state.counters["cpu_p99_us"] = ifar::common::nearestRankPercentile(microseconds, 99.0);
 }
 
 void TunnelSearch(benchmark::State& state)

@@ -9,6 +9,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include "common/percentile.hpp"
 #include "planner/interaction/interaction_planner.hpp"
 #include "tests/unit/interaction/scenes.hpp"
 
@@ -18,14 +19,6 @@ using ifar::interaction::InteractionSettings;
 using ifar::interaction::LocalScene;
 using ifar::interaction::ObjectPhysics;
 using ifar::interaction::PlanStatus;
-
-double quantile(std::vector<double> samples, double fraction)
-{
-  std::sort(samples.begin(), samples.end());
-  const auto index =
-      static_cast<std::size_t>(std::lround(fraction * static_cast<double>(samples.size() - 1)));
-  return samples[index];
-}
 
 void allPairPlans(benchmark::State& state, const LocalScene& scene, bool analytic,
                   double extended_search_radius_m = 0.0, double corridor_push_length_m = 0.0)
@@ -54,8 +47,8 @@ void allPairPlans(benchmark::State& state, const LocalScene& scene, bool analyti
       plans += 1.0;
     }
   }
-  state.counters["median_ms"] = quantile(milliseconds, 0.5);
-  state.counters["p99_ms"] = quantile(milliseconds, 0.99);
+  state.counters["median_ms"] = ifar::common::nearestRankPercentile(milliseconds, 50.0);
+  state.counters["p99_ms"] = ifar::common::nearestRankPercentile(milliseconds, 99.0);
   state.counters["expansions_per_plan"] = plans > 0.0 ? expansions / plans : 0.0;
   state.counters["found_fraction"] = plans > 0.0 ? found / plans : 0.0;
   state.counters["plans"] = plans / static_cast<double>(std::max<std::size_t>(1, milliseconds.size()));
