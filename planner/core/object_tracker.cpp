@@ -4,6 +4,8 @@
 #include <limits>
 #include <utility>
 
+#include "planner/interaction/convex_polygon.hpp"
+
 namespace ifar::planner {
 
 namespace {
@@ -76,6 +78,23 @@ geometry::Polygon ObjectTracker::outlineOf(std::int64_t id) const
   const auto found =
       std::find_if(tracks_.begin(), tracks_.end(), [id](const Track& track) { return track.id == id; });
   return found == tracks_.end() ? geometry::Polygon{} : found->outline;
+}
+
+std::optional<std::int64_t> ObjectTracker::nearestTo(const geometry::Segment& segment, double radius) const
+{
+  std::optional<std::int64_t> nearest;
+  double nearest_distance = radius;
+  for (const Track& track : tracks_) {
+    if (track.outline.size() < 3) {
+      continue;
+    }
+    const double distance = interaction::segmentPolygonDistance(segment, track.outline);
+    if (distance <= nearest_distance) {
+      nearest = track.id;
+      nearest_distance = distance;
+    }
+  }
+  return nearest;
 }
 
 bool ObjectTracker::forget(std::int64_t id)

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "common/geometry/polygon.hpp"
+#include "common/geometry/segment.hpp"
 
 namespace ifar::planner {
 
@@ -53,6 +54,8 @@ class ObjectTracker {
   std::optional<geometry::Point> centroidOf(std::int64_t id) const;
   /// The object's latest outline; empty for an unknown id.
   geometry::Polygon outlineOf(std::int64_t id) const;
+  /// The object whose latest outline lies nearest to `segment`, when that is at most `radius` away.
+  std::optional<std::int64_t> nearestTo(const geometry::Segment& segment, double radius) const;
   std::size_t size() const { return tracks_.size(); }
 
  private:

@@ -74,6 +74,9 @@ TrackerSettings trackerSettings(const PlannerSettings& settings)
 }
 
 constexpr double kGravity = 9.81;
+// How near the line from the vehicle to the point it could not reach a movable object must come to bound
+// the blocked passage: the inflation is in its outline already, so touching.
+constexpr double kObjectBesidePassageM = 0.15;
 
 }  // namespace
 
@@ -83,6 +86,7 @@ Planner::Planner(const PlannerSettings& settings)
       interaction_(settings_.interaction),
       background_memory_(settings_.perception.cell_size_m),
       sealed_(settings_.perception.cell_size_m),
+      object_seals_(settings_.perception.cell_size_m),
       affordances_(trackerSettings(settings_).association_distance_m),
       outline_memory_(settings_.interaction_enabled ? settings_.interaction.loop.outline_memory_restart_m
                                                     : 0.0)
@@ -245,9 +249,10 @@ FrameResult Planner::processFrame(const FrameInput& frame)
   for (std::size_t outline = 0; outline < movable_polygons.size(); ++outline) {
     result.polygon_ids[movable_polygons[outline]] = tracked.polygon_ids[outline];
   }
-  rememberOutlines(tracked, movable_polygons, robot, result);
+  shapeOutlines(tracked, movable_polygons, robot, result);
   affordances_.seen(tracked.seen);
   for (const std::int64_t dropped : tracked.dropped) {
+    releaseObjectSeal(dropped, true);
     interaction_.drop(dropped, global_);
     affordances_.dropped(dropped);
     outline_memory_.forget(dropped);
@@ -314,13 +319,16 @@ FrameResult Planner::processFrame(const FrameInput& frame)
   return result;
 }
 
-void Planner::rememberOutlines(TrackingResult& tracked, const std::vector<std::size_t>& movable_polygons,
-                               const geometry::Point& robot, FrameResult& result)
+void Planner::shapeOutlines(TrackingResult& tracked, const std::vector<std::size_t>& movable_polygons,
+                            const geometry::Point& robot, FrameResult& result)
 {
-  if (!outline_memory_.enabled()) {
+  if (!outline_memory_.enabled() && object_seals_.size() == 0) {
     return;
   }
   for (TrackedObject& object : tracked.seen) {
+    if (!outline_memory_.enabled() && !object_seals_.holds(object.id)) {
+      continue;
+    }
     // An object the sensor split into several outlines is planned with their hull already; its pieces
     // stay as they are in the frame's polygons.
     std::size_t polygons = 0;
@@ -331,7 +339,10 @@ void Planner::rememberOutlines(TrackingResult& tracked, const std::vector<std::s
         polygon = movable_polygons[outline];
       }
     }
-    object.outline = outline_memory_.remember(object.id, object.outline, robot);
+    if (outline_memory_.enabled()) {
+      object.outline = outline_memory_.remember(object.id, object.outline, robot);
+    }
+    object.outline = object_seals_.grown(object.id, object.outline);
     if (polygons == 1) {
       result.polygons[polygon].vertices = object.outline;
     }
@@ -422,12 +433,14 @@ void Planner::search(FrameResult& result)
   } else {
     status.state = PlannerState::NoPath;
     appendMessage(status.message, std::string("search: ") + graph::toString(found.status));
-    if (sealed_.size() > 0) {
+    if (sealed_.size() > 0 || object_seals_.size() > 0) {
       // A seal is a guess from stalls (the follower may have failed at a passage the vehicle fits): with
       // no way left at all, trying a sealed passage again beats stopping. From the next frame.
-      appendMessage(status.message, "forgetting " + std::to_string(sealed_.size()) +
-                                        " sealed cells of blocked passages: no path without them");
+      appendMessage(status.message, fmt::format("forgetting {} sealed cells of blocked passages and the "
+                                                "seals kept with {} objects: no path without them",
+                                                sealed_.size(), object_seals_.size()));
       sealed_ = perception::BackgroundMemory(settings_.perception.cell_size_m);
+      object_seals_.clear();
     }
   }
   last_path_ = path;
@@ -455,6 +468,8 @@ FrameResult Planner::applyAffordance(const AffordanceUpdate& update)
                                      physics, obstacles_ ? &*obstacles_ : nullptr, global_);
     if (outcome != AffordanceOutcome::UnknownObject && tracker_.contains(update.object_id)) {
       affordances_.learned(update.object_id, update.pushable, physics, tracker_.centroidOf(update.object_id));
+      // Pushed, the object has moved and the gap beside it with it; unpushable, it is a wall like the seal.
+      releaseObjectSeal(update.object_id, !update.pushable);
       if (!update.pushable && settings_.perception.remember_background) {
         // What the vehicle cannot move is a wall from now on, also once it is out of sight: otherwise
         // the corridor it closes looks open again from the room beside it, and the route flips each
@@ -498,12 +513,32 @@ FrameResult Planner::applyBlockedPassage(const BlockedPassage& passage)
   } else if (const std::optional<PassageSeal> seal =
                  sealPassage(*obstacles_, passage.from, passage.to, settings_.perception.inflation_radius_m,
                              settings_.perception.cell_size_m)) {
-    sealed_.remember(common::Span<const geometry::Point>(seal->cells.data(), seal->cells.size()));
+    // A movable object at the vehicle's way to the point it could not reach bounds the gap: often
+    // where a push left it, with its far side unseen (a face is modelled thin), so the seal can lie well
+    // beyond its outline.
+    std::optional<std::int64_t> beside;
+    std::vector<geometry::Point> gap;
+    if (settings_.interaction_enabled) {
+      beside = tracker_.nearestTo(geometry::Segment{passage.from, passage.to}, kObjectBesidePassageM);
+      for (const geometry::Point& cell : seal->cells) {
+        if (!obstacles_->isBlocked(cell)) {
+          gap.push_back(cell);
+        }
+      }
+    }
+    std::string kept;
+    if (beside && !gap.empty() && !interaction_.unpushable(*beside)) {
+      object_seals_.bind(*beside, gap, seal->cells);
+      kept = fmt::format(", kept with object {} (its outline takes in the {} free cells until it is pushed)",
+                         *beside, gap.size());
+    } else {
+      sealed_.remember(common::Span<const geometry::Point>(seal->cells.data(), seal->cells.size()));
+    }
     const std::size_t removed = removeEdgesThroughSeal(*seal, global_);
     done = fmt::format(
         "{}: sealed at ({:.2f}, {:.2f}), {:.2f} m from the nearest obstacle, {} cells, {} edges "
-        "through it removed",
-        named, seal->centre.x(), seal->centre.y(), seal->half_width_m, seal->cells.size(), removed);
+        "through it removed{}",
+        named, seal->centre.x(), seal->centre.y(), seal->half_width_m, seal->cells.size(), removed, kept);
   } else {
     problem = named + " rejected: no free point to seal beyond the vehicle";
   }
@@ -513,6 +548,14 @@ FrameResult Planner::applyBlockedPassage(const BlockedPassage& passage)
   FrameResult result = replan();
   appendMessage(result.status.message, problem.empty() ? done : problem);
   return result;
+}
+
+void Planner::releaseObjectSeal(std::int64_t object_id, bool keep_as_wall)
+{
+  const std::vector<geometry::Point> cells = object_seals_.release(object_id);
+  if (keep_as_wall && !cells.empty()) {
+    sealed_.remember(common::Span<const geometry::Point>(cells.data(), cells.size()));
+  }
 }
 
 }  // namespace ifar::planner

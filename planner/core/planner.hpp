@@ -15,6 +15,7 @@
 #include "planner/core/affordance_memory.hpp"
 #include "planner/core/frame_assembler.hpp"
 #include "planner/core/interaction_stage.hpp"
+#include "planner/core/object_seals.hpp"
 #include "planner/core/object_tracker.hpp"
 #include "planner/core/outline_memory.hpp"
 #include "planner/core/planner_status.hpp"
@@ -110,13 +111,15 @@ class Planner {
   /// searches again at once (no frame needed). Unknown object id: counted as bad input, message says so.
   FrameResult applyAffordance(const AffordanceUpdate& update);
 
-  /// Seals the narrowest point between passage.from and passage.to (see passage_seal.hpp) for good:
-  /// from the next frame the layer holds it like a wall and the graph routes around it. Searches again
-  /// at once. Non-finite points, no frame yet or no free point to seal: counted as bad input, the
-  /// message says why.
+  /// Seals the narrowest point between passage.from and passage.to (see passage_seal.hpp): from the next
+  /// frame the layer holds it like a wall and the graph routes around it. Where a movable object bounds
+  /// the gap, the seal is kept with the object instead (object_seals.hpp). Searches again at once.
+  /// Non-finite points, no frame yet or no free point to seal: counted as bad input, the message says why.
   FrameResult applyBlockedPassage(const BlockedPassage& passage);
-  /// Background cells sealed so far (blocked passages).
+  /// Background cells sealed so far (blocked passages not kept with an object).
   std::size_t sealedCells() const { return sealed_.size(); }
+  /// Whether a blocked passage beside the object is kept with it (object_seals.hpp).
+  bool holdsObjectSeal(std::int64_t object_id) const { return object_seals_.holds(object_id); }
 
   const graph::DvGraph& graph() const { return global_; }
   std::int64_t badInputs() const { return bad_inputs_; }
@@ -133,9 +136,11 @@ class Planner {
   void search(FrameResult& result);
   void fillSizes(PlannerStatus& status) const;
   /// Replaces each seen object's outline (and its polygon of the frame) with what the outline memory
-  /// keeps of it.
-  void rememberOutlines(TrackingResult& tracked, const std::vector<std::size_t>& movable_polygons,
-                        const geometry::Point& robot, FrameResult& result);
+  /// keeps of it, grown by the seal kept with it.
+  void shapeOutlines(TrackingResult& tracked, const std::vector<std::size_t>& movable_polygons,
+                     const geometry::Point& robot, FrameResult& result);
+  /// Drops the seal kept with the object; `keep_as_wall`: its cells become an ordinary seal.
+  void releaseObjectSeal(std::int64_t object_id, bool keep_as_wall);
   bool goalOnKnownMap(const geometry::Point& goal) const;
 
   PlannerSettings settings_;
@@ -144,6 +149,7 @@ class Planner {
   InteractionStage interaction_;
   perception::BackgroundMemory background_memory_;
   perception::BackgroundMemory sealed_;  // passages the vehicle could not get through: walls for good
+  ObjectSeals object_seals_;             // ... beside a movable object: kept with the object
   AffordanceMemory affordances_;
   OutlineMemory outline_memory_;                 // partly seen objects: the most of each one seen
   std::optional<graph::ObstacleSet> obstacles_;  // last frame's observed obstacles, for attachment

@@ -317,6 +317,66 @@ TEST(InteractionPlanner, ABlockedPassageIsSealedAndRoutedAround)
       << "still through the sealed doorway at x = " << *crossing << ": " << after.status.message;
 }
 
+/// The area of the object's polygon in the frame (0 when it has none).
+double objectArea(const FrameResult& result, std::int64_t object_id)
+{
+  for (std::size_t index = 0; index < result.polygons.size(); ++index) {
+    if (result.polygon_ids[index] == object_id) {
+      return std::abs(geometry::area(result.polygons[index].vertices));
+    }
+  }
+  return 0.0;
+}
+
+// A blocked passage at a movable object (here the vehicle could not get past the doorway box) is kept
+// with the object, not sealed for good: its outline takes in the seal's free cells from the next frame, and
+// the seal goes once the object is pushed (AFFORDANCE with a measurement: it moved, the gap with it).
+TEST(InteractionPlanner, ABlockedPassageAtAMovableObjectIsKeptWithItUntilItIsPushed)
+{
+  Planner planner{PlannerSettings{}};
+  const FrameResult before = runStartThenApproach(planner);
+  const std::int64_t box = objectNear(before, kDoorwayBox);
+  ASSERT_GT(box, 0);
+  const double area_before = objectArea(before, box);
+  ASSERT_GT(area_before, 0.0);
+
+  const FrameResult sealed =
+      planner.applyBlockedPassage({geometry::Point(8.0, 12.5), geometry::Point(8.0, 19.0)});
+  EXPECT_NE(sealed.status.message.find("kept with object " + std::to_string(box)), std::string::npos)
+      << sealed.status.message;
+  EXPECT_TRUE(planner.holdsObjectSeal(box));
+  EXPECT_EQ(planner.sealedCells(), 0U);
+  EXPECT_EQ(sealed.status.bad_inputs, before.status.bad_inputs);
+  const FrameResult next = planner.processFrame(approachFrames().back());
+  EXPECT_GT(objectArea(next, box), area_before + 0.1) << "the outline takes in the seal's cells";
+
+  AffordanceUpdate measured;
+  measured.object_id = box;
+  measured.push_force_n = 40.0;
+  planner.applyAffordance(measured);
+  EXPECT_FALSE(planner.holdsObjectSeal(box));
+  EXPECT_EQ(planner.sealedCells(), 0U);
+  const FrameResult after = planner.processFrame(approachFrames().back());
+  EXPECT_NEAR(objectArea(after, box), area_before, 1e-9);
+}
+
+TEST(InteractionPlanner, ASealKeptWithAnObjectFoundUnpushableBecomesAWall)
+{
+  Planner planner{PlannerSettings{}};
+  const FrameResult before = runStartThenApproach(planner);
+  const std::int64_t box = objectNear(before, kDoorwayBox);
+  ASSERT_GT(box, 0);
+  planner.applyBlockedPassage({geometry::Point(8.0, 12.5), geometry::Point(8.0, 19.0)});
+  ASSERT_TRUE(planner.holdsObjectSeal(box));
+
+  AffordanceUpdate unpushable;
+  unpushable.object_id = box;
+  unpushable.pushable = false;
+  planner.applyAffordance(unpushable);
+  EXPECT_FALSE(planner.holdsObjectSeal(box));
+  EXPECT_GT(planner.sealedCells(), 0U);
+}
+
 /// A closed 12 m x 12 m room split at y = 6 by a wall with one 1.0 m door at x = 6; the vehicle stands at
 /// (6, 3) facing it.
 const std::vector<FrameInput>& oneDoorFrames()

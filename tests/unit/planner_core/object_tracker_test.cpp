@@ -114,6 +114,21 @@ TEST(ObjectTracker, AnObjectOutOfSightIsNotMissing)
   EXPECT_EQ(tracker.update({}, kVehicle, in_the_open).dropped, (std::vector<std::int64_t>{1}));
 }
 
+// BLOCKED_PASSAGE names no object: the planner asks which one lies at the vehicle's way to the point it
+// could not reach.
+TEST(ObjectTracker, TheObjectNearestASegmentWithinTheRadius)
+{
+  ObjectTracker tracker{TrackerSettings{}};
+  tracker.update({box(5.0, 0.0, 0.5, 0.5), box(5.0, 3.0, 0.5, 0.5)}, kVehicle);
+  // Through object 1.
+  EXPECT_EQ(tracker.nearestTo(geometry::Segment{{4.0, -2.0}, {6.0, 2.0}}, 0.15), 1);
+  // Passing 0.1 m beside object 2's west face (x = 4.5), 1.5 m from object 1.
+  EXPECT_EQ(tracker.nearestTo(geometry::Segment{{4.4, 1.5}, {4.4, 4.0}}, 0.15), 2);
+  // 0.3 m off: none within 0.15 m, object 2 within 0.5 m.
+  EXPECT_FALSE(tracker.nearestTo(geometry::Segment{{4.2, 2.0}, {4.2, 4.0}}, 0.15).has_value());
+  EXPECT_EQ(tracker.nearestTo(geometry::Segment{{4.2, 2.0}, {4.2, 4.0}}, 0.5), 2);
+}
+
 TEST(OccupancyRectangles, CoverExactlyTheOccupiedCellsInTheRegion)
 {
   perception::LayerGrid grid;
