@@ -166,6 +166,8 @@ void Executive::startGoal(std::int64_t goal_id)
     pushes_ = 0;
     replans_ = 0;
     stalls_at_site_ = 0;
+    last_stall_at_.reset();
+    repeated_stall_at_.reset();
     jammed_objects_.clear();
   }
 }
@@ -304,26 +306,10 @@ void Executive::stepFollow(Cycle& cycle)
     return;
   }
   const std::size_t last = waypoints.size() - 1;
-  waypoint_index_ = std::min(waypoint_index_, last);
+  advancePassedWaypoints(cycle);
   const auto distance_to = [&cycle, &waypoints](std::size_t index) {
     return (waypoints[index].position - cycle.pose.position()).norm();
   };
-  // Passed: within the tolerance, or within the pass radius and beyond the waypoint, on the next leg's
-  // side of the line through it square to that leg.
-  const auto passed = [&](std::size_t index) {
-    const double distance = distance_to(index);
-    if (distance <= settings_.waypoint_tolerance_m) {
-      return true;
-    }
-    const geometry::Point leg = waypoints[index + 1].position - waypoints[index].position;
-    return distance <= settings_.waypoint_pass_radius_m &&
-           leg.dot(cycle.pose.position() - waypoints[index].position) > 0.0;
-  };
-  while (
-      waypoint_index_ < last && passed(waypoint_index_) &&
-      !(waypoints[waypoint_index_].kind == WaypointKind::Topological && planForWaypoint(waypoint_index_))) {
-    ++waypoint_index_;
-  }
   cycle.target = waypoints[waypoint_index_].position;
   if (waypoint_index_ == last && distance_to(last) <= settings_.goal_tolerance_m) {
     task_ = Task::Arrived;
@@ -378,10 +364,47 @@ void Executive::stepFollow(Cycle& cycle)
   } else if (static_cast<double>(cycle.now_us - stall_anchor_us_) * 1e-6 > settings_.stall_timeout_s) {
     countStall(cycle, pointAlongPath(cycle.pose.position(), path_.waypoints, waypoint_index_,
                                      kBlockedPassageLookAheadM));
+    advancePassedWaypoints(cycle);  // the escape turns toward the waypoint it will follow
     beginStallEscape(cycle);
     return;
   }
   if (result.status == FollowerStatus::Arrived && waypoint_index_ < last) {
+    ++waypoint_index_;
+  }
+}
+
+void Executive::advancePassedWaypoints(const Cycle& cycle)
+{
+  const std::vector<Waypoint>& waypoints = path_.waypoints;
+  if (waypoints.empty()) {
+    return;
+  }
+  const std::size_t last = waypoints.size() - 1;
+  waypoint_index_ = std::min(waypoint_index_, last);
+  const auto distance_to = [&cycle, &waypoints](std::size_t index) {
+    return (waypoints[index].position - cycle.pose.position()).norm();
+  };
+  // Where following has stalled again after its escape, a waypoint within the pass radius counts as
+  // passed on either side: it is the corner of an obstacle inflated by a disc of the half width (and a
+  // layer cell off), where the vehicle's rectangle may not fit facing the next leg, while the follower's
+  // cost-to-go to the next waypoint leads round the corner with clearance (tunnel-1 t2 stalled 75 times
+  // at one rock corner, each new path leading back to it).
+  const bool stalled_here =
+      repeated_stall_at_ && (cycle.pose.position() - *repeated_stall_at_).norm() <= kStallSiteRadiusM;
+  // Passed: within the tolerance, or within the pass radius and beyond the waypoint, on the next leg's
+  // side of the line through it square to that leg.
+  const auto passed = [&](std::size_t index) {
+    const double distance = distance_to(index);
+    if (distance <= settings_.waypoint_tolerance_m) {
+      return true;
+    }
+    const geometry::Point leg = waypoints[index + 1].position - waypoints[index].position;
+    return distance <= settings_.waypoint_pass_radius_m &&
+           (stalled_here || leg.dot(cycle.pose.position() - waypoints[index].position) > 0.0);
+  };
+  while (
+      waypoint_index_ < last && passed(waypoint_index_) &&
+      !(waypoints[waypoint_index_].kind == WaypointKind::Topological && planForWaypoint(waypoint_index_))) {
     ++waypoint_index_;
   }
 }
@@ -590,6 +613,10 @@ bool Executive::standingStill(const Cycle& cycle)
 void Executive::countStall(Cycle& cycle, const geometry::Point& target)
 {
   const geometry::Point position = cycle.pose.position();
+  if (last_stall_at_ && (position - *last_stall_at_).norm() <= kStallSiteRadiusM) {
+    repeated_stall_at_ = position;
+  }
+  last_stall_at_ = position;
   if (stalls_at_site_ == 0 || (position - stall_site_).norm() > kStallSiteRadiusM ||
       (target - stall_site_target_).norm() > kStallSiteRadiusM) {
     stall_site_ = position;

@@ -91,6 +91,9 @@ class Executive {
   void absorbPath(const Inputs& inputs);
   void adoptPath(const Path& path);
   void stepFollow(Cycle& cycle);
+  /// Moves waypoint_index_ past the intermediate waypoints the vehicle has passed (never past a
+  /// topological waypoint with a push plan).
+  void advancePassedWaypoints(const Cycle& cycle);
   /// The vehicle's position, then the waypoints ahead up to where a push takes over (pushing goes through
   /// its own gap).
   std::vector<geometry::Point> pathAhead(const Cycle& cycle) const;
@@ -197,6 +200,8 @@ class Executive {
   std::int64_t last_follow_us_ = 0;                       // the last cycle that followed
   geometry::Point stall_site_ = geometry::Point::Zero();  // where the current series of stalls began
   int stalls_at_site_ = 0;                                // stalls of that series, toward one waypoint
+  std::optional<geometry::Point> last_stall_at_;          // where following last stalled (this goal)
+  std::optional<geometry::Point> repeated_stall_at_;      // ... the last within 1 m of the stall before
   geometry::Point stall_site_target_ = geometry::Point::Zero();
   geometry::Point gap_reported_at_ = geometry::Point::Zero();  // the last impassable gap reported ...
   std::int64_t gap_reported_us_ = -1;                          // ... and when (-1: none yet)

@@ -207,6 +207,54 @@ TEST_F(ExecutiveTest, AWaypointTheVehicleIsBeyondCountsAsPassedWithinThePassRadi
   EXPECT_NEAR(target_from(Pose2{3.4, 0.0, 0.0}).x(), 2.0, 1e-9);  // beyond, but 1.52 m away
 }
 
+TEST_F(ExecutiveTest, AfterAStallAtACornerTheNextWaypointIsFollowedRoundIt)
+{
+  // Tunnel-1 t2 at 565 s (the obstacle points the executive had), the rock's corner moved to the origin:
+  // rock at x <= 0, y <= 0, the pushed crate's face 0.6 m below at y = -0.6. The path's corner vertex
+  // (0.32, 0.27) is the disc-inflated corner a layer cell off: reaching it, the vehicle faces the rock
+  // with its bumper a few centimetres from the face, and no forward arc toward the next waypoint keeps
+  // the guard's clearance. Aiming at the vertex after each stall, it stalled there 75 times; after a
+  // second stall there the vertex, within the pass radius, counts as passed, and the follower's cost-to-go
+  // to the next waypoint leads round the corner.
+  std::vector<Point> walls;
+  for (double x = -8.0; x <= 0.0; x += 0.05) {
+    walls.emplace_back(x, 0.0);
+  }
+  for (double y = -1.0; y < 0.0; y += 0.05) {
+    walls.emplace_back(0.0, y);
+  }
+  for (double x = 0.2; x <= 3.6; x += 0.05) {
+    walls.emplace_back(x, -0.6);
+  }
+  Path path = straightPath();
+  path.waypoints = {waypoint(0.70, -0.02), waypoint(0.32, 0.27), waypoint(-24.0, 0.27)};
+  pose_ = Pose2{0.70, -0.02, 169.7 * M_PI / 180.0};
+  int stalls = 0;
+  bool stalling = false;
+  std::string last_reason;
+  for (int cycle = 0; cycle < 3000 && pose_.x > -2.0; ++cycle) {
+    now_us_ += kCycleUs;
+    if (cycle % 5 == 0 && pose_.x > 0.0) {
+      // The planner's path at 10 Hz, from where the vehicle is: round the corner vertex while it is east
+      // of the rock.
+      ++path.sequence;
+      path.utime = now_us_;
+      path.waypoints.front() = waypoint(pose_.x, pose_.y);
+    }
+    Inputs inputs = freshInputs(now_us_, path);
+    inputs.obstacles = Stamped<std::vector<Point>>{walls, now_us_};
+    const Output output = executive_.step(now_us_, inputs);
+    last_reason = output.status.reason;
+    const bool stalled = output.status.reason.find("stalled for") != std::string::npos;
+    stalls += stalled && !stalling ? 1 : 0;
+    stalling = stalled;
+    pose_ = testing::drive(pose_, output.command, kCycleUs * 1e-6);
+  }
+  EXPECT_LT(pose_.x, -2.0) << "ended at (" << pose_.x << ", " << pose_.y << ", " << pose_.heading
+                           << ") after " << stalls << " stalls: " << last_reason;
+  EXPECT_LE(stalls, 2);
+}
+
 TEST_F(ExecutiveTest, FollowingThatGetsNowhereBacksOffAndTriesAgain)
 {
   // Facing +y with a wall 5 cm off the right side and the goal 2.3 m behind: turning round would sweep
