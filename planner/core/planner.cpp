@@ -322,9 +322,6 @@ FrameResult Planner::processFrame(const FrameInput& frame)
 void Planner::shapeOutlines(TrackingResult& tracked, const std::vector<std::size_t>& movable_polygons,
                             const geometry::Point& robot, FrameResult& result)
 {
-  if (!outline_memory_.enabled() && object_seals_.size() == 0) {
-    return;
-  }
   for (TrackedObject& object : tracked.seen) {
     if (!outline_memory_.enabled() && !object_seals_.holds(object.id)) {
       continue;
@@ -520,6 +517,8 @@ FrameResult Planner::applyBlockedPassage(const BlockedPassage& passage)
     std::vector<geometry::Point> gap;
     if (settings_.interaction_enabled) {
       beside = tracker_.nearestTo(geometry::Segment{passage.from, passage.to}, kObjectBesidePassageM);
+    }
+    if (beside) {
       for (const geometry::Point& cell : seal->cells) {
         if (!obstacles_->isBlocked(cell)) {
           gap.push_back(cell);
