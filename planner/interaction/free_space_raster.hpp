@@ -24,8 +24,15 @@ class FreeSpaceRaster {
   /// Marks every cell whose centre lies inside `polygon` (even-odd rule) with `layer`.
   void fill(const geometry::Polygon& polygon, std::uint8_t layer);
 
+  /// A cell and how far its centre lies outside a polygon (0 inside or on its boundary).
+  struct CellDistance {
+    std::size_t cell = 0;
+    double distance_m = 0.0;
+  };
   /// The cells whose centre lies inside `polygon` or within `distance_m` of its boundary.
   std::vector<std::size_t> cellsNear(const geometry::Polygon& polygon, double distance_m) const;
+  /// The same cells with their distances, so a caller needing two reaches measures once.
+  std::vector<CellDistance> cellDistancesNear(const geometry::Polygon& polygon, double distance_m) const;
   void mark(const std::vector<std::size_t>& cells, std::uint8_t layer);
   std::uint8_t layers(std::size_t cell) const { return cells_[cell]; }
   bool onBorder(std::size_t cell) const;
@@ -36,8 +43,30 @@ class FreeSpaceRaster {
 
   /// Visits the cells carrying none of `blocked_layers` 4-connected to `start`, nearest first, with the
   /// number of 4-neighbour steps from `start` to each, until `visit` returns true; returns whether it did.
-  bool searchFrom(std::size_t start, std::uint8_t blocked_layers,
-                  const std::function<bool(std::size_t cell, int steps)>& visit) const;
+  /// A template: it runs over thousands of cells for each pose a push search judges.
+  template <typename Visit>
+  bool searchFrom(std::size_t start, std::uint8_t blocked_layers, Visit&& visit) const
+  {
+    if (start >= cells_.size() || (cells_[start] & blocked_layers) != 0) {
+      return false;
+    }
+    std::vector<int> steps(cells_.size(), -1);
+    std::vector<std::size_t> queue{start};
+    steps[start] = 0;
+    for (std::size_t head = 0; head < queue.size(); ++head) {
+      const std::size_t cell = queue[head];
+      if (visit(cell, steps[cell])) {
+        return true;
+      }
+      forEachFreeNeighbour(cell, blocked_layers, [&](std::size_t next) {
+        if (steps[next] < 0) {
+          steps[next] = steps[cell] + 1;
+          queue.push_back(next);
+        }
+      });
+    }
+    return false;
+  }
   /// The cell nearest `point` within `radius_cells` (Chebyshev rings) carrying none of `blocked_layers`.
   std::optional<std::size_t> nearestFree(const geometry::Point& point, std::uint8_t blocked_layers,
                                          int radius_cells) const;

@@ -452,16 +452,23 @@ bool PushPlanner::onwardOpen(const Pose2& pose, const Passage& passage) const
   const Polygon footprint = transformed(model_.footprint, pose);
   // An object with a free cell between it and every obstacle (and the raster's edge) is an island: it
   // cannot cut free space apart.
-  const std::vector<std::size_t> neighbourhood =
-      surroundings_->cellsNear(footprint, objectClearance() + 1.5 * kSurroundingsResolutionM);
-  if (std::none_of(neighbourhood.begin(), neighbourhood.end(), [&](std::size_t cell) {
-        return (surroundings_->layers(cell) & FreeSpaceRaster::kObstacle) != 0 ||
-               surroundings_->onBorder(cell);
-      })) {
+  const std::vector<FreeSpaceRaster::CellDistance> neighbourhood =
+      surroundings_->cellDistancesNear(footprint, objectClearance() + 1.5 * kSurroundingsResolutionM);
+  if (std::none_of(neighbourhood.begin(), neighbourhood.end(),
+                   [&](const FreeSpaceRaster::CellDistance& near) {
+                     return (surroundings_->layers(near.cell) & FreeSpaceRaster::kObstacle) != 0 ||
+                            surroundings_->onBorder(near.cell);
+                   })) {
     return true;
   }
   FreeSpaceRaster moved = *surroundings_;
-  moved.mark(moved.cellsNear(footprint, objectClearance()), FreeSpaceRaster::kMovable);
+  std::vector<std::size_t> covered;
+  for (const FreeSpaceRaster::CellDistance& near : neighbourhood) {
+    if (near.distance_m <= objectClearance()) {
+      covered.push_back(near.cell);
+    }
+  }
+  moved.mark(covered, FreeSpaceRaster::kMovable);
   const std::uint8_t blocked = FreeSpaceRaster::kObstacle | FreeSpaceRaster::kMovable;
   const auto start_cell = moved.nearestFree(passage.segment.start, blocked, waypointSearchCells());
   if (!start_cell) {
