@@ -86,6 +86,7 @@ Planner::Planner(const PlannerSettings& settings)
       interaction_(settings_.interaction),
       background_memory_(settings_.perception.cell_size_m),
       sealed_(settings_.perception.cell_size_m),
+      known_(settings_.perception.cell_size_m),
       object_seals_(settings_.perception.cell_size_m),
       affordances_(trackerSettings(settings_).association_distance_m),
       outline_memory_(settings_.interaction_enabled ? settings_.interaction.loop.outline_memory_restart_m
@@ -117,6 +118,15 @@ std::string Planner::loadPriorGraph(const std::string& path)
   }
   global_ = std::move(loaded.graph);
   return {};
+}
+
+std::size_t Planner::rememberKnownObstacles(common::Span<const geometry::Polygon> outlines)
+{
+  std::size_t cells = 0;
+  for (const geometry::Polygon& outline : outlines) {
+    cells += known_.rememberOutline(outline);
+  }
+  return cells;
 }
 
 bool Planner::goalOnKnownMap(const geometry::Point& goal) const
@@ -174,8 +184,10 @@ FrameResult Planner::processFrame(const FrameInput& frame)
     if (settings_.perception.remember_background) {
       remembered = background_memory_.cellsWithin(minimum, maximum);
     }
-    const std::vector<geometry::Point> sealed = sealed_.cellsWithin(minimum, maximum);
-    remembered.insert(remembered.end(), sealed.begin(), sealed.end());
+    for (const perception::BackgroundMemory* memory : {&sealed_, &known_}) {
+      const std::vector<geometry::Point> cells = memory->cellsWithin(minimum, maximum);
+      remembered.insert(remembered.end(), cells.begin(), cells.end());
+    }
     input.remembered_background = common::Span<const geometry::Point>(remembered.data(), remembered.size());
   }
   perception::PerceptionResult perceived = perception::runPerception(input, settings_.perception);

@@ -11,6 +11,8 @@
 #include <vector>
 
 #include "common/geometry/point.hpp"
+#include "common/geometry/polygon.hpp"
+#include "common/span.hpp"
 #include "common/vehicle.hpp"
 #include "planner/core/affordance_memory.hpp"
 #include "planner/core/frame_assembler.hpp"
@@ -107,6 +109,11 @@ class Planner {
   /// input is counted and the reason (file and line) is returned; empty on success.
   std::string loadPriorGraph(const std::string& path);
 
+  /// Walls known before the run (a map made before): the planner holds their outlines as if seen, from
+  /// the next frame on, whatever `perception.remember_background` says. Movable objects do not belong
+  /// here: they are tracked as seen. Returns how many layer cells that was.
+  std::size_t rememberKnownObstacles(common::Span<const geometry::Polygon> outlines);
+
   /// Updates the object's physics estimate or marks it unpushable, redoes/removes its edges and
   /// searches again at once (no frame needed). Unknown object id: counted as bad input, message says so.
   FrameResult applyAffordance(const AffordanceUpdate& update);
@@ -149,6 +156,7 @@ class Planner {
   InteractionStage interaction_;
   perception::BackgroundMemory background_memory_;
   perception::BackgroundMemory sealed_;  // passages the vehicle could not get through: walls for good
+  perception::BackgroundMemory known_;   // walls known before the run (rememberKnownObstacles)
   ObjectSeals object_seals_;             // ... beside a movable object: kept with the object
   AffordanceMemory affordances_;
   OutlineMemory outline_memory_;                 // partly seen objects: the most of each one seen

@@ -35,6 +35,33 @@ void BackgroundMemory::remember(common::Span<const geometry::Point> points)
   }
 }
 
+std::size_t BackgroundMemory::rememberOutline(const geometry::Polygon& outline)
+{
+  if (outline.empty() || !(cell_size_ > 0.0) || !std::isfinite(cell_size_) ||
+      !std::all_of(outline.begin(), outline.end(),
+                   [](const geometry::Point& vertex) { return vertex.allFinite(); })) {
+    return 0;
+  }
+  const std::size_t before = cells_.size();
+  std::vector<geometry::Point> samples;
+  for (std::size_t index = 0; index < outline.size(); ++index) {
+    const geometry::Point& start = outline[index];
+    const geometry::Point& end = outline[(index + 1) % outline.size()];
+    // Samples under half a cell apart fall in the same or neighbouring cells: the marked cells leave no
+    // gap along the edge (a cell the edge only clips at a corner may stay unmarked).
+    const double steps = std::ceil((end - start).norm() / (0.45 * cell_size_));
+    if (steps > kLargestCellIndex) {
+      continue;
+    }
+    const auto count = static_cast<std::int64_t>(steps);
+    for (std::int64_t step = 0; step <= count; ++step) {
+      samples.push_back(count == 0 ? start : start + (end - start) * (static_cast<double>(step) / steps));
+    }
+  }
+  remember(common::Span<const geometry::Point>(samples.data(), samples.size()));
+  return cells_.size() - before;
+}
+
 std::size_t BackgroundMemory::rememberInflatedOutline(const geometry::Polygon& inflated_outline,
                                                       double inflation_m)
 {

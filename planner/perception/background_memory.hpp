@@ -30,6 +30,11 @@ class BackgroundMemory {
   /// from then on, also while out of sight). Returns how many cells that was.
   std::size_t rememberInflatedOutline(const geometry::Polygon& inflated_outline, double inflation_m);
 
+  /// Marks the cells along the boundary of `outline`, with no gap between them (a wall known before it is
+  /// seen: its outline is enough, the layer inflates it like a scanned wall). Returns how many cells were
+  /// new; an outline with a non-finite vertex marks nothing.
+  std::size_t rememberOutline(const geometry::Polygon& outline);
+
   /// Centres of the remembered cells inside the square [minimum, maximum).
   std::vector<geometry::Point> cellsWithin(const geometry::Point& minimum,
                                            const geometry::Point& maximum) const;

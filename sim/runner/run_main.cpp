@@ -109,6 +109,10 @@ int main(int argc, char** argv)
   app.add_option("--max-time", max_time_s, "Simulated seconds before the run counts as failed")
       ->capture_default_str();
   app.add_flag("--no-interaction", no_interaction, "FAR mode: plan without interaction edges (never push)");
+  bool known_map = false;
+  app.add_flag("--known-map", known_map,
+               "The planner knows the world's walls before the run (movable objects are still found by the "
+               "lidar)");
   app.add_flag("--json", json, "Print the summary as one JSON object on the last line of stdout");
   app.add_option("--png", png_path, "Write a picture of the world, trajectory and final object poses");
   app.add_option(
@@ -177,6 +181,7 @@ int main(int argc, char** argv)
   }
   request.max_sim_time_s = max_time_s;
   request.planner.interaction_enabled = !no_interaction;
+  request.known_map = known_map;
 
   ifar::sim::WorldResult loaded = loadWorld(world_name, request.simulator.seed);
   if (!loaded.ok()) {
@@ -206,7 +211,8 @@ int main(int argc, char** argv)
 
   std::cerr << "world '" << request.world.name << "' from " << request.world.source << ", goal ("
             << request.goal.x() << ", " << request.goal.y() << "), "
-            << (request.planner.interaction_enabled ? "interaction on" : "FAR mode (no interaction)") << "\n";
+            << (request.planner.interaction_enabled ? "interaction on" : "FAR mode (no interaction)")
+            << (request.known_map ? ", walls known beforehand" : "") << "\n";
   ifar::runner::GraphPicture graph_picture(
       request.world, graph_at->count() > 0 ? std::optional<double>(graph_at_s) : std::nullopt);
   ifar::runner::FrameObserver observe_frame;

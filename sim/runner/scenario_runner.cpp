@@ -159,6 +159,14 @@ Scenario::Scenario(const RunRequest& request, const std::function<void(const std
       executive_(request.executive, request.vehicle),
       obstacles_(request.obstacles, request.vehicle)
 {
+  if (request.known_map) {
+    std::vector<geometry::Polygon> outlines;
+    outlines.reserve(request.world.obstacles.size());
+    for (const sim::StaticObstacle& obstacle : request.world.obstacles) {
+      outlines.push_back(obstacle.outline);
+    }
+    planner_.rememberKnownObstacles(common::Span<const geometry::Polygon>(outlines.data(), outlines.size()));
+  }
   planner_.setGoal(planner::Goal{kGoalId, request.goal});
   // The drives and their heartbeat are simulated as healthy for the whole run.
   inputs_.motor = executive::Stamped<executive::MotorReading>{{true, false, {}}, 0};

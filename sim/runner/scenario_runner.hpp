@@ -38,6 +38,9 @@ struct RunRequest {
   double path_resend_hz = 20.0;  // the last path reaches the executive again this often (as GLOBAL_PATH does)
   double control_rate_hz = 50.0;
   double max_sim_time_s = 300.0;
+  /// The planner knows the world's static obstacles before the run (a map made before; movable objects
+  /// are still found by the lidar): what a run costs beyond exploring the unknown.
+  bool known_map = false;
 };
 
 /// Wall-clock milliseconds of one kind of planner work over a run's frames (this process's clock, so a

@@ -92,5 +92,37 @@ TEST(BackgroundMemory, AnInflatedOutlineLeavesTheObjectsOwnCells)
   EXPECT_EQ(memory.rememberInflatedOutline(geometry::Polygon{{0.0, 0.0}, {1.0, nan}, {1.0, 1.0}}, 0.35), 0U);
 }
 
+TEST(BackgroundMemory, AnOutlineMarksTheCellsItsEdgesCrossAndNoneInside)
+{
+  // A 3 m x 1.5 m wall block from (0.1, 0.1) in 0.5 m cells: its edges cross the cells of rows 0 and
+  // 3 (x 0.1 .. 3.1: columns 0 .. 6) and of columns 0 and 6 (y 0.1 .. 1.6: rows 0 .. 3).
+  const geometry::Polygon block{{0.1, 0.1}, {3.1, 0.1}, {3.1, 1.6}, {0.1, 1.6}};
+  BackgroundMemory memory(0.5);
+  EXPECT_EQ(memory.rememberOutline(block), 7U + 7U + 2U + 2U);
+  for (const Point& cell : memory.cellsWithin(Point(-5.0, -5.0), Point(5.0, 5.0))) {
+    const bool on_a_row = std::abs(cell.y() - 0.25) < 1e-9 || std::abs(cell.y() - 1.75) < 1e-9;
+    const bool on_a_column = std::abs(cell.x() - 0.25) < 1e-9 || std::abs(cell.x() - 3.25) < 1e-9;
+    EXPECT_TRUE(on_a_row || on_a_column) << cell.transpose();
+  }
+  EXPECT_EQ(memory.rememberOutline(block), 0U) << "nothing new the second time";
+
+  // A long diagonal edge leaves no gap: no point of it is a cell or more from a marked cell's centre.
+  BackgroundMemory diagonal(0.15);
+  diagonal.rememberOutline(geometry::Polygon{{0.0, 0.0}, {30.0, 10.0}});
+  EXPECT_GE(diagonal.size(), 200U);  // at least one cell in each of the 200 columns it spans
+  for (double along = 0.0; along <= 1.0; along += 1e-4) {
+    const Point point(30.0 * along, 10.0 * along);
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const Point& cell : diagonal.cellsWithin(point - Point(0.3, 0.3), point + Point(0.3, 0.3))) {
+      nearest = std::min(nearest, (cell - point).norm());
+    }
+    ASSERT_LT(nearest, 0.15) << point.transpose();
+  }
+
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(memory.rememberOutline(geometry::Polygon{{10.0, 10.0}, {11.0, nan}, {11.0, 11.0}}), 0U);
+  EXPECT_EQ(memory.rememberOutline(geometry::Polygon{}), 0U);
+}
+
 }  // namespace
 }  // namespace ifar::perception

@@ -281,6 +281,38 @@ TEST(PlannerCore, RememberedWallsKeepTheGoalFromBeingAttachedThroughThem)
   }
 }
 
+// Walls known before the run are in the layer from the first frame, seen or not, whatever
+// remember_background says: the goal outside the closed room is not attached through them.
+TEST(PlannerCore, KnownWallsKeepTheGoalFromBeingAttachedThroughThemBeforeTheyAreSeen)
+{
+  std::vector<geometry::Polygon> walls;
+  for (const sim::StaticObstacle& obstacle : sim::builtinPushRoom(200.0).obstacles) {
+    walls.push_back(obstacle.outline);
+  }
+  ASSERT_GE(walls.size(), 4U);
+  for (const bool known : {false, true}) {
+    PlannerSettings settings;
+    settings.perception.remember_background = false;
+    Planner planner{settings};
+    if (known) {
+      EXPECT_GT(
+          planner.rememberKnownObstacles(common::Span<const geometry::Polygon>(walls.data(), walls.size())),
+          100U);
+    }
+    ASSERT_TRUE(planner.setGoal(Goal{3, geometry::Point(16.0, 6.0)}));
+    const FrameResult blind = planner.processFrame(stillFrame());
+    EXPECT_NE(blind.status.flags & kFlagEmptyScan, 0);
+    const bool straight_through_the_wall = blind.path.valid && blind.path.waypoints.size() == 2;
+    if (known) {
+      EXPECT_GE(blind.status.polygons, 1) << "the walls are there";
+      EXPECT_FALSE(straight_through_the_wall) << blind.status.message;
+    } else {
+      EXPECT_EQ(blind.status.polygons, 0);
+      EXPECT_TRUE(straight_through_the_wall) << blind.status.message;
+    }
+  }
+}
+
 TEST(PlannerCore, CorruptGraphFileIsReportedAndIgnored)
 {
   const std::string path = std::string(IFAR_BINARY_DIR) + "/planner_core_corrupt_graph.txt";

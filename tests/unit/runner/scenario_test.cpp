@@ -216,6 +216,41 @@ TEST(RunnerScenario, ProgressOncePerSimulatedSecondAndTimeout)
               (geometry::Point(10.0, 6.0) - summary.trajectory.back().position()).norm(), 0.05);
 }
 
+sim::StaticObstacle wallBetween(const std::string& name, double low_x, double low_y, double high_x,
+                                double high_y)
+{
+  sim::StaticObstacle wall;
+  wall.name = name;
+  wall.outline = {{low_x, low_y}, {high_x, low_y}, {high_x, high_y}, {low_x, high_y}};
+  return wall;
+}
+
+// A wall the lidar cannot see from the start (in the shadow of a nearer one, both taller than the
+// lidar's beams reach there) is in the planner's first frame only when the walls are known beforehand.
+TEST(RunnerScenario, KnownMapPutsAWallOutOfSightIntoTheFirstFrame)
+{
+  sim::World world = sim::builtinRoom();  // 12 m, the vehicle at (2, 6) facing +x
+  world.obstacles.push_back(wallBetween("near", 4.0, 4.5, 4.2, 7.5));
+  world.obstacles.push_back(wallBetween("hidden", 7.0, 5.6, 7.2, 6.4));
+  const geometry::Point hidden_centre(7.1, 6.0);
+  for (const bool known : {false, true}) {
+    RunRequest request = requestFor(world, geometry::Point(10.0, 6.0), 0.5);
+    request.known_map = known;
+    int frames = 0;
+    bool hidden_in_first_frame = false;
+    runScenario(request, {}, [&](const FrameView& frame) {
+      if (frames++ == 0) {
+        hidden_in_first_frame = std::any_of(frame.result.polygons.begin(), frame.result.polygons.end(),
+                                            [&](const perception::LayerPolygon& polygon) {
+                                              return geometry::containsPoint(polygon.vertices, hidden_centre);
+                                            });
+      }
+    });
+    ASSERT_GE(frames, 1);
+    EXPECT_EQ(hidden_in_first_frame, known) << (known ? "known map" : "explored");
+  }
+}
+
 TEST(RunnerScenario, FrameObserverSeesEachPlannerFrameAndThePictureKeepsTheOneAsked)
 {
   const sim::World world = sim::builtinRoom();
