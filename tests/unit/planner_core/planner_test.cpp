@@ -255,6 +255,21 @@ TEST(PlannerCore, EmptyScanIsFlaggedAndKeepsTheGraph)
   EXPECT_EQ(planner.graph().vertexCount(), vertices);  // a sensor gap casts no removal votes
 }
 
+/// An empty scan's frame with the goal (16, 6) outside the room: with the room's walls in the layer (seen
+/// before, or known) the path goes round them; without, straight through.
+void expectGoalBehindTheWalls(const FrameResult& blind, bool walls_in_the_layer)
+{
+  EXPECT_NE(blind.status.flags & kFlagEmptyScan, 0);
+  const bool straight_through_the_wall = blind.path.valid && blind.path.waypoints.size() == 2;
+  if (walls_in_the_layer) {
+    EXPECT_GE(blind.status.polygons, 1) << "the walls are there";
+    EXPECT_FALSE(straight_through_the_wall) << blind.status.message;
+  } else {
+    EXPECT_EQ(blind.status.polygons, 0);
+    EXPECT_TRUE(straight_through_the_wall) << blind.status.message;
+  }
+}
+
 // The room's walls, once seen, stay in the layer: a goal outside the closed room is not attached
 // through a wall the current scan does not show (here: an empty scan), as it is without the memory.
 TEST(PlannerCore, RememberedWallsKeepTheGoalFromBeingAttachedThroughThem)
@@ -268,16 +283,7 @@ TEST(PlannerCore, RememberedWallsKeepTheGoalFromBeingAttachedThroughThem)
     ASSERT_TRUE(planner.setGoal(Goal{3, geometry::Point(16.0, 6.0)}));
     const FrameResult seen = planner.processFrame(frames[0]);
     EXPECT_GE(seen.status.polygons, 2);
-    const FrameResult blind = planner.processFrame(stillFrame());
-    EXPECT_NE(blind.status.flags & kFlagEmptyScan, 0);
-    const bool straight_through_the_wall = blind.path.valid && blind.path.waypoints.size() == 2;
-    if (remember) {
-      EXPECT_GE(blind.status.polygons, 1) << "the walls stay";
-      EXPECT_FALSE(straight_through_the_wall) << blind.status.message;
-    } else {
-      EXPECT_EQ(blind.status.polygons, 0);
-      EXPECT_TRUE(straight_through_the_wall) << blind.status.message;
-    }
+    expectGoalBehindTheWalls(planner.processFrame(stillFrame()), remember);
   }
 }
 
@@ -300,16 +306,7 @@ TEST(PlannerCore, KnownWallsKeepTheGoalFromBeingAttachedThroughThemBeforeTheyAre
           100U);
     }
     ASSERT_TRUE(planner.setGoal(Goal{3, geometry::Point(16.0, 6.0)}));
-    const FrameResult blind = planner.processFrame(stillFrame());
-    EXPECT_NE(blind.status.flags & kFlagEmptyScan, 0);
-    const bool straight_through_the_wall = blind.path.valid && blind.path.waypoints.size() == 2;
-    if (known) {
-      EXPECT_GE(blind.status.polygons, 1) << "the walls are there";
-      EXPECT_FALSE(straight_through_the_wall) << blind.status.message;
-    } else {
-      EXPECT_EQ(blind.status.polygons, 0);
-      EXPECT_TRUE(straight_through_the_wall) << blind.status.message;
-    }
+    expectGoalBehindTheWalls(planner.processFrame(stillFrame()), known);
   }
 }
 
