@@ -124,7 +124,20 @@ std::size_t Planner::rememberKnownObstacles(common::Span<const geometry::Polygon
 {
   std::size_t cells = 0;
   for (const geometry::Polygon& outline : outlines) {
-    cells += known_.rememberOutline(outline);
+    const std::size_t added = known_.rememberOutline(outline);
+    cells += added;
+    if (added == 0) {
+      continue;  // nothing new (or a non-finite vertex): the extent stays
+    }
+    // A goal among the known walls is on the map, not attempted through unknown space.
+    for (const geometry::Point& vertex : outline) {
+      if (known_extent_) {
+        known_extent_->first = known_extent_->first.cwiseMin(vertex);
+        known_extent_->second = known_extent_->second.cwiseMax(vertex);
+      } else {
+        known_extent_ = std::make_pair(vertex, vertex);
+      }
+    }
   }
   return cells;
 }

@@ -111,7 +111,8 @@ class Planner {
 
   /// Walls known before the run (a map made before): the planner holds their outlines as if seen, from
   /// the next frame on, whatever `perception.remember_background` says. Movable objects do not belong
-  /// here: they are tracked as seen. Returns how many layer cells that was.
+  /// here: they are tracked as seen. Their extent counts as observed map (kFlagGoalOffMap). Returns how
+  /// many layer cells that was.
   std::size_t rememberKnownObstacles(common::Span<const geometry::Polygon> outlines);
 
   /// Updates the object's physics estimate or marks it unpushable, redoes/removes its edges and

@@ -310,6 +310,24 @@ TEST(PlannerCore, KnownWallsKeepTheGoalFromBeingAttachedThroughThemBeforeTheyAre
   }
 }
 
+// A goal among known walls is on the map: not flagged as attempted through unknown space, though it lies
+// beyond the 200 m layer round the vehicle at (2, 6).
+TEST(PlannerCore, AGoalAmongKnownWallsIsOnTheMap)
+{
+  const std::vector<geometry::Polygon> walls{{{0.0, 0.0}, {160.0, 0.0}, {160.0, 0.2}, {0.0, 0.2}},
+                                             {{0.0, 11.8}, {160.0, 11.8}, {160.0, 12.0}, {0.0, 12.0}}};
+  for (const bool known : {false, true}) {
+    Planner planner{PlannerSettings{}};
+    if (known) {
+      planner.rememberKnownObstacles(common::Span<const geometry::Polygon>(walls.data(), walls.size()));
+    }
+    ASSERT_TRUE(planner.setGoal(Goal{3, geometry::Point(150.0, 6.0)}));
+    const FrameResult first = planner.processFrame(stillFrame());
+    EXPECT_EQ((first.status.flags & kFlagGoalOffMap) != 0, !known) << first.status.message;
+    EXPECT_TRUE(first.path.valid) << first.status.message;
+  }
+}
+
 TEST(PlannerCore, CorruptGraphFileIsReportedAndIgnored)
 {
   const std::string path = std::string(IFAR_BINARY_DIR) + "/planner_core_corrupt_graph.txt";
