@@ -131,15 +131,20 @@ std::size_t Planner::rememberKnownObstacles(common::Span<const geometry::Polygon
     }
     // A goal among the known walls is on the map, not attempted through unknown space.
     for (const geometry::Point& vertex : outline) {
-      if (known_extent_) {
-        known_extent_->first = known_extent_->first.cwiseMin(vertex);
-        known_extent_->second = known_extent_->second.cwiseMax(vertex);
-      } else {
-        known_extent_ = std::make_pair(vertex, vertex);
-      }
+      extendKnownMap(vertex, vertex);
     }
   }
   return cells;
+}
+
+void Planner::extendKnownMap(const geometry::Point& minimum, const geometry::Point& maximum)
+{
+  if (known_extent_) {
+    known_extent_->first = known_extent_->first.cwiseMin(minimum);
+    known_extent_->second = known_extent_->second.cwiseMax(maximum);
+  } else {
+    known_extent_ = std::make_pair(minimum, maximum);
+  }
 }
 
 bool Planner::goalOnKnownMap(const geometry::Point& goal) const
@@ -246,12 +251,7 @@ FrameResult Planner::processFrame(const FrameInput& frame)
   const perception::LayerGrid& grid = perceived.layer.grid;
   const perception::LayerGrid& extent = perceived.layer.extent;
   const geometry::Point layer_max = extent.origin + geometry::Point::Constant(extent.sideLength());
-  if (known_extent_) {
-    known_extent_->first = known_extent_->first.cwiseMin(extent.origin);
-    known_extent_->second = known_extent_->second.cwiseMax(layer_max);
-  } else {
-    known_extent_ = std::make_pair(extent.origin, layer_max);
-  }
+  extendKnownMap(extent.origin, layer_max);
 
   // Stable ids for the movable outlines.
   std::vector<geometry::Polygon> movable_outlines;

@@ -149,6 +149,8 @@ class Planner {
                      const geometry::Point& robot, FrameResult& result);
   /// Drops the seal kept with the object; `keep_as_wall`: its cells become an ordinary seal.
   void releaseObjectSeal(std::int64_t object_id, bool keep_as_wall);
+  /// Grows the observed map's extent (kFlagGoalOffMap) to take in the box [minimum, maximum].
+  void extendKnownMap(const geometry::Point& minimum, const geometry::Point& maximum);
   bool goalOnKnownMap(const geometry::Point& goal) const;
 
   PlannerSettings settings_;
