@@ -252,6 +252,10 @@ FrameResult Planner::processFrame(const FrameInput& frame)
   const perception::LayerGrid& extent = perceived.layer.extent;
   const geometry::Point layer_max = extent.origin + geometry::Point::Constant(extent.sideLength());
   extendKnownMap(extent.origin, layer_max);
+  if (settings_.graph.unseen_cost > 0.0 && !empty_scan) {
+    seen_.markView(perceived.layer, robot, settings_.graph.seen_range_m,
+                   settings_.perception.inflation_radius_m);
+  }
 
   // Stable ids for the movable outlines.
   std::vector<geometry::Polygon> movable_outlines;
@@ -416,8 +420,14 @@ void Planner::search(FrameResult& result)
       }
     }
   }
+  graph::WaySurcharge unseen;
+  if (settings_.graph.unseen_cost > 0.0) {
+    unseen = [this](const geometry::Point& from, const geometry::Point& to) {
+      return settings_.graph.unseen_cost * seen_.unseenLength(from, to);
+    };
+  }
   const graph::SearchResult found =
-      graph::findPath(search_graph, *obstacles_, *robot_, goal_->position, scratch_, preference);
+      graph::findPath(search_graph, *obstacles_, *robot_, goal_->position, scratch_, preference, unseen);
   status.timings.search_ms = millisecondsSince(start);
 
   PlannedPath path;

@@ -21,6 +21,7 @@
 #include "planner/core/object_tracker.hpp"
 #include "planner/core/outline_memory.hpp"
 #include "planner/core/planner_status.hpp"
+#include "planner/core/seen_space.hpp"
 #include "planner/graph/dv_graph.hpp"
 #include "planner/graph/obstacle_set.hpp"
 #include "planner/graph/search.hpp"
@@ -163,6 +164,7 @@ class Planner {
   ObjectSeals object_seals_;             // ... beside a movable object: kept with the object
   AffordanceMemory affordances_;
   OutlineMemory outline_memory_;                 // partly seen objects: the most of each one seen
+  SeenSpace seen_;                               // where the scans have looked (graph.unseen_cost)
   std::optional<graph::ObstacleSet> obstacles_;  // last frame's observed obstacles, for attachment
   std::optional<Goal> goal_;
   std::optional<geometry::Point> robot_;

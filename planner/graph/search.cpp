@@ -187,7 +187,8 @@ void SearchGraph::buildVertexGrid()
 
 SearchResult AStarSearch::run(const SearchGraph& graph, const ObstacleSet& obstacles,
                               const geometry::Point& start_in, const geometry::Point& goal_in,
-                              SearchScratch& scratch, const RoutePreference& preference)
+                              SearchScratch& scratch, const RoutePreference& preference,
+                              const WaySurcharge& surcharge)
 {
   SearchResult result;
   if (!start_in.allFinite()) {
@@ -350,9 +351,13 @@ SearchResult AStarSearch::run(const SearchGraph& graph, const ObstacleSet& obsta
   const auto preferred = [&](std::uint32_t from, std::uint32_t to) {
     return preferring && scratch.preferred_next_[from] == to;
   };
+  const auto surchargeOf = [&](const geometry::Point& from, const geometry::Point& to) {
+    return surcharge ? std::max(0.0, surcharge(from, to)) : 0.0;
+  };
   const auto arcCost = [&](std::uint32_t from, std::uint32_t arc) {
-    const double cost = graph.costs_[arc];
-    if (!preferred(from, graph.targets_[arc])) {
+    const std::uint32_t to = graph.targets_[arc];
+    const double cost = graph.costs_[arc] + surchargeOf(graph.positions_[from], graph.positions_[to]);
+    if (!preferred(from, to)) {
       return cost;
     }
     return cost - std::min(cost * (1.0 - kept_fraction), scratch.preferred_budget_[from]);
@@ -416,7 +421,8 @@ SearchResult AStarSearch::run(const SearchGraph& graph, const ObstacleSet& obsta
         const std::uint32_t vertex = graph.cell_vertices_[slot];
         if (seesStart(vertex)) {
           ++result.start_links;
-          relax(start_index, vertex, (graph.positions_[vertex] - start).norm());
+          relax(start_index, vertex,
+                (graph.positions_[vertex] - start).norm() + surchargeOf(start, graph.positions_[vertex]));
         }
       }
       const int column = static_cast<int>(cell % static_cast<std::uint32_t>(graph.cell_columns_));
@@ -465,7 +471,8 @@ SearchResult AStarSearch::run(const SearchGraph& graph, const ObstacleSet& obsta
     // so testing visibility here gives the same result as attaching it to every vertex up front.
     if (seesGoal(vertex)) {
       ++result.goal_links;
-      relax(vertex, goal_index, (goal - graph.positions_[vertex]).norm());
+      relax(vertex, goal_index,
+            (goal - graph.positions_[vertex]).norm() + surchargeOf(graph.positions_[vertex], goal));
     }
   }
   if (!found) {
@@ -511,7 +518,8 @@ SearchResult AStarSearch::run(const SearchGraph& graph, const ObstacleSet& obsta
       }
       if (taken && preferred(from, vertex)) {
         // Report the true cost: add back what the preference took off this step.
-        result.cost += graph.costs_[*taken] - arcCost(from, *taken);
+        result.cost += graph.costs_[*taken] + surchargeOf(graph.positions_[from], graph.positions_[vertex]) -
+                       arcCost(from, *taken);
       }
     }
     if (!result.path.empty()) {

@@ -9,6 +9,7 @@
 // edges that cross unobserved space count as free until perception adds a polygon that blocks them.
 
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -80,7 +81,7 @@ struct PathPoint {
 struct SearchResult {
   SearchStatus status = SearchStatus::NoPath;
   std::vector<PathPoint> path;                      // robot first, goal last (when Found)
-  double cost = 0.0;                                // sum of edge costs (length, plus J on interaction edges)
+  double cost = 0.0;                                // sum of edge costs: length, J, any surcharge
   double length = 0.0;                              // geometric length
   geometry::Point start = geometry::Point::Zero();  // after snapping
   geometry::Point goal = geometry::Point::Zero();
@@ -100,6 +101,10 @@ struct RoutePreference {
   double discount = 0.0;        // 0 .. 0.9 (larger values count as 0.9)
   double cap_m = 0.0;           // metres; <= 0: no cap (a fraction of the whole route)
 };
+
+/// A price on a stretch of way on top of its length, in metres (e.g. for the part of it nobody has seen).
+/// Empty: none. Never negative, so the Euclidean heuristic stays admissible.
+using WaySurcharge = std::function<double(const geometry::Point& from, const geometry::Point& to)>;
 
 /// Search state, reusable across searches of any graph; not shared between threads.
 class SearchScratch {
@@ -133,18 +138,20 @@ class AStarSearch {
   /// Plans from `start` to `goal`. A start or goal inside an obstacle is snapped to the nearest
   /// boundary point and flagged; one off a bounded map or not finite is refused with a status. With a
   /// preference the result's cost is still the true one (no discount), and the path may be the preferred
-  /// one where another is shorter by less than about the discount on the preferred arcs.
+  /// one where another is shorter by less than about the discount on the preferred arcs. A surcharge adds
+  /// to every stretch it prices (robot links, arcs, goal links) and is part of the cost reported.
   static SearchResult run(const SearchGraph& graph, const ObstacleSet& obstacles,
                           const geometry::Point& start, const geometry::Point& goal, SearchScratch& scratch,
-                          const RoutePreference& preference = {});
+                          const RoutePreference& preference = {}, const WaySurcharge& surcharge = {});
 };
 
 /// Convenience wrapper around AStarSearch::run.
 inline SearchResult findPath(const SearchGraph& graph, const ObstacleSet& obstacles,
                              const geometry::Point& start, const geometry::Point& goal,
-                             SearchScratch& scratch, const RoutePreference& preference = {})
+                             SearchScratch& scratch, const RoutePreference& preference = {},
+                             const WaySurcharge& surcharge = {})
 {
-  return AStarSearch::run(graph, obstacles, start, goal, scratch, preference);
+  return AStarSearch::run(graph, obstacles, start, goal, scratch, preference, surcharge);
 }
 
 }  // namespace ifar::graph

@@ -21,6 +21,11 @@ struct GraphSettings {
   /// ... but all of them together at most this many metres less, from the route's first arcs on (0: no
   /// cap). A fraction of a long route alone was too much (docs/graph.md, Global search 5.).
   double route_preference_cap_m = 0.0;
+  /// Each metre of a way through space no scan has looked at costs this much more (0 = off): unseen space
+  /// is attemptable, but a way through it is a guess, and a seen way of the same length is not.
+  double unseen_cost = 0.0;
+  /// A scan looks this far (metres) for unseen_cost's map of what was seen.
+  double seen_range_m = 15.0;
 };
 
 /// Reads the `graph` section (`node` is that section). Every key is optional with the defaults above;

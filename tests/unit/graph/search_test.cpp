@@ -238,6 +238,54 @@ TEST(Search, ThePreviousRouteStaysUntilAnotherIsClearlyShorter)
   EXPECT_EQ(routeOf(stale), routeOf(shortest));
 }
 
+TEST(Search, ASurchargeOnOneSideTurnsTheRouteToTheOther)
+{
+  // The block of the test above: the shorter side is 0.17 m shorter than the other.
+  const PriorMap prior = buildPriorMap(mapFromRows({".....", ".@@@.", ".@@@.", ".@@@.", "....."}), 0.0);
+  const SearchGraph graph = SearchGraph::fromDvGraph(prior.graph);
+  SearchScratch scratch;
+  const Point start(0, 2.45);
+  const Point goal(5, 2.45);
+  const SearchResult shortest = findPath(graph, prior.obstacles, start, goal, scratch);
+  const SearchResult other_side = findPath(graph, prior.obstacles, Point(0, 2.55), Point(5, 2.55), scratch);
+  ASSERT_EQ(shortest.status, SearchStatus::Found);
+  ASSERT_EQ(shortest.path.size(), 4U);
+  const double long_way = 2.0 * std::hypot(1.0, 1.55) + 3.0;
+
+  // 0.2 m on each of the three stretches that touch the shorter side's corners (as unseen space would
+  // cost there): more than the 0.17 m it is shorter by.
+  const Point corner_a = shortest.path[1].position;
+  const Point corner_b = shortest.path[2].position;
+  const auto on_shorter_side = [&](const Point& from, const Point& to) {
+    const bool touches = (from - corner_a).norm() < 1e-9 || (from - corner_b).norm() < 1e-9 ||
+                         (to - corner_a).norm() < 1e-9 || (to - corner_b).norm() < 1e-9;
+    return touches ? 0.2 : 0.0;
+  };
+  const SearchResult turned = findPath(graph, prior.obstacles, start, goal, scratch, {}, on_shorter_side);
+  ASSERT_EQ(turned.status, SearchStatus::Found);
+  EXPECT_EQ(routeOf(turned), routeOf(other_side));
+  EXPECT_NEAR(turned.length, long_way, 1e-9);
+  EXPECT_NEAR(turned.cost, long_way, 1e-9);
+
+  // A surcharge on every stretch (the robot's link, the edge, the goal's link) is in the cost, not the
+  // length; a negative one counts as none.
+  const SearchResult everywhere = findPath(graph, prior.obstacles, start, goal, scratch, {},
+                                           [](const Point&, const Point&) { return 0.5; });
+  EXPECT_EQ(routeOf(everywhere), routeOf(shortest));
+  EXPECT_NEAR(everywhere.cost, shortest.cost + 1.5, 1e-9);
+  EXPECT_NEAR(everywhere.length, shortest.length, 1e-9);
+  const SearchResult negative = findPath(graph, prior.obstacles, start, goal, scratch, {},
+                                         [](const Point&, const Point&) { return -5.0; });
+  EXPECT_NEAR(negative.cost, shortest.cost, 1e-9);
+
+  // Preferring the shorter side by half its 3 m edge outweighs the surcharge: the route stays, and the
+  // cost reported is the true one, surcharge included.
+  const SearchResult kept = findPath(graph, prior.obstacles, start, goal, scratch,
+                                     RoutePreference{routeOf(shortest), 0.5}, on_shorter_side);
+  EXPECT_EQ(routeOf(kept), routeOf(shortest));
+  EXPECT_NEAR(kept.cost, shortest.cost + 0.6, 1e-9);
+}
+
 TEST(Search, ScratchReusedAcrossGraphs)
 {
   const PriorMap small = buildPriorMap(mapFromRows({"...", ".@.", "..."}), 0.0);

@@ -446,6 +446,53 @@ TEST(PlannerCore, DrivingOnAlongATunnelTheRouteDoesNotTurnBackWhereTheLayerCutsT
   EXPECT_GT(std::count(sixty.begin(), sixty.end(), true), 0);
 }
 
+/// A wall along x = 5 (y -12 .. 8) between the vehicle and the goal (10, -2), which lies as far from
+/// either end. The vehicle drives 8 m north from (0, -8) to about (0, -0.6): the way round the north end
+/// is 2.5 m shorter, but the vehicle never came within 6 m of its far part; it passed by the start of
+/// the way south.
+std::vector<FrameInput> wallBetweenFrames()
+{
+  sim::World world;
+  world.name = "wall between";
+  sim::StaticObstacle wall;
+  wall.name = "wall";
+  wall.outline = {{5.0, -12.0}, {5.2, -12.0}, {5.2, 8.0}, {5.0, 8.0}};
+  wall.height_m = 2.0;
+  world.obstacles.push_back(wall);
+  world.start = geometry::Pose2{0.0, -8.0, 0.5 * M_PI};
+  world.goals.push_back(sim::Goal{"east", geometry::Point(10.0, -2.0)});
+  sim::updateBounds(world);
+  FrameAssembler assembler{InputSettings{}};
+  return testing::feedAll(testing::recordSimulation(world, 8.0, 1.0), assembler);
+}
+
+TEST(PlannerCore, WithAnUnseenCostAWayThroughSeenSpaceBeatsAShorterGuess)
+{
+  const std::vector<FrameInput> frames = wallBetweenFrames();
+  ASSERT_GE(frames.size(), 40U);
+  for (const double unseen_cost : {0.0, 2.0}) {
+    PlannerSettings settings;
+    settings.graph.unseen_cost = unseen_cost;
+    settings.graph.seen_range_m = 6.0;
+    Planner planner{settings};
+    ASSERT_TRUE(planner.setGoal(Goal{1, geometry::Point(10.0, -2.0)}));
+    FrameResult last;
+    for (const FrameInput& frame : frames) {
+      last = planner.processFrame(frame);
+    }
+    ASSERT_TRUE(last.path.valid) << last.status.message;
+    ASSERT_GE(last.path.waypoints.size(), 3U);
+    const geometry::Point first_step = last.path.waypoints[1].position - last.path.waypoints[0].position;
+    if (unseen_cost > 0.0) {
+      EXPECT_LT(first_step.y(), 0.0) << "round the south end, by what was seen";
+      EXPECT_GT(last.path.cost, last.path.length_m + 20.0) << "twice the unseen way behind the wall";
+    } else {
+      EXPECT_GT(first_step.y(), 0.0) << "round the shorter north end";
+      EXPECT_NEAR(last.path.cost, last.path.length_m, 1e-9);
+    }
+  }
+}
+
 TEST(PlannerFrameAssembler, BadPosesAreRefusedWithAReason)
 {
   FrameAssembler assembler{InputSettings{}};
