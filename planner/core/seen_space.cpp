@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace ifar::planner {
 
@@ -11,6 +12,8 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 /// The grid grows by at least this much on a side, so a vehicle driving on does not copy it every frame.
 constexpr double kGrowthMarginM = 32.0;
+/// At most this many cells (16 MB; 4 km^2 at 0.5 m).
+constexpr double kMaxCells = 16.0e6;
 
 }  // namespace
 
@@ -24,11 +27,24 @@ void SeenSpace::cover(const geometry::Point& minimum, const geometry::Point& max
       maximum.x() <= current_max.x() && maximum.y() <= current_max.y()) {
     return;
   }
-  geometry::Point low = minimum - geometry::Point::Constant(kGrowthMarginM);
-  geometry::Point high = maximum + geometry::Point::Constant(kGrowthMarginM);
+  const geometry::Point new_low = minimum - geometry::Point::Constant(kGrowthMarginM);
+  const geometry::Point new_high = maximum + geometry::Point::Constant(kGrowthMarginM);
+  geometry::Point low = new_low;
+  geometry::Point high = new_high;
   if (columns_ > 0) {
     low = low.cwiseMin(origin_);
     high = high.cwiseMax(current_max);
+  }
+  const double kept_cells = ((high.x() - low.x()) / cell_size_m_) * ((high.y() - low.y()) / cell_size_m_);
+  if (kept_cells > kMaxCells) {
+    // A view this far from the last ones (a site of many kilometres, or a pose jump) starts a new grid:
+    // what was seen before is forgotten rather than the memory exhausted.
+    low = new_low;
+    high = new_high;
+    cells_.clear();
+    columns_ = 0;
+    rows_ = 0;
+    seen_cells_ = 0;
   }
   low = (low / cell_size_m_).array().floor().matrix() * cell_size_m_;
   const int columns = static_cast<int>(std::ceil((high.x() - low.x()) / cell_size_m_));
@@ -46,29 +62,30 @@ void SeenSpace::cover(const geometry::Point& minimum, const geometry::Point& max
   rows_ = rows;
 }
 
+std::optional<std::size_t> SeenSpace::indexOf(const geometry::Point& point) const
+{
+  const double column = std::floor((point.x() - origin_.x()) / cell_size_m_);
+  const double row = std::floor((point.y() - origin_.y()) / cell_size_m_);
+  if (!(column >= 0.0 && row >= 0.0 && column < columns_ && row < rows_)) {
+    return std::nullopt;
+  }
+  return static_cast<std::size_t>(row) * static_cast<std::size_t>(columns_) +
+         static_cast<std::size_t>(column);
+}
+
 void SeenSpace::mark(const geometry::Point& point)
 {
-  const int column = static_cast<int>(std::floor((point.x() - origin_.x()) / cell_size_m_));
-  const int row = static_cast<int>(std::floor((point.y() - origin_.y()) / cell_size_m_));
-  if (column < 0 || row < 0 || column >= columns_ || row >= rows_) {
-    return;
-  }
-  std::uint8_t& cell = cells_[static_cast<std::size_t>(row) * static_cast<std::size_t>(columns_) +
-                              static_cast<std::size_t>(column)];
-  if (cell == 0) {
-    cell = 1;
+  const std::optional<std::size_t> index = indexOf(point);
+  if (index && cells_[*index] == 0) {
+    cells_[*index] = 1;
     ++seen_cells_;
   }
 }
 
 bool SeenSpace::seen(const geometry::Point& point) const
 {
-  const double column = std::floor((point.x() - origin_.x()) / cell_size_m_);
-  const double row = std::floor((point.y() - origin_.y()) / cell_size_m_);
-  if (!(column >= 0.0 && row >= 0.0 && column < columns_ && row < rows_)) {
-    return false;
-  }
-  return seenCell(static_cast<int>(column), static_cast<int>(row));
+  const std::optional<std::size_t> index = indexOf(point);
+  return index && cells_[*index] != 0;
 }
 
 bool SeenSpace::seenCell(int column, int row) const

@@ -4,7 +4,9 @@
 // a guess: a room entered for its unseen far wall is often left again by the same door. With a price on
 // the unseen length of a way, a way through what was seen wins over an equally short guess.
 
+#include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "common/geometry/point.hpp"
@@ -20,7 +22,8 @@ class SeenSpace {
   /// Marks what the vehicle at `viewpoint` sees of `layer` within `range_m`: rays fan out from it until an
   /// occupied (inflated) layer cell stops them; that cell counts as seen too. Outside the layer's raster
   /// nothing was returned, so rays go on to the range. A viewpoint inside an obstacle's inflation (the
-  /// layer's `inflation_m`) sees out of it.
+  /// layer's `inflation_m`) sees out of it. The grid grows to at most 16 million cells (4 km^2); a view
+  /// that would take it beyond (a pose jump) starts it afresh.
   void markView(const perception::LocalLayer& layer, const geometry::Point& viewpoint, double range_m,
                 double inflation_m);
 
@@ -33,6 +36,8 @@ class SeenSpace {
  private:
   /// Grows the grid (never shrinks) to hold the box [minimum, maximum].
   void cover(const geometry::Point& minimum, const geometry::Point& maximum);
+  /// Index of the cell holding `point`; empty outside the grid.
+  std::optional<std::size_t> indexOf(const geometry::Point& point) const;
   void mark(const geometry::Point& point);
   bool seenCell(int column, int row) const;
 

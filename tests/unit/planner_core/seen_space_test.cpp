@@ -70,6 +70,19 @@ TEST(SeenSpace, AViewpointInsideTheInflationSeesOutButNotThroughTheWall)
   EXPECT_FALSE(stopped.seen(Point(0.0, 0.0)));
 }
 
+TEST(SeenSpace, AViewKilometresAwayStartsTheGridAfresh)
+{
+  const perception::LocalLayer layer = wallLayer();
+  SeenSpace seen;
+  seen.markView(layer, Point(0.0, 0.0), 6.0, 0.35);
+  const std::size_t first = seen.seenCells();
+  EXPECT_GT(first, 100U);
+  seen.markView(layer, Point(5000.0, 5000.0), 6.0, 0.35);
+  EXPECT_TRUE(seen.seen(Point(5001.0, 5000.0)));
+  EXPECT_FALSE(seen.seen(Point(-1.0, 0.0))) << "forgotten rather than a grid of 5 km x 5 km";
+  EXPECT_LT(seen.seenCells(), 2 * first);
+}
+
 TEST(SeenSpace, BadViewsMarkNothing)
 {
   const perception::LocalLayer layer = wallLayer();
