@@ -351,12 +351,16 @@ SearchResult AStarSearch::run(const SearchGraph& graph, const ObstacleSet& obsta
   const auto preferred = [&](std::uint32_t from, std::uint32_t to) {
     return preferring && scratch.preferred_next_[from] == to;
   };
+  const bool surcharged = static_cast<bool>(surcharge);
   const auto surchargeOf = [&](const geometry::Point& from, const geometry::Point& to) {
-    return surcharge ? std::max(0.0, surcharge(from, to)) : 0.0;
+    return surcharged ? std::max(0.0, surcharge(from, to)) : 0.0;
   };
   const auto arcCost = [&](std::uint32_t from, std::uint32_t arc) {
     const std::uint32_t to = graph.targets_[arc];
-    const double cost = graph.costs_[arc] + surchargeOf(graph.positions_[from], graph.positions_[to]);
+    double cost = graph.costs_[arc];
+    if (surcharged) {
+      cost += surchargeOf(graph.positions_[from], graph.positions_[to]);
+    }
     if (!preferred(from, to)) {
       return cost;
     }
