@@ -507,9 +507,11 @@ SearchResult AStarSearch::run(const SearchGraph& graph, const ObstacleSet& obsta
       std::optional<std::uint32_t> taken;
       const bool linked_to_robot = scratch.parent_[from] == start_index;
       for (std::uint32_t arc = graph.offsets_[from]; arc < graph.offsets_[from + 1]; ++arc) {
+        if (graph.targets_[arc] != vertex) {
+          continue;  // only arcs to this vertex are costed (a surcharge walks the arc's cells)
+        }
         const double cost = linked_to_robot ? startArcCost(from, arc) : arcCost(from, arc);
-        if (graph.targets_[arc] == vertex &&
-            std::abs(scratch.states_[from].cost + cost - scratch.states_[vertex].cost) < 1e-9 &&
+        if (std::abs(scratch.states_[from].cost + cost - scratch.states_[vertex].cost) < 1e-9 &&
             (!taken ||
              (graph.interaction_[*taken] == kNoInteraction && graph.interaction_[arc] != kNoInteraction))) {
           taken = arc;  // the first interaction arc that gives the cost, else the first arc that does
