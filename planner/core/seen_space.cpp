@@ -69,6 +69,11 @@ std::optional<std::size_t> SeenSpace::indexOf(const geometry::Point& point) cons
   if (!(column >= 0.0 && row >= 0.0 && column < columns_ && row < rows_)) {
     return std::nullopt;
   }
+  return cellIndex(static_cast<int>(column), static_cast<int>(row));
+}
+
+std::size_t SeenSpace::cellIndex(int column, int row) const
+{
   return static_cast<std::size_t>(row) * static_cast<std::size_t>(columns_) +
          static_cast<std::size_t>(column);
 }
@@ -93,8 +98,7 @@ bool SeenSpace::seenCell(int column, int row) const
   if (column < 0 || row < 0 || column >= columns_ || row >= rows_) {
     return false;
   }
-  return cells_[static_cast<std::size_t>(row) * static_cast<std::size_t>(columns_) +
-                static_cast<std::size_t>(column)] != 0;
+  return cells_[cellIndex(column, row)] != 0;
 }
 
 void SeenSpace::markView(const perception::LocalLayer& layer, const geometry::Point& viewpoint,

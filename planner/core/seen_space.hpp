@@ -38,6 +38,8 @@ class SeenSpace {
   void cover(const geometry::Point& minimum, const geometry::Point& maximum);
   /// Index of the cell holding `point`; empty outside the grid.
   std::optional<std::size_t> indexOf(const geometry::Point& point) const;
+  /// Index of a cell inside the grid.
+  std::size_t cellIndex(int column, int row) const;
   void mark(const geometry::Point& point);
   bool seenCell(int column, int row) const;
 
