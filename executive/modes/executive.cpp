@@ -222,14 +222,17 @@ void Executive::absorbPath(const Inputs& inputs)
       return;
     case Task::Approach:
     case Task::Push: {
-      const bool same_goal = incoming.valid && incoming.goal_id == goal_id_;
+      const bool same_goal = incoming.goal_id == goal_id_;
       const bool still_pushed =
-          same_goal &&
+          same_goal && incoming.valid &&
           std::any_of(incoming.push_plans.begin(), incoming.push_plans.end(),
                       [this](const PushPlan& plan) { return plan.object_id == active_plan_.object_id; });
       // A push under way is finished (through its release) even when the replanned path no longer
-      // needs it (the moved object may already free the passage or be tracked under a new id):
-      // dropping it with the object on the bumper leaves the follower boxed in against it.
+      // needs it (the moved object may already free the passage or be tracked under a new id), or
+      // when the replan finds no path at all (the object on the move, half way into a corridor, can
+      // close the passage in one frame): dropping it with the object on the bumper leaves the vehicle
+      // boxed in behind it (bench Willow t7 with the walls known: the new approach's stand-off point
+      // was behind the vehicle in a 1.1 m corridor, and the object was given up as unpushable).
       if (still_pushed || (same_goal && task_ == Task::Push)) {
         // Keep executing the plan in hand; the new path is used once the push is over.
         path_ = incoming;
@@ -760,6 +763,13 @@ void Executive::stepPush(Cycle& cycle)
   if (result.phase == PushPhase::Finished) {
     ++pushes_;
     rememberPushedObject(object_position);
+    if (!path_.valid || path_.waypoints.empty()) {
+      // The replan during the push found no path: stop until the planner has one.
+      adoptPath(path_);
+      cycle.reason = fmt::format("push of object {} finished; {}", active_plan_.object_id, task_reason_);
+      cycle.desired = {};
+      return;
+    }
     const int push_waypoint = pushWaypointIndex(active_plan_.object_id);
     waypoint_index_ = push_waypoint >= 0 ? static_cast<std::size_t>(push_waypoint)
                                          : std::min<std::size_t>(1, path_.waypoints.size() - 1);

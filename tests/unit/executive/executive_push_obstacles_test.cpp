@@ -310,6 +310,45 @@ TEST_F(ExecutivePushObstaclesTest, APushUnderWayFinishesWhenTheReplannedPathDrop
   EXPECT_NEAR(object_.x(), 3.15, 0.1);
 }
 
+TEST_F(ExecutivePushObstaclesTest, APushUnderWayFinishesWhenTheReplanFindsNoPathThenTheVehicleStops)
+{
+  Output output;
+  for (int index = 0; index < 500 && output.status.mode != Mode::Push; ++index) {
+    output = cycle({});
+  }
+  ASSERT_EQ(output.status.mode, Mode::Push);
+  // The object on the move closes the passage in one frame: the planner reports no path.
+  const Path pushing = path_;
+  path_.sequence = 2;
+  path_.utime = now_us_;
+  path_.valid = false;
+  path_.push_plans.clear();
+  path_.waypoints.clear();
+  std::vector<Mode> modes;
+  for (int index = 0; index < 1500 && output.status.pushes == 0; ++index) {
+    output = cycle({});
+    modes.push_back(output.status.mode);
+  }
+  EXPECT_EQ(output.status.pushes, 1);
+  EXPECT_NEAR(object_.x(), 3.15, 0.1);
+  const auto first_other =
+      std::find_if(modes.begin(), modes.end(), [](Mode mode) { return mode != Mode::Push; });
+  EXPECT_EQ(first_other, modes.end() - 1);  // pushed through to the release
+  EXPECT_EQ(output.status.mode, Mode::Stop);
+  EXPECT_TRUE(output.command.isZero());
+  EXPECT_NE(output.status.reason.find("planner reports no path to goal 5"), std::string::npos)
+      << output.status.reason;
+
+  // The next plan with a path gets the vehicle going again.
+  path_ = pushing;
+  path_.sequence = 3;
+  path_.utime = now_us_ + kCycleUs;
+  path_.push_plans.clear();
+  path_.waypoints = {waypoint(pose_.x, WaypointKind::Free), waypoint(6.0, WaypointKind::Free)};
+  output = cycle({});
+  EXPECT_EQ(output.status.mode, Mode::Follow);
+}
+
 TEST_F(ExecutivePushObstaclesTest, AfterAnUnpushableObjectTheVehicleBacksAwayBeforeFollowing)
 {
   Output output;
