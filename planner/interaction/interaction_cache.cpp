@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "planner/interaction/convex_polygon.hpp"
 
@@ -10,9 +11,23 @@ namespace ifar::interaction {
 using geometry::Point;
 using geometry::Polygon;
 
+namespace {
+
+std::size_t foundCount(const ObjectInteractions& interactions)
+{
+  return static_cast<std::size_t>(
+      std::count_if(interactions.plans.begin(), interactions.plans.end(),
+                    [](const PairPlan& plan) { return plan.plan.status == PlanStatus::Found; }));
+}
+
+}  // namespace
+
 InteractionCache::InteractionCache(const InteractionSettings& settings, double tolerance_m,
-                                   double area_tolerance_m2)
-    : settings_(settings), tolerance_m_(tolerance_m), area_tolerance_m2_(area_tolerance_m2)
+                                   double area_tolerance_m2, double keep_radius_m)
+    : settings_(settings),
+      tolerance_m_(tolerance_m),
+      area_tolerance_m2_(area_tolerance_m2),
+      keep_radius_m_(keep_radius_m)
 {
 }
 
@@ -62,16 +77,28 @@ InteractionCache::Signature InteractionCache::signatureOf(const LocalScene& scen
   return signature;
 }
 
-bool InteractionCache::same(const Signature& first, const Signature& second) const
+bool InteractionCache::sameSurroundings(const Signature& first, const Signature& second) const
 {
-  const auto close = [](double a, double b, double tolerance) { return std::abs(a - b) <= tolerance; };
-  return (first.object_centroid - second.object_centroid).norm() <= tolerance_m_ &&
-         close(first.object_area, second.object_area,
-               0.1 * std::max(first.object_area, second.object_area)) &&
-         close(first.neighbour_area, second.neighbour_area, area_tolerance_m2_) &&
+  return std::abs(first.neighbour_area - second.neighbour_area) <= area_tolerance_m2_ &&
          (first.neighbour_centroid - second.neighbour_centroid).norm() <= tolerance_m_ &&
          first.physics.ground_friction == second.physics.ground_friction &&
          first.physics.mass_kg == second.physics.mass_kg;
+}
+
+bool InteractionCache::same(const Signature& first, const Signature& second) const
+{
+  return (first.object_centroid - second.object_centroid).norm() <= tolerance_m_ &&
+         std::abs(first.object_area - second.object_area) <=
+             0.1 * std::max(first.object_area, second.object_area) &&
+         sameSurroundings(first, second);
+}
+
+bool InteractionCache::keepsPlans(const Entry& entry, const Signature& signature,
+                                  const ObjectInteractions& fresh) const
+{
+  return entry.valid && sameSurroundings(entry.signature, signature) &&
+         (signature.object_centroid - entry.planned_centroid).norm() <= keep_radius_m_ &&
+         foundCount(fresh) < foundCount(entry.interactions);
 }
 
 bool InteractionCache::stale(std::int64_t object_id, const LocalScene& scene, std::size_t movable_index,
@@ -89,8 +116,17 @@ const ObjectInteractions& InteractionCache::interactionsFor(std::int64_t object_
   replanned = stale(object_id, scene, movable_index, physics);
   Entry& entry = entries_[object_id];
   if (replanned) {
-    entry.signature = signatureOf(scene, movable_index, physics);
-    entry.interactions = planObjectInteractions(scene, movable_index, physics, settings_);
+    const Signature signature = signatureOf(scene, movable_index, physics);
+    ObjectInteractions fresh = planObjectInteractions(scene, movable_index, physics, settings_);
+    if (keepsPlans(entry, signature, fresh)) {
+      // This view is taken in (the next one like it is not planned again); its poorer plans are not.
+      entry.signature = signature;
+      replanned = false;
+      return entry.interactions;
+    }
+    entry.signature = signature;
+    entry.interactions = std::move(fresh);
+    entry.planned_centroid = signature.object_centroid;
     entry.valid = true;
   }
   return entry.interactions;

@@ -16,14 +16,18 @@ class InteractionCache {
   /// Changes smaller than `tolerance_m` (object and obstacle centroid shifts) and `area_tolerance_m2`
   /// (obstacle area in the analysis window) reuse the plans.
   explicit InteractionCache(const InteractionSettings& settings, double tolerance_m = 0.1,
-                            double area_tolerance_m2 = 0.5);
+                            double area_tolerance_m2 = 0.5, double keep_radius_m = 0.3);
 
   /// True when interactionsFor() would have to plan (unknown object, moved, new surroundings or physics).
   bool stale(std::int64_t object_id, const LocalScene& scene, std::size_t movable_index,
              const ObjectPhysics& physics) const;
 
-  /// The object's interactions, planned now when stale(); `replanned` tells which. The reference stays
-  /// valid until the next call for the same object or invalidate()/forget().
+  /// The object's interactions, planned now when stale(); `replanned` tells whether the answer is new.
+  /// A replan that finds fewer pushes than the plans in hand is not taken while only the object's own
+  /// outline changed (same physics, same surroundings, centroid within `keep_radius_m` of where those
+  /// plans were found): a part of the object hidden in one view and seen in the next must not make a
+  /// push come and go frame by frame. The touch decides such a push (AFFORDANCE, then invalidate()).
+  /// The reference stays valid until the next call for the same object or invalidate()/forget().
   const ObjectInteractions& interactionsFor(std::int64_t object_id, const LocalScene& scene,
                                             std::size_t movable_index, const ObjectPhysics& physics,
                                             bool& replanned);
@@ -48,16 +52,22 @@ class InteractionCache {
   struct Entry {
     Signature signature;
     ObjectInteractions interactions;
+    /// The object's centroid when `interactions` were planned (a kept view does not move it).
+    geometry::Point planned_centroid = geometry::Point::Zero();
     bool valid = false;
   };
 
   Signature signatureOf(const LocalScene& scene, std::size_t movable_index,
                         const ObjectPhysics& physics) const;
   bool same(const Signature& first, const Signature& second) const;
+  bool sameSurroundings(const Signature& first, const Signature& second) const;
+  /// True when `entry` (valid) keeps its plans against a replan with `fresh` and its `signature`.
+  bool keepsPlans(const Entry& entry, const Signature& signature, const ObjectInteractions& fresh) const;
 
   InteractionSettings settings_;
   double tolerance_m_;
   double area_tolerance_m2_;
+  double keep_radius_m_;
   std::map<std::int64_t, Entry> entries_;
 };
 

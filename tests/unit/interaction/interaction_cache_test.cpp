@@ -1,5 +1,8 @@
 #include "planner/interaction/interaction_cache.hpp"
 
+#include <algorithm>
+#include <cstddef>
+
 #include <gtest/gtest.h>
 
 #include "tests/unit/interaction/scenes.hpp"
@@ -70,6 +73,77 @@ TEST(InteractionCacheTest, ObstaclesSplitDifferentlyReuseThePlans)
   // A raster cell more or less along a wall (0.15 m x 0.15 m) is noise too.
   pieces.background.push_back(test::rectangle(0.5, 3.0, 0.65, 3.15));
   EXPECT_FALSE(cache.stale(5, pieces, 0, physics));
+}
+
+std::size_t foundPushes(const ObjectInteractions& interactions)
+{
+  return static_cast<std::size_t>(
+      std::count_if(interactions.plans.begin(), interactions.plans.end(),
+                    [](const PairPlan& plan) { return plan.plan.status == PlanStatus::Found; }));
+}
+
+/// The doorway's box seen as a bar 7 m long (inflated) along the door's axis, centred where the box is:
+/// no push clears the door. The walls inside the cache's window are the same as for the box.
+LocalScene barThroughTheDoorScene()
+{
+  LocalScene scene = test::doorwayScene();
+  scene.movable[0] = test::rectangle(-3.5, -0.8, 3.5, 0.8);
+  return scene;
+}
+
+TEST(InteractionCacheTest, AViewOfTheUnmovedObjectWithFewerPushesKeepsThePlansInHand)
+{
+  InteractionCache cache(defaultSettings());
+  const ObjectPhysics physics{0.4, 20.0};
+  bool replanned = false;
+  ASSERT_EQ(foundPushes(cache.interactionsFor(5, test::doorwayScene(), 0, physics, replanned)), 2U);
+  // Planned on its own, the bar has no push.
+  InteractionCache other(defaultSettings());
+  ASSERT_EQ(foundPushes(other.interactionsFor(5, barThroughTheDoorScene(), 0, physics, replanned)), 0U);
+
+  // Seen as the bar, the object has not moved and nothing else changed: the two pushes stay.
+  const LocalScene bar = barThroughTheDoorScene();
+  EXPECT_TRUE(cache.stale(5, bar, 0, physics));
+  EXPECT_EQ(foundPushes(cache.interactionsFor(5, bar, 0, physics, replanned)), 2U);
+  EXPECT_FALSE(replanned);
+  EXPECT_FALSE(cache.stale(5, bar, 0, physics));  // that view is taken in: not planned again
+  // Seen whole again: planned again, the same two pushes.
+  EXPECT_EQ(foundPushes(cache.interactionsFor(5, test::doorwayScene(), 0, physics, replanned)), 2U);
+  EXPECT_TRUE(replanned);
+
+  // A bar reaching 1 m further east (centroid 0.5 m east) is an object that moved: its one push is taken.
+  LocalScene moved = barThroughTheDoorScene();
+  moved.movable[0] = test::rectangle(-3.5, -0.8, 4.5, 0.8);
+  EXPECT_EQ(foundPushes(cache.interactionsFor(5, moved, 0, physics, replanned)), 1U);
+  EXPECT_TRUE(replanned);
+}
+
+TEST(InteractionCacheTest, FewerPushesAreTakenWithNewSurroundingsNewPhysicsOrAfterInvalidate)
+{
+  const ObjectPhysics physics{0.4, 20.0};
+  bool replanned = false;
+  const auto planned_box = [&physics, &replanned]() {
+    InteractionCache cache(defaultSettings());
+    cache.interactionsFor(5, test::doorwayScene(), 0, physics, replanned);
+    return cache;
+  };
+  // A new obstacle (1 m^2) in the window.
+  LocalScene walled = barThroughTheDoorScene();
+  walled.background.push_back(test::rectangle(-5.0, -3.0, -4.0, -2.0));
+  InteractionCache cache = planned_box();
+  EXPECT_EQ(foundPushes(cache.interactionsFor(5, walled, 0, physics, replanned)), 0U);
+  EXPECT_TRUE(replanned);
+  // A new physics estimate (AFFORDANCE).
+  cache = planned_box();
+  EXPECT_EQ(
+      foundPushes(cache.interactionsFor(5, barThroughTheDoorScene(), 0, ObjectPhysics{0.4, 25.0}, replanned)),
+      0U);
+  EXPECT_TRUE(replanned);
+  // Invalidated (the touch said the estimate was wrong).
+  cache = planned_box();
+  cache.invalidate(5);
+  EXPECT_EQ(foundPushes(cache.interactionsFor(5, barThroughTheDoorScene(), 0, physics, replanned)), 0U);
+  EXPECT_TRUE(replanned);
 }
 
 }  // namespace
