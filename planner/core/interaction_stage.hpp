@@ -40,7 +40,7 @@ struct InteractionFrame {
 struct InteractionStats {
   std::size_t candidates = 0;  // objects within reach
   std::size_t processed = 0;   // asked the cache this frame (the rest wait for the next frame)
-  std::size_t replanned = 0;   // cache misses: connectivity and push search run
+  std::size_t replanned = 0;   // cache misses whose new plans were taken
   std::size_t reinserted = 0;  // edges put into the graph again
 };
 
@@ -67,7 +67,7 @@ class InteractionStage {
   interaction::ObjectPhysics physicsOf(std::int64_t object_id) const;
   bool unpushable(std::int64_t object_id) const;
   const StoredPush* push(std::uint32_t handle) const;
-  /// Plans the cache has made so far for the object (cache misses).
+  /// Plans the cache has taken so far for the object (cache misses, less the replans it kept plans against).
   std::size_t plansMade(std::int64_t object_id) const;
 
  private:

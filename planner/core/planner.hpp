@@ -137,7 +137,7 @@ class Planner {
   {
     return interaction_.physicsOf(object_id);
   }
-  /// How often interaction planning ran for the object (cache misses), for diagnostics and tests.
+  /// How often the object got new interaction plans (cache misses taken), for diagnostics and tests.
   std::size_t interactionPlans(std::int64_t object_id) const { return interaction_.plansMade(object_id); }
 
  private:
