@@ -110,14 +110,12 @@ void SeenSpace::markView(const perception::LocalLayer& layer, const geometry::Po
   cover(viewpoint - geometry::Point::Constant(range_m), viewpoint + geometry::Point::Constant(range_m));
   const perception::LayerGrid& grid = layer.grid;
   const auto occupied = [&](const geometry::Point& point) {
-    const auto cell = grid.cellOf(point);
-    if (!cell) {
+    const std::optional<std::size_t> index = grid.indexOf(point);
+    if (!index) {
       return false;
     }
-    const std::size_t index = static_cast<std::size_t>(cell->second) * static_cast<std::size_t>(grid.cells) +
-                              static_cast<std::size_t>(cell->first);
-    return (index < layer.background_occupancy.size() && layer.background_occupancy[index] != 0) ||
-           (index < layer.movable_occupancy.size() && layer.movable_occupancy[index] != 0);
+    return (*index < layer.background_occupancy.size() && layer.background_occupancy[*index] != 0) ||
+           (*index < layer.movable_occupancy.size() && layer.movable_occupancy[*index] != 0);
   };
   // Steps of half the finer of the two cells along each ray; rays close enough that neighbours at the
   // range are a cell apart.

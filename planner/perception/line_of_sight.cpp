@@ -3,7 +3,6 @@
 #include <cmath>
 #include <cstddef>
 #include <optional>
-#include <utility>
 
 namespace ifar::perception {
 
@@ -24,9 +23,8 @@ bool backgroundClearAlong(const LocalLayer& layer, const geometry::Point& from, 
   const auto steps = static_cast<long>(std::floor((length - 2.0 * skip_m) / step));
   for (long index = 0; index <= steps; ++index) {
     const double along = skip_m + static_cast<double>(index) * step;
-    const std::optional<std::pair<int, int>> cell = grid.cellOf(from + direction * along);
-    if (cell && layer.background_occupancy[static_cast<std::size_t>(cell->second) * cells +
-                                           static_cast<std::size_t>(cell->first)] != 0) {
+    const std::optional<std::size_t> cell = grid.indexOf(from + direction * along);
+    if (cell && layer.background_occupancy[*cell] != 0) {
       return false;
     }
   }

@@ -101,6 +101,16 @@ std::optional<std::pair<int, int>> LayerGrid::cellOf(const geometry::Point& poin
   return std::make_pair(static_cast<int>(column), static_cast<int>(row));
 }
 
+std::optional<std::size_t> LayerGrid::indexOf(const geometry::Point& point) const
+{
+  const std::optional<std::pair<int, int>> cell = cellOf(point);
+  if (!cell) {
+    return std::nullopt;
+  }
+  return static_cast<std::size_t>(cell->second) * static_cast<std::size_t>(cells) +
+         static_cast<std::size_t>(cell->first);
+}
+
 LayerGrid makeLayerGrid(const geometry::Point& centre, const PerceptionSettings& settings)
 {
   LayerGrid grid;

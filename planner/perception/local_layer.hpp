@@ -38,6 +38,9 @@ struct LayerGrid {
   geometry::Point cellCentre(int column, int row) const;
   /// The (column, row) of the cell holding `point`; empty outside the grid.
   std::optional<std::pair<int, int>> cellOf(const geometry::Point& point) const;
+  /// The row-major index (row * cells + column) of the cell holding `point`, as the layer's occupancy
+  /// vectors are laid out; empty outside the grid.
+  std::optional<std::size_t> indexOf(const geometry::Point& point) const;
   /// Size of one side in metres.
   double sideLength() const { return cells * cell_size_m; }
 };
