@@ -113,10 +113,10 @@ const ObjectInteractions& InteractionCache::interactionsFor(std::int64_t object_
                                                             std::size_t movable_index,
                                                             const ObjectPhysics& physics, bool& replanned)
 {
-  replanned = stale(object_id, scene, movable_index, physics);
-  Entry& entry = entries_[object_id];
+  const Signature signature = signatureOf(scene, movable_index, physics);
+  Entry& entry = entries_[object_id];  // a new object's entry is not valid: stale
+  replanned = !entry.valid || !same(entry.signature, signature);
   if (replanned) {
-    const Signature signature = signatureOf(scene, movable_index, physics);
     ObjectInteractions fresh = planObjectInteractions(scene, movable_index, physics, settings_);
     if (keepsPlans(entry, signature, fresh)) {
       // This view is taken in (the next one like it is not planned again); its poorer plans are not.
