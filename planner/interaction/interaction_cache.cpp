@@ -32,7 +32,8 @@ InteractionCache::InteractionCache(const InteractionSettings& settings, double t
 }
 
 InteractionCache::Signature InteractionCache::signatureOf(const LocalScene& scene, std::size_t movable_index,
-                                                          const ObjectPhysics& physics) const
+                                                          const ObjectPhysics& physics,
+                                                          const std::optional<Bounds>& window) const
 {
   Signature signature;
   signature.physics = physics;
@@ -42,14 +43,19 @@ InteractionCache::Signature InteractionCache::signatureOf(const LocalScene& scen
   const Polygon& object = scene.movable[movable_index];
   signature.object_centroid = geometry::centroid(object);
   signature.object_area = geometry::area(object);
-  Bounds window = boundsOf(object);
-  window.minimum -= Point::Constant(settings_.connectivity.window_margin_m);
-  window.maximum += Point::Constant(settings_.connectivity.window_margin_m);
-  const Polygon window_polygon{window.minimum, Point(window.maximum.x(), window.minimum.y()), window.maximum,
-                               Point(window.minimum.x(), window.maximum.y())};
+  if (window) {
+    signature.window = *window;
+  } else {
+    signature.window = boundsOf(object);
+    signature.window.minimum -= Point::Constant(settings_.connectivity.window_margin_m);
+    signature.window.maximum += Point::Constant(settings_.connectivity.window_margin_m);
+  }
+  const Bounds& bounds = signature.window;
+  const Polygon window_polygon{bounds.minimum, Point(bounds.maximum.x(), bounds.minimum.y()), bounds.maximum,
+                               Point(bounds.minimum.x(), bounds.maximum.y())};
   Point moment = Point::Zero();
   const auto add = [&](const Polygon& polygon) {
-    if (polygon.size() < 3 || !boundsOf(polygon).overlaps(window)) {
+    if (polygon.size() < 3 || !boundsOf(polygon).overlaps(bounds)) {
       return;
     }
     // The part inside the window (a non-convex obstacle by its hull: only a summary is needed).
@@ -93,12 +99,15 @@ bool InteractionCache::same(const Signature& first, const Signature& second) con
          sameSurroundings(first, second);
 }
 
-bool InteractionCache::keepsPlans(const Entry& entry, const Signature& signature,
-                                  const ObjectInteractions& fresh) const
+bool InteractionCache::keepsPlans(const Entry& entry, const LocalScene& scene, std::size_t movable_index,
+                                  const Signature& signature, const ObjectInteractions& fresh) const
 {
-  return entry.valid && sameSurroundings(entry.signature, signature) &&
-         (signature.object_centroid - entry.planned_centroid).norm() <= keep_radius_m_ &&
-         foundCount(fresh) < foundCount(entry.interactions);
+  // The surroundings are compared in the window the kept plans were found in: the view's own window
+  // grows and shrinks with the object's outline and takes in more or less wall with it.
+  return entry.valid && foundCount(fresh) < foundCount(entry.interactions) &&
+         (signature.object_centroid - entry.planned.object_centroid).norm() <= keep_radius_m_ &&
+         sameSurroundings(entry.planned,
+                          signatureOf(scene, movable_index, signature.physics, entry.planned.window));
 }
 
 bool InteractionCache::stale(std::int64_t object_id, const LocalScene& scene, std::size_t movable_index,
@@ -118,7 +127,7 @@ const ObjectInteractions& InteractionCache::interactionsFor(std::int64_t object_
   replanned = !entry.valid || !same(entry.signature, signature);
   if (replanned) {
     ObjectInteractions fresh = planObjectInteractions(scene, movable_index, physics, settings_);
-    if (keepsPlans(entry, signature, fresh)) {
+    if (keepsPlans(entry, scene, movable_index, signature, fresh)) {
       // This view is taken in (the next one like it is not planned again); its poorer plans are not.
       entry.signature = signature;
       replanned = false;
@@ -126,7 +135,7 @@ const ObjectInteractions& InteractionCache::interactionsFor(std::int64_t object_
     }
     entry.signature = signature;
     entry.interactions = std::move(fresh);
-    entry.planned_centroid = signature.object_centroid;
+    entry.planned = signature;
     entry.valid = true;
   }
   return entry.interactions;

@@ -6,7 +6,9 @@
 #include <cstddef>
 #include <cstdint>
 #include <map>
+#include <optional>
 
+#include "planner/interaction/convex_polygon.hpp"
 #include "planner/interaction/interaction_planner.hpp"
 
 namespace ifar::interaction {
@@ -24,10 +26,11 @@ class InteractionCache {
 
   /// The object's interactions, planned now when stale(); `replanned` tells whether the answer is new.
   /// A replan that finds fewer pushes than the plans in hand is not taken while only the object's own
-  /// outline changed (same physics, same surroundings, centroid within `keep_radius_m` of where those
-  /// plans were found): a part of the object hidden in one view and seen in the next must not make a
-  /// push come and go frame by frame. The touch decides such a push (AFFORDANCE, then invalidate()).
-  /// The reference stays valid until the next call for the same object or invalidate()/forget().
+  /// outline changed (same physics, centroid within `keep_radius_m` of where those plans were found, the
+  /// same surroundings in the window those plans were found in): a part of the object hidden in one view
+  /// and seen in the next must not make a push come and go frame by frame. The touch decides such a push
+  /// (AFFORDANCE, then invalidate()). The reference stays valid until the next call for the same object or
+  /// invalidate()/forget().
   const ObjectInteractions& interactionsFor(std::int64_t object_id, const LocalScene& scene,
                                             std::size_t movable_index, const ObjectPhysics& physics,
                                             bool& replanned);
@@ -48,21 +51,27 @@ class InteractionCache {
     double neighbour_area = 0.0;
     geometry::Point neighbour_centroid = geometry::Point::Zero();
     ObjectPhysics physics;
+    /// The analysis window the surroundings were summarised in.
+    Bounds window{geometry::Point::Zero(), geometry::Point::Zero()};
   };
   struct Entry {
     Signature signature;
     ObjectInteractions interactions;
-    /// The object's centroid when `interactions` were planned (a kept view does not move it).
-    geometry::Point planned_centroid = geometry::Point::Zero();
+    /// The view `interactions` were planned from (a kept view does not replace it).
+    Signature planned;
     bool valid = false;
   };
 
-  Signature signatureOf(const LocalScene& scene, std::size_t movable_index,
-                        const ObjectPhysics& physics) const;
+  /// The view's signature; its surroundings are summarised in `window`, by default the object's bounds
+  /// grown by the connectivity window margin (which moves with the object's outline).
+  Signature signatureOf(const LocalScene& scene, std::size_t movable_index, const ObjectPhysics& physics,
+                        const std::optional<Bounds>& window = std::nullopt) const;
   bool same(const Signature& first, const Signature& second) const;
   bool sameSurroundings(const Signature& first, const Signature& second) const;
-  /// True when `entry` (valid) keeps its plans against a replan with `fresh` and its `signature`.
-  bool keepsPlans(const Entry& entry, const Signature& signature, const ObjectInteractions& fresh) const;
+  /// True when `entry` (valid) keeps its plans against `fresh`, planned from the view `signature` of
+  /// object `movable_index` in `scene`.
+  bool keepsPlans(const Entry& entry, const LocalScene& scene, std::size_t movable_index,
+                  const Signature& signature, const ObjectInteractions& fresh) const;
 
   InteractionSettings settings_;
   double tolerance_m_;

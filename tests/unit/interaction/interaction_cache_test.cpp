@@ -118,6 +118,22 @@ TEST(InteractionCacheTest, AViewOfTheUnmovedObjectWithFewerPushesKeepsThePlansIn
   EXPECT_TRUE(replanned);
 }
 
+TEST(InteractionCacheTest, TheSurroundingsOfAKeptViewAreComparedInTheWindowThePlansWereFoundIn)
+{
+  // A wall 5 m east of the door: outside the box's window (its bounds grown by 3 m), inside the bar's.
+  LocalScene box = test::doorwayScene();
+  box.background.push_back(test::rectangle(5.0, -1.0, 6.0, 1.0));
+  LocalScene bar = barThroughTheDoorScene();
+  bar.background = box.background;
+  InteractionCache cache(defaultSettings());
+  const ObjectPhysics physics{0.4, 20.0};
+  bool replanned = false;
+  ASSERT_EQ(foundPushes(cache.interactionsFor(5, box, 0, physics, replanned)), 2U);
+  // The bar's longer outline takes in 2 m^2 more wall; where the pushes were found, nothing changed.
+  EXPECT_EQ(foundPushes(cache.interactionsFor(5, bar, 0, physics, replanned)), 2U);
+  EXPECT_FALSE(replanned);
+}
+
 TEST(InteractionCacheTest, FewerPushesAreTakenWithNewSurroundingsNewPhysicsOrAfterInvalidate)
 {
   const ObjectPhysics physics{0.4, 20.0};
@@ -127,9 +143,9 @@ TEST(InteractionCacheTest, FewerPushesAreTakenWithNewSurroundingsNewPhysicsOrAft
     cache.interactionsFor(5, test::doorwayScene(), 0, physics, replanned);
     return cache;
   };
-  // A new obstacle (1 m^2) in the window.
+  // A new obstacle (1 m^2) in the window the box's plans were found in.
   LocalScene walled = barThroughTheDoorScene();
-  walled.background.push_back(test::rectangle(-5.0, -3.0, -4.0, -2.0));
+  walled.background.push_back(test::rectangle(-3.0, -3.0, -2.0, -2.0));
   InteractionCache cache = planned_box();
   EXPECT_EQ(foundPushes(cache.interactionsFor(5, walled, 0, physics, replanned)), 0U);
   EXPECT_TRUE(replanned);
