@@ -1,10 +1,11 @@
 #include "common/geometry/pose2.hpp"
 
+#include "common/geometry/angle.hpp"
+
 namespace ifar::geometry {
 
 double wrapAngle(double radians)
 {
-  constexpr double kPi = 3.14159265358979323846;
   // remainder() lands in [-pi, pi]; the half-open range wants +pi for the boundary.
   const double wrapped = std::remainder(radians, 2.0 * kPi);
   return wrapped <= -kPi ? wrapped + 2.0 * kPi : wrapped;

@@ -3,11 +3,12 @@
 #include <array>
 #include <cmath>
 
+#include "common/geometry/angle.hpp"
+
 namespace ifar::velodyne {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kRadiansPerAzimuthUnit = kPi / 18000.0;
+constexpr double kRadiansPerAzimuthUnit = geometry::kPi / 18000.0;
 constexpr double kUnitsPerRevolution = kAzimuthUnitsPerRevolution;
 
 struct LaserTrigonometry {
@@ -19,7 +20,7 @@ LaserTrigonometry makeLaserTrigonometry()
 {
   LaserTrigonometry table;
   for (std::size_t laser = 0; laser < kLasers; ++laser) {
-    const double radians = kLaserElevationDegrees[laser] * kPi / 180.0;
+    const double radians = geometry::radiansFromDegrees(kLaserElevationDegrees[laser]);
     table.cos_elevation[laser] = std::cos(radians);
     table.sin_elevation[laser] = std::sin(radians);
   }

@@ -3,9 +3,11 @@
 
 #include <cmath>
 
+#include "common/geometry/angle.hpp"
+
 namespace ifar::executive {
 
-constexpr double kPi = 3.14159265358979323846;
+using geometry::kPi;
 
 /// Wraps to [-pi, pi] (std::remainder keeps it branch-free).
 inline double wrapToPi(double radians)

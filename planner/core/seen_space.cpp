@@ -5,11 +5,12 @@
 #include <limits>
 #include <optional>
 
+#include "common/geometry/angle.hpp"
+
 namespace ifar::planner {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 /// The grid grows by at least this much on a side, so a vehicle driving on does not copy it every frame.
 constexpr double kGrowthMarginM = 32.0;
 /// At most this many cells (16 MB; 4 km^2 at 0.5 m).
@@ -120,13 +121,13 @@ void SeenSpace::markView(const perception::LocalLayer& layer, const geometry::Po
   // Steps of half the finer of the two cells along each ray; rays close enough that neighbours at the
   // range are a cell apart.
   const double step = 0.5 * std::min(cell_size_m_, grid.cell_size_m);
-  const int rays = std::max(8, static_cast<int>(std::ceil(2.0 * kPi * range_m / cell_size_m_)));
+  const int rays = std::max(8, static_cast<int>(std::ceil(2.0 * geometry::kPi * range_m / cell_size_m_)));
   const int steps = static_cast<int>(std::ceil(range_m / step));
   // A vehicle inside an obstacle's inflation (squeezing past a wall) still sees out: a ray passes the
   // occupied cells it starts in, for no more than the inflation, so it does not pass the wall itself.
   const bool starts_occupied = occupied(viewpoint);
   for (int ray = 0; ray < rays; ++ray) {
-    const double angle = 2.0 * kPi * ray / rays;
+    const double angle = 2.0 * geometry::kPi * ray / rays;
     const geometry::Point direction(std::cos(angle), std::sin(angle));
     bool leaving = starts_occupied;
     for (int index = 0; index <= steps; ++index) {

@@ -9,6 +9,8 @@
 #include <queue>
 #include <unordered_map>
 
+#include "common/geometry/angle.hpp"
+
 namespace ifar::interaction {
 
 using geometry::Point;
@@ -18,8 +20,6 @@ using geometry::Segment;
 using geometry::Vector;
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 Pose2 rotateAbout(const Pose2& pose, const Point& centre, double angle)
 {
@@ -440,7 +440,7 @@ int PushPlanner::onwardDetourSteps() const
   }
   // Half way round the object's disc grown by the clearance, in 4-neighbour steps (up to sqrt(2) times
   // the straight length), plus the slack.
-  const double detour_m = kPi * (reach + objectClearance()) + kOnwardDetourSlackM;
+  const double detour_m = geometry::kPi * (reach + objectClearance()) + kOnwardDetourSlackM;
   return static_cast<int>(std::ceil(std::sqrt(2.0) * detour_m / kSurroundingsResolutionM));
 }
 
@@ -700,7 +700,7 @@ PushPlan PushPlanner::plan(const Point& start, const Point& goal) const
       return static_cast<std::uint64_t>(
           static_cast<std::int64_t>(std::floor(value / search_.position_resolution_m)) & 0xFFFFF);
     };
-    const double turn = (geometry::wrapAngle(pose.heading) + kPi) / (2.0 * kPi);
+    const double turn = (geometry::wrapAngle(pose.heading) + geometry::kPi) / (2.0 * geometry::kPi);
     const auto heading_cell = static_cast<std::uint64_t>(
         std::min(bins - 1, static_cast<std::size_t>(turn * static_cast<double>(bins))));
     return (cell(pose.x) << 44) | (cell(pose.y) << 24) | (heading_cell << 8) |

@@ -1,5 +1,6 @@
 #include <cmath>
 
+#include "common/geometry/angle.hpp"
 #include "sim/generators/generators.hpp"
 #include "sim/generators/world_builder.hpp"
 
@@ -11,12 +12,11 @@ constexpr double kWall = 0.3;
 constexpr double kPartitionY = 16.0;
 constexpr double kDoorWidth = 1.4;
 constexpr double kOpeningWidth = 4.0;
-constexpr double kPi = 3.14159265358979323846;
 
 struct RoomLayout {
-  double door_x = 8.0;                         // centre of the doorway in the partition (the short cut)
-  double opening_x0 = 24.0;                    // left end of the wide opening (the long way round)
-  geometry::Pose2 start{8.0, 4.0, kPi / 2.0};  // straight below the doorway
+  double door_x = 8.0;       // centre of the doorway in the partition (the short cut)
+  double opening_x0 = 24.0;  // left end of the wide opening (the long way round)
+  geometry::Pose2 start{8.0, 4.0, geometry::kPi / 2.0};  // straight below the doorway
   geometry::Point goal{8.0, 26.0};
 };
 
@@ -81,7 +81,7 @@ void addScatteredBoxes(WorldBuilder& builder, const RoomLayout& layout, SeededRa
     const double reach = std::hypot(size_x, size_y) / 2.0;
     const Box2 box{centre.x() - reach, centre.y() - reach, centre.x() + reach, centre.y() + reach};
     if (clear(builder, layout, box, 1.0)) {
-      const double heading = random.uniform(-kPi, kPi);
+      const double heading = random.uniform(-geometry::kPi, geometry::kPi);
       builder.addObject(centre, size_x, size_y, heading,
                         placed % 2 == 0 ? ObjectWeight::Light : ObjectWeight::Heavy, random);
       ++placed;
@@ -104,7 +104,7 @@ World generateRoom(std::uint64_t seed, bool with_objects)
   layout.door_x = std::round(random.uniform(5.0, 14.0) * 10) / 10;
   layout.opening_x0 = std::round(random.uniform(20.0, 26.0) * 10) / 10;
   layout.start = {std::round(random.uniform(2.0, 12.0) * 10) / 10,
-                  std::round(random.uniform(2.0, 6.0) * 10) / 10, kPi / 2.0};
+                  std::round(random.uniform(2.0, 6.0) * 10) / 10, geometry::kPi / 2.0};
   layout.goal = {std::round(random.uniform(2.0, 14.0) * 10) / 10,
                  std::round(random.uniform(26.0, 30.0) * 10) / 10};
 

@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/geometry/angle.hpp"
+
 namespace ifar::sim::lidar {
 namespace {
 
-constexpr double kDegree = M_PI / 180.0;
+constexpr double kDegree = geometry::radiansFromDegrees(1.0);
 constexpr std::int64_t kMicrosecondsPerHour = 3'600'000'000LL;
 
 }  // namespace
@@ -35,7 +37,7 @@ std::vector<Vlp16Packet> Vlp16Scanner::advance(std::int64_t end_time_ns, const g
   std::vector<Vlp16Packet> packets;
   const std::int64_t start_ns = previous_end_ns_;
   const double span_ns = static_cast<double>(end_time_ns - start_ns);
-  const double heading_change = std::remainder(pose_after.heading - pose_before.heading, 2.0 * M_PI);
+  const double heading_change = std::remainder(pose_after.heading - pose_before.heading, 2.0 * geometry::kPi);
   while (next_firing_ * kVlp16FiringIntervalNs <= end_time_ns) {
     const std::int64_t firing_ns = next_firing_ * kVlp16FiringIntervalNs;
     const std::size_t in_packet = static_cast<std::size_t>(next_firing_ % kVlp16FiringsPerPacket);

@@ -7,6 +7,7 @@
 
 #include <box2d/box2d.h>
 
+#include "common/geometry/angle.hpp"
 #include "sim/physics/convex_pieces.hpp"
 
 namespace ifar::sim::physics {
@@ -339,7 +340,7 @@ BodyState stateOf(std::int64_t id, const b2Body& body)
   state.id = id;
   state.pose.x = body.GetPosition().x;
   state.pose.y = body.GetPosition().y;
-  state.pose.heading = std::remainder(static_cast<double>(body.GetAngle()), 2.0 * M_PI);
+  state.pose.heading = std::remainder(static_cast<double>(body.GetAngle()), 2.0 * geometry::kPi);
   state.linear_velocity = fromBox2d(body.GetLinearVelocity());
   state.angular_velocity = body.GetAngularVelocity();
   return state;

@@ -7,21 +7,12 @@
 #include <system_error>
 
 #include "common/config.hpp"
+#include "common/geometry/angle.hpp"
 #include "sim/world/world_geometry.hpp"
 #include "sim/world/world_validation.hpp"
 
 namespace ifar::sim {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-double degreesToRadians(double degrees)
-{
-  return degrees * kPi / 180.0;
-}
-double radiansToDegrees(double radians)
-{
-  return radians * 180.0 / kPi;
-}
 
 double unitScale(const common::ConfigNode& root)
 {
@@ -64,7 +55,7 @@ geometry::Pose2 readPose(const common::ConfigNode& parent, const std::string& ke
   geometry::Pose2 pose;
   pose.x = node.required<double>("x") * scale;
   pose.y = node.required<double>("y") * scale;
-  pose.heading = degreesToRadians(node.optional<double>("heading_deg", 0.0));
+  pose.heading = geometry::radiansFromDegrees(node.optional<double>("heading_deg", 0.0));
   return pose;
 }
 
@@ -160,7 +151,7 @@ void writePolygon(std::ostream& out, const geometry::Polygon& polygon)
 std::string degrees(double radians)
 {
   char buffer[64];
-  const auto result = std::to_chars(buffer, buffer + sizeof(buffer), radiansToDegrees(radians),
+  const auto result = std::to_chars(buffer, buffer + sizeof(buffer), geometry::degreesFromRadians(radians),
                                     std::chars_format::general, 12);
   const std::string text(buffer, result.ptr);
   return text == "-0" ? "0" : text;

@@ -4,10 +4,10 @@
 #include <cmath>
 #include <limits>
 
+#include "common/geometry/angle.hpp"
+
 namespace ifar::perception::synthetic {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 SensorPoint toSensor(const Eigen::Vector3d& world, const Eigen::Isometry3d& world_to_sensor,
                      float reflectivity, double time_offset_s)
@@ -85,7 +85,7 @@ std::vector<SensorPoint> simulateRevolution(const std::vector<PrismObstacle>& ob
   std::vector<SensorPoint> points;
   points.reserve(static_cast<std::size_t>(azimuth_steps) * 16);
   for (int azimuth_index = 0; azimuth_index < azimuth_steps; ++azimuth_index) {
-    const double azimuth = yaw + azimuth_index * settings.azimuth_step_deg * kPi / 180.0;
+    const double azimuth = yaw + geometry::radiansFromDegrees(azimuth_index * settings.azimuth_step_deg);
     const geometry::Vector direction(std::cos(azimuth), std::sin(azimuth));
     const double time_offset = settings.duration_s * azimuth_index / azimuth_steps;
     // Horizontal distances to every face the ray crosses, with the face's obstacle.
@@ -100,7 +100,7 @@ std::vector<SensorPoint> simulateRevolution(const std::vector<PrismObstacle>& ob
     std::sort(crossings.begin(), crossings.end(),
               [](const auto& first, const auto& second) { return first.first < second.first; });
     for (int laser = 0; laser < 16; ++laser) {
-      const double elevation = (-15.0 + 2.0 * laser) * kPi / 180.0;
+      const double elevation = geometry::radiansFromDegrees(-15.0 + 2.0 * laser);
       const double slope = std::tan(elevation);
       double best = settings.max_range_m;
       float reflectivity = 0.0F;

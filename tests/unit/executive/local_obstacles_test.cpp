@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "common/geometry/angle.hpp"
 #include "tests/unit/executive/vlp16_test_packet.hpp"
 
 namespace ifar::executive {
@@ -16,7 +17,7 @@ using geometry::Point;
 using geometry::Pose2;
 using testing::TestPacket;
 
-constexpr double kPi = 3.14159265358979323846;
+using ifar::geometry::kPi;
 constexpr double kDegree = kPi / 180.0;
 constexpr std::int64_t kStartUs = 1'700'000'000'000'000;
 

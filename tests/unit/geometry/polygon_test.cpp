@@ -4,12 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include "common/geometry/angle.hpp"
 #include "common/geometry/pose2.hpp"
 
 namespace ifar::geometry {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 Polygon rectangle(double x0, double y0, double x1, double y1)
 {

@@ -2,10 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include "common/geometry/angle.hpp"
+
 namespace ifar::geometry {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 TEST(WrapAngle, KeepsAnglesInsideTheRange)
 {

@@ -5,10 +5,12 @@
 
 #include <gtest/gtest.h>
 
+#include "common/geometry/angle.hpp"
+
 namespace ifar::perception {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+using ifar::geometry::kPi;
 
 Eigen::Isometry3d planarPose(double x, double y, double yaw)
 {

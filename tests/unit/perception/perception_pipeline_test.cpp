@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "common/geometry/angle.hpp"
 #include "planner/perception/motion_compensation.hpp"
 #include "planner/perception/synthetic/synthetic_scan.hpp"
 #include "tests/unit/perception/inflated_box_matching.hpp"
@@ -17,7 +18,7 @@ using synthetic::PrismObstacle;
 using testing::mismatchToInflatedBox;
 using testing::polygonsOf;
 
-constexpr double kPi = 3.14159265358979323846;
+using ifar::geometry::kPi;
 
 Eigen::Isometry3d planarPose(double x, double y, double yaw)
 {
