@@ -670,7 +670,14 @@ void Executive::stepApproach(Cycle& cycle)
   cycle.target = active_plan_.contact_pose.position();
   cycle.target_object_id = active_plan_.object_id;
   const common::Span<const geometry::Point> obstacles = objectFreeObstacles(cycle);
-  const bool standing_still = standingStill(cycle);
+  bool standing_still = standingStill(cycle);
+  if (standing_still && approach_.phase() == ApproachPhase::ToStandoff &&
+      approach_.joinLane(cycle.pose, settings_.approach)) {
+    // Stuck on the way to the stand-off point, already in the push lane (a corridor too narrow to turn
+    // in): creep along it, no turn on the spot. Its own stall clock starts now.
+    anchorMotion(cycle);
+    standing_still = false;
+  }
   if (standing_still && approach_.phase() == ApproachPhase::ToStandoff &&
       approach_escaped_object_ != active_plan_.object_id) {
     // Stuck on the collision-free leg (e.g. turned toward a side door by a path that flipped, facing a

@@ -140,6 +140,9 @@ ExecutiveSettings loadExecutiveSettings(const common::ConfigNode& node)
   approach.creep_speed = positive(node, "approach.creep_speed");
   approach.contact_tolerance_m = positive(node, "approach.contact_tolerance_m");
   approach.contact_force_n = positive(node, "approach.contact_force_n");
+  approach.lane_join_m = nonNegative(node, "approach.lane_join_m");
+  approach.lane_join_offset_m = nonNegative(node, "approach.lane_join_offset_m");
+  approach.lane_join_heading_rad = nonNegative(node, "approach.lane_join_heading_rad");
   approach.control = loadControl(control);
 
   PushTrackerSettings& pusher = settings.pusher;

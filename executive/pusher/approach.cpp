@@ -19,6 +19,16 @@ geometry::Point relativePosition(const geometry::Pose2& frame, const geometry::P
   return {cosine * dx + sine * dy, -sine * dx + cosine * dy};
 }
 
+/// True when `pose` stands within `offset_m` of the line of the push lane of `contact`, behind it by at
+/// most `behind_m`, heading within `heading_error_rad` of it.
+bool inLane(const geometry::Pose2& contact, const geometry::Pose2& pose, const ApproachSettings& settings,
+            double offset_m, double behind_m, double heading_error_rad)
+{
+  const geometry::Point relative = relativePosition(contact, pose);
+  return std::abs(relative.y()) <= offset_m && relative.x() <= settings.contact_tolerance_m &&
+         relative.x() >= -behind_m && std::abs(wrapToPi(contact.heading - pose.heading)) < heading_error_rad;
+}
+
 }  // namespace
 
 const char* approachPhaseName(ApproachPhase phase)
@@ -46,12 +56,20 @@ void Approach::begin(const geometry::Pose2& contact, const geometry::Pose2& pose
                      const ApproachSettings& settings)
 {
   contact_ = contact;
-  const geometry::Point relative = relativePosition(contact, pose);
-  const bool in_lane = std::abs(relative.y()) <= settings.standoff_tolerance_m &&
-                       relative.x() <= settings.contact_tolerance_m &&
-                       relative.x() >= -settings.standoff_m - settings.standoff_tolerance_m &&
-                       std::abs(wrapToPi(contact.heading - pose.heading)) < kPi / 2.0;
-  phase_ = in_lane ? ApproachPhase::Align : ApproachPhase::ToStandoff;
+  phase_ = inLane(contact, pose, settings, settings.standoff_tolerance_m,
+                  settings.standoff_m + settings.standoff_tolerance_m, kPi / 2.0)
+               ? ApproachPhase::Align
+               : ApproachPhase::ToStandoff;
+}
+
+bool Approach::joinLane(const geometry::Pose2& pose, const ApproachSettings& settings)
+{
+  if (phase_ != ApproachPhase::ToStandoff || !inLane(contact_, pose, settings, settings.lane_join_offset_m,
+                                                     settings.lane_join_m, settings.lane_join_heading_rad)) {
+    return false;
+  }
+  phase_ = ApproachPhase::Creep;
+  return true;
 }
 
 ApproachStep Approach::step(const geometry::Pose2& pose, double force_n,

@@ -20,6 +20,13 @@ struct ApproachSettings {
   double creep_speed = 0.15;          ///< m/s over the last stand-off distance
   double contact_tolerance_m = 0.03;  ///< the contact pose counts as reached within this (along the heading)
   double contact_force_n = 20.0;      ///< a bumper force above this means contact
+  /// A vehicle stuck on the collision-free leg that stands in the push lane (at most `lane_join_offset_m`
+  /// beside its line, `lane_join_m` behind the contact pose, `lane_join_heading_rad` off its heading)
+  /// creeps along the lane instead (joinLane): in a corridor too narrow to turn in, the leg's last
+  /// decimetres squeeze and turn it across.
+  double lane_join_m = 1.6;
+  double lane_join_offset_m = 0.2;
+  double lane_join_heading_rad = 0.35;
   /// False: the collision-free leg passes through the stand-off point at speed instead of stopping there
   /// (a doorway run, which tracks its lane from a heading within heading_tolerance_rad while moving).
   bool stop_at_standoff = true;
@@ -44,6 +51,10 @@ class Approach {
   /// Starts a new approach to `contact`. When the vehicle already stands in the lane behind the contact
   /// (within the stand-off distance and tolerance, facing it), it skips the collision-free leg.
   void begin(const geometry::Pose2& contact, const geometry::Pose2& pose, const ApproachSettings& settings);
+  /// On the collision-free leg, when the vehicle stands in the push lane (ApproachSettings::lane_join_m):
+  /// the leg is left for the creep, whose lane tracker takes out the offset and heading error while moving
+  /// (no turn on the spot). True when it was (the caller says when: the leg is stuck).
+  bool joinLane(const geometry::Pose2& pose, const ApproachSettings& settings);
 
   /// One control cycle. `obstacles` are used for the collision-free leg only: near the object the
   /// vehicle must come closer than any clearance.

@@ -180,5 +180,45 @@ TEST_F(PusherTest, ApproachEndsOnContactForce)
   EXPECT_TRUE(touching.command.isZero());
 }
 
+TEST_F(PusherTest, AStuckApproachInThePushLaneJoinsItAndCreepsToTheContact)
+{
+  const Pose2 contact{1.0, 0.0, 0.0};
+  // In the lane 1.0 m behind the contact (further back than the stand-off point), 0.15 m beside its line
+  // and 0.3 rad off its heading.
+  const Pose2 in_lane{0.0, 0.15, -0.3};
+  Approach approach;
+  approach.begin(contact, in_lane, approach_);
+  ASSERT_EQ(approach.phase(), ApproachPhase::ToStandoff);
+  for (const Pose2& outside :
+       {Pose2{-0.7, 0.0, 0.0}, Pose2{0.0, 0.25, 0.0}, Pose2{0.0, 0.0, 0.5}, Pose2{1.2, 0.0, 0.0}}) {
+    EXPECT_FALSE(approach.joinLane(outside, approach_));
+    EXPECT_EQ(approach.phase(), ApproachPhase::ToStandoff);
+  }
+  ApproachSettings never = approach_;
+  never.lane_join_heading_rad = 0.0;
+  EXPECT_FALSE(approach.joinLane(in_lane, never));
+
+  ASSERT_TRUE(approach.joinLane(in_lane, approach_));
+  EXPECT_FALSE(approach.joinLane(in_lane, approach_));  // only from the collision-free leg
+  Pose2 pose = in_lane;
+  bool crept = false;
+  int step = 0;
+  for (; step < 5000; ++step) {
+    const ApproachStep result = approach.step(pose, 0.0, {}, approach_, follower_, drive_);
+    ASSERT_EQ(result.phase == ApproachPhase::Creep || result.phase == ApproachPhase::Done, true)
+        << "no turn on the spot";
+    if (result.phase == ApproachPhase::Done) {
+      break;
+    }
+    crept = crept || result.phase == ApproachPhase::Creep;
+    pose = testing::drive(pose, drive_.limitSpeed(result.command), 0.02);
+  }
+  EXPECT_TRUE(crept);
+  EXPECT_LT(step, 5000);
+  EXPECT_NEAR(pose.x, contact.x, 0.06);
+  EXPECT_NEAR(pose.y, contact.y, 0.06);
+  EXPECT_NEAR(pose.heading, contact.heading, 0.06);
+}
+
 }  // namespace
 }  // namespace ifar::executive
