@@ -31,6 +31,31 @@ class PusherTest : public ::testing::Test {
   FollowerSettings follower_;
   ApproachSettings approach_;
   PushTrackerSettings tracker_settings_;
+
+  /// What an approach driven to its end (at most 100 s) went through.
+  struct ApproachRun {
+    Pose2 end;
+    bool crept = false;
+    bool turned_on_the_spot_or_followed = false;  ///< a step in ToStandoff or Align
+    bool done = false;
+  };
+  ApproachRun driveApproach(Approach& approach, Pose2 pose) const
+  {
+    ApproachRun run;
+    for (int step = 0; step < 5000; ++step) {
+      const ApproachStep result = approach.step(pose, 0.0, {}, approach_, follower_, drive_);
+      if (result.phase == ApproachPhase::Done) {
+        run.done = true;
+        break;
+      }
+      run.crept = run.crept || result.phase == ApproachPhase::Creep;
+      run.turned_on_the_spot_or_followed =
+          run.turned_on_the_spot_or_followed || result.phase != ApproachPhase::Creep;
+      pose = testing::drive(pose, drive_.limitSpeed(result.command), 0.02);
+    }
+    run.end = pose;
+    return run;
+  }
 };
 
 TEST(ProjectOntoArc, StraightArcAndSpin)
@@ -148,21 +173,12 @@ TEST_F(PusherTest, ApproachReachesContactPose)
   Pose2 pose{-2.0, -1.0, 2.0};
   approach.begin(contact, pose, approach_);
   EXPECT_EQ(approach.phase(), ApproachPhase::ToStandoff);
-  bool crept = false;
-  int step = 0;
-  for (; step < 5000; ++step) {
-    const ApproachStep result = approach.step(pose, 0.0, {}, approach_, follower_, drive_);
-    if (result.phase == ApproachPhase::Done) {
-      break;
-    }
-    crept = crept || result.phase == ApproachPhase::Creep;
-    pose = testing::drive(pose, drive_.limitSpeed(result.command), 0.02);
-  }
-  EXPECT_TRUE(crept);
-  EXPECT_LT(step, 5000);
-  EXPECT_NEAR(pose.x, contact.x, 0.06);
-  EXPECT_NEAR(pose.y, contact.y, 0.06);
-  EXPECT_NEAR(pose.heading, contact.heading, 0.06);
+  const ApproachRun run = driveApproach(approach, pose);
+  EXPECT_TRUE(run.crept);
+  EXPECT_TRUE(run.done);
+  EXPECT_NEAR(run.end.x, contact.x, 0.06);
+  EXPECT_NEAR(run.end.y, contact.y, 0.06);
+  EXPECT_NEAR(run.end.heading, contact.heading, 0.06);
 }
 
 TEST_F(PusherTest, ApproachEndsOnContactForce)
@@ -200,24 +216,13 @@ TEST_F(PusherTest, AStuckApproachInThePushLaneJoinsItAndCreepsToTheContact)
 
   ASSERT_TRUE(approach.joinLane(in_lane, approach_));
   EXPECT_FALSE(approach.joinLane(in_lane, approach_));  // only from the collision-free leg
-  Pose2 pose = in_lane;
-  bool crept = false;
-  int step = 0;
-  for (; step < 5000; ++step) {
-    const ApproachStep result = approach.step(pose, 0.0, {}, approach_, follower_, drive_);
-    ASSERT_EQ(result.phase == ApproachPhase::Creep || result.phase == ApproachPhase::Done, true)
-        << "no turn on the spot";
-    if (result.phase == ApproachPhase::Done) {
-      break;
-    }
-    crept = crept || result.phase == ApproachPhase::Creep;
-    pose = testing::drive(pose, drive_.limitSpeed(result.command), 0.02);
-  }
-  EXPECT_TRUE(crept);
-  EXPECT_LT(step, 5000);
-  EXPECT_NEAR(pose.x, contact.x, 0.06);
-  EXPECT_NEAR(pose.y, contact.y, 0.06);
-  EXPECT_NEAR(pose.heading, contact.heading, 0.06);
+  const ApproachRun run = driveApproach(approach, in_lane);
+  EXPECT_TRUE(run.crept);
+  EXPECT_FALSE(run.turned_on_the_spot_or_followed);
+  EXPECT_TRUE(run.done);
+  EXPECT_NEAR(run.end.x, contact.x, 0.06);
+  EXPECT_NEAR(run.end.y, contact.y, 0.06);
+  EXPECT_NEAR(run.end.heading, contact.heading, 0.06);
 }
 
 }  // namespace
