@@ -671,8 +671,7 @@ void Executive::stepApproach(Cycle& cycle)
   cycle.target_object_id = active_plan_.object_id;
   const common::Span<const geometry::Point> obstacles = objectFreeObstacles(cycle);
   bool standing_still = standingStill(cycle);
-  if (standing_still && approach_.phase() == ApproachPhase::ToStandoff &&
-      approach_.joinLane(cycle.pose, settings_.approach)) {
+  if (standing_still && approach_.joinLane(cycle.pose, settings_.approach)) {
     // Stuck on the way to the stand-off point, already in the push lane (a corridor too narrow to turn
     // in): creep along it, no turn on the spot. Its own stall clock starts now.
     anchorMotion(cycle);
