@@ -73,6 +73,9 @@ struct SearchSettings {
   double boundary_sample_m = 0.1;         ///< spacing of footprint boundary points checked for contact
   double contact_clearance_m = 0.05;      ///< vehicle keeps this from the inflated object when driving round
   double penetration_tolerance_m = 0.03;  ///< rasterisation slack when deciding the object hits a wall
+  /// An object seen only as a face is taken to be this deep beyond the face (less where a wall stands
+  /// behind it) when deciding whether a push runs it into a wall; 0: as thin as the face seen.
+  double unseen_depth_m = 0.5;
   /// The passage counts as open only with this much room beyond the vehicle's half width: the lidar sees
   /// an object's near faces only (its hidden depth is modelled thin) and an open-loop push slips a little.
   double passage_margin_m = 0.15;

@@ -204,6 +204,8 @@ PushPlanner::PushPlanner(const PushProblemObject& problem, const PusherSettings&
   outline.push_back(model_.footprint.front());
   double perimeter = 0.0;
   samplePolyline(outline, search.boundary_sample_m, boundary_samples_, perimeter);
+  collision_samples_ = {boundary_samples_, boundary_samples_};
+  collision_outlines_ = {model_.footprint, model_.footprint};
 
   // A footprint recovered from a rasterised polygon may already sit a little inside a wall: allow what
   // the start pose has, so "never hit an obstacle" means "never pushed deeper".
@@ -237,6 +239,7 @@ PushPlanner::PushPlanner(const PushProblemObject& problem, const PusherSettings&
     }
     face_ends_ = {Point(along * low), Point(along * high)};
     face_normal_ = Vector(-along.y(), along.x());
+    addUnseenDepth(search.unseen_depth_m, search.boundary_sample_m);
   }
 
   if (search.corridor) {
@@ -300,14 +303,64 @@ Pose2 PushPlanner::vehiclePose(const Pose2& object_pose, std::size_t edge) const
   return Pose2{axle.x(), axle.y(), std::atan2(heading.y(), heading.x())};
 }
 
-bool PushPlanner::objectCollides(const Pose2& pose) const
+void PushPlanner::addUnseenDepth(double unseen_depth_m, double sample_spacing_m)
 {
-  const Bounds bounds = boundsOf(transformed(model_.footprint, pose));
+  double near = 0.0;
+  double far = 0.0;
+  for (const Point& vertex : model_.footprint) {
+    near = std::min(near, vertex.dot(face_normal_));
+    far = std::max(far, vertex.dot(face_normal_));
+  }
+  const double missing = unseen_depth_m - (far - near);
+  if (!(missing > 0.0)) {
+    return;
+  }
+  // Side 0 lies along face_normal_, side 1 against it. The depth stops where the object, standing where
+  // it is, would enter a wall: it cannot be deeper than the room behind its face.
+  const Vector along = (face_ends_[1] - face_ends_[0]).normalized();
+  const double face_length = (face_ends_[1] - face_ends_[0]).norm();
+  const int across = std::max(1, static_cast<int>(std::ceil(face_length / sample_spacing_m)));
+  const int deep = std::max(1, static_cast<int>(std::ceil(missing / sample_spacing_m)));
+  for (std::size_t side = 0; side < 2; ++side) {
+    const Vector outward = side == 0 ? face_normal_ : Vector(-face_normal_);
+    const Point base = face_ends_[0] + outward * (side == 0 ? far : -near);
+    double reached = 0.0;
+    for (int step = 1; step <= deep; ++step) {
+      const double depth = missing * step / deep;
+      bool enters_wall = false;
+      for (int point = 0; point <= across && !enters_wall; ++point) {
+        const Point body = base + along * (face_length * point / across) + outward * depth;
+        const Point world = model_.pose.transform(body);
+        enters_wall = insideDeeperThan(world, allowed_depth_m_);
+      }
+      if (enters_wall) {
+        break;
+      }
+      reached = depth;
+    }
+    if (reached <= 0.0) {
+      continue;
+    }
+    Polygon grown = model_.footprint;
+    grown.push_back(base + outward * reached);
+    grown.push_back(base + along * face_length + outward * reached);
+    collision_outlines_[side] = geometry::convexHull(grown);
+    std::vector<Point> outline = collision_outlines_[side];
+    outline.push_back(outline.front());
+    double perimeter = 0.0;
+    collision_samples_[side].clear();
+    samplePolyline(outline, sample_spacing_m, collision_samples_[side], perimeter);
+  }
+}
+
+bool PushPlanner::objectCollides(const Pose2& pose, std::size_t side) const
+{
+  const Bounds bounds = boundsOf(transformed(collision_outlines_[side], pose));
   for (std::size_t index = 0; index < obstacles_.size(); ++index) {
     if (!obstacle_bounds_[index].overlaps(bounds)) {
       continue;
     }
-    for (const Point& sample : boundary_samples_) {
+    for (const Point& sample : collision_samples_[side]) {
       const Point world = pose.transform(sample);
       if (obstacle_bounds_[index].contains(world) &&
           geometry::locatePoint(obstacles_[index], world) == geometry::Containment::Inside &&
@@ -603,7 +656,7 @@ bool PushPlanner::wayOnBeyond(const Pose2& pose, std::size_t edge) const
 }
 
 PushPlan PushPlanner::corridorPush(PushPlan plan, const std::vector<Contact>& contacts,
-                                   const Passage& passage) const
+                                   const Passage& passage, std::size_t depth_side) const
 {
   const auto started = std::chrono::steady_clock::now();
   plan.status = PlanStatus::Exhausted;
@@ -630,7 +683,7 @@ PushPlan PushPlanner::corridorPush(PushPlan plan, const std::vector<Contact>& co
     };
     const int steps = static_cast<int>(std::floor(search_.search_radius_m / search_.collision_step_m));
     int last = 0;  // the farthest step before the object runs into an obstacle
-    while (last < steps && !objectCollides(poseAt(last + 1))) {
+    while (last < steps && !objectCollides(poseAt(last + 1), depth_side)) {
       ++last;
     }
     // The way on is judged every kCorridorJudgementStepM, then refined back to the first collision step
@@ -712,8 +765,9 @@ PushPlan PushPlanner::plan(const Point& start, const Point& goal) const
   std::unordered_map<std::uint64_t, double> best_cost;
 
   // An object seen only as a face: its depth lies beyond the face as seen from where the push starts.
-  const Vector depth_direction =
-      face_normal_.dot(model_.pose.position() - start) >= 0.0 ? face_normal_ : Vector(-face_normal_);
+  const bool depth_along_normal = face_normal_.dot(model_.pose.position() - start) >= 0.0;
+  const Vector depth_direction = depth_along_normal ? face_normal_ : Vector(-face_normal_);
+  const std::size_t depth_side = depth_along_normal ? 0 : 1;
 
   const std::vector<Contact> contacts = reachableContacts(start);
   if (contacts.empty()) {
@@ -721,7 +775,7 @@ PushPlan PushPlanner::plan(const Point& start, const Point& goal) const
     return plan;
   }
   if (search_.corridor) {
-    return corridorPush(std::move(plan), contacts, passage);
+    return corridorPush(std::move(plan), contacts, passage, depth_side);
   }
   for (const Contact& contact : contacts) {
     Node root;
@@ -751,7 +805,7 @@ PushPlan PushPlanner::plan(const Point& start, const Point& goal) const
   // left the corridor).
   const auto ruledOut = [&](const Pose2& pose) {
     return (pose.position() - model_.pose.position()).norm() > search_.search_radius_m ||
-           objectCollides(pose);
+           objectCollides(pose, depth_side);
   };
   const auto pushAllowed = [&](const std::function<Pose2(double)>& along_motion, double distance) {
     const int steps = std::max(1, static_cast<int>(std::ceil(distance / search_.collision_step_m)));

@@ -69,13 +69,19 @@ class PushPlanner {
   void completePlan(PushPlan& plan, std::size_t edge, double approach_m,
                     std::vector<PushControl> controls) const;
   /// The cheapest straight push from one of `contacts` after which the passage is clear and wayOnBeyond.
-  PushPlan corridorPush(PushPlan plan, const std::vector<Contact>& contacts, const Passage& passage) const;
+  PushPlan corridorPush(PushPlan plan, const std::vector<Contact>& contacts, const Passage& passage,
+                        std::size_t depth_side) const;
   /// Corridor search goal: the vehicle standing behind the object pushed from `edge` reaches at least
   /// two stretches of the edge of the object's surroundings (where it came from and a way on), so the
   /// object closes at most the branch it was pushed into.
   bool wayOnBeyond(const geometry::Pose2& pose, std::size_t edge) const;
 
-  bool objectCollides(const geometry::Pose2& pose) const;
+  /// An object seen only as a face reaches `unseen_depth_m` (less where a wall stands behind its face)
+  /// on either side of the face, in collision_outlines_ and collision_samples_.
+  void addUnseenDepth(double unseen_depth_m, double sample_spacing_m);
+  /// Whether the object at `pose` enters an obstacle; `depth_side` picks the side of the face its unseen
+  /// depth lies on (0: along face_normal_).
+  bool objectCollides(const geometry::Pose2& pose, std::size_t depth_side) const;
   /// An object seen only as a face, with both ends of the face close to walls at `pose` and a probe
   /// length further along `depth_direction` (body frame): no arcs, they would sweep the unseen depth.
   bool turnConfined(const geometry::Pose2& pose, const geometry::Vector& depth_direction) const;
@@ -110,6 +116,10 @@ class PushPlanner {
   std::vector<geometry::Polygon> obstacles_;
   std::vector<Bounds> obstacle_bounds_;
   std::vector<geometry::Point> boundary_samples_;  ///< body frame
+  /// What collides, body frame: the footprint, with an object seen only as a face taken to be
+  /// unseen_depth_m deep beyond the face along face_normal_ ([0]) or against it ([1]).
+  std::array<geometry::Polygon, 2> collision_outlines_;
+  std::array<std::vector<geometry::Point>, 2> collision_samples_;
   /// The obstacles around the object, out to beyond the farthest push, for the onward check.
   std::optional<FreeSpaceRaster> surroundings_;
   /// How deep a footprint point may sit inside an inflated obstacle.

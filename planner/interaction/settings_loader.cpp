@@ -65,6 +65,10 @@ InteractionSettings loadInteractionSettings(const common::ConfigNode& node,
   if (!(std::isfinite(search.passage_margin_m) && search.passage_margin_m >= 0.0)) {
     node.fail("passage_margin_m", "must be a number >= 0");
   }
+  search.unseen_depth_m = node.optional<double>("unseen_depth_m", search.unseen_depth_m);
+  if (!(std::isfinite(search.unseen_depth_m) && search.unseen_depth_m >= 0.0)) {
+    node.fail("unseen_depth_m", "must be a number >= 0 (0: as thin as the face seen)");
+  }
   PlanningLoopSettings& loop = settings.loop;
   readPositive(node, "default_mass_kg", loop.default_physics.mass_kg);
   readPositive(node, "default_ground_friction", loop.default_physics.ground_friction);

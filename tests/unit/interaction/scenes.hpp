@@ -2,6 +2,8 @@
 // Local-layer scenes for interaction tests and benchmarks. Polygons are already inflated by the
 // vehicle's half width (0.35 m), as perception delivers them.
 
+#include <vector>
+
 #include "common/geometry/polygon.hpp"
 #include "planner/interaction/connectivity.hpp"
 
@@ -135,6 +137,24 @@ inline LocalScene faceOnlyInALongDoorScene()
   scene.background[2] = rectangle(-0.45, 0.35, 3.25, 1.0);
   scene.background[3] = rectangle(-0.45, 1.5, 3.25, 2.15);
   return scene;
+}
+
+/// The doorway's box seen only by its west face (0.1 m of its real 0.5 m depth), with a wall (real 1.7 <
+/// x < 2.05, -0.65 < y < 0.65) beyond the door: pushed straight east as far as the face alone allows, the
+/// real box runs into it.
+inline LocalScene faceOnlyDoorwayWithWallBehindScene()
+{
+  LocalScene scene = doorwayScene();
+  scene.movable = {rectangle(-0.25 - 0.35, -0.45 - 0.35, -0.15 + 0.35, 0.45 + 0.35)};
+  scene.background.push_back(rectangle(1.7 - 0.35, -0.65 - 0.35, 2.05 + 0.35, 0.65 + 0.35));
+  return scene;
+}
+
+/// faceOnlyDoorwayWithWallBehindScene's walls as they really are (not inflated).
+inline std::vector<geometry::Polygon> faceOnlyDoorwayWithWallBehindRealWalls()
+{
+  return {rectangle(-0.15, 0.95, 0.15, 4.65), rectangle(-0.15, -4.65, 0.15, -0.95),
+          rectangle(1.7, -0.65, 2.05, 0.65)};
 }
 
 /// A tunnel 4 m wide (x from -2 to 2) leaving a T-junction (y from 2 to 6) southward; a bar of 3.6 m x

@@ -68,6 +68,15 @@ TEST(InteractionSettingsLoaderTest, ReadsThePlannerLoopKeysAndThePassageMargin)
               ::testing::HasSubstr("key 'outline_memory_restart_m': must be a number >= 0 (0: off)"));
 }
 
+TEST(InteractionSettingsLoaderTest, ReadsTheUnseenDepth)
+{
+  EXPECT_DOUBLE_EQ(load("").search.unseen_depth_m, 0.5);
+  EXPECT_DOUBLE_EQ(load("unseen_depth_m: 0\n").search.unseen_depth_m, 0.0);
+  EXPECT_THAT(
+      errorOf("unseen_depth_m: -1\n"),
+      ::testing::HasSubstr("key 'unseen_depth_m': must be a number >= 0 (0: as thin as the face seen)"));
+}
+
 TEST(InteractionSettingsLoaderTest, TheExtendedSearchRadiusIsOffOrBeyondTheSearchRadius)
 {
   EXPECT_DOUBLE_EQ(load("").search.extended_search_radius_m, 0.0);
