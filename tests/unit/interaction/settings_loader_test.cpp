@@ -42,13 +42,13 @@ TEST(InteractionSettingsLoaderTest, ReadsKeysAndTakesThePusherFromTheVehicle)
   EXPECT_NEAR(settings.pusher.max_push_force_n, 0.7 * 80.0 * 9.81, 1e-9);
 }
 
-TEST(InteractionSettingsLoaderTest, ReadsThePlannerLoopKeysAndThePassageMargin)
+TEST(InteractionSettingsLoaderTest, ReadsThePlannerLoopKeysThePassageMarginAndTheUnseenDepth)
 {
   const InteractionSettings settings = loadInteractionSettings(
       common::ConfigNode::loadString(
           "default_mass_kg: 35\ndefault_ground_friction: 0.6\nframe_budget_ms: 20\n"
           "track_association_m: 0.8\ntrack_drop_frames: 7\npassage_margin_m: 0\nreach_m: 45\n"
-          "outline_memory_restart_m: 1.5\n",
+          "outline_memory_restart_m: 1.5\nunseen_depth_m: 0\n",
           "planner.yaml"),
       common::VehicleSettings{});
   EXPECT_DOUBLE_EQ(settings.loop.default_physics.mass_kg, 35.0);
@@ -61,20 +61,16 @@ TEST(InteractionSettingsLoaderTest, ReadsThePlannerLoopKeysAndThePassageMargin)
   EXPECT_DOUBLE_EQ(load("").loop.outline_memory_restart_m, 0.0);  // off unless asked for
   EXPECT_DOUBLE_EQ(settings.search.passage_margin_m, 0.0);
   EXPECT_THAT(errorOf("passage_margin_m: -0.1\n"), ::testing::HasSubstr("passage_margin_m"));
+  EXPECT_DOUBLE_EQ(settings.search.unseen_depth_m, 0.0);
+  EXPECT_DOUBLE_EQ(load("").search.unseen_depth_m, 0.5);
+  EXPECT_THAT(
+      errorOf("unseen_depth_m: -1\n"),
+      ::testing::HasSubstr("key 'unseen_depth_m': must be a number >= 0 (0: as thin as the face seen)"));
   EXPECT_THAT(errorOf("frame_budget_ms: 0\n"), ::testing::HasSubstr("frame_budget_ms"));
   EXPECT_THAT(errorOf("track_drop_frames: 0\n"), ::testing::HasSubstr("track_drop_frames"));
   EXPECT_THAT(errorOf("reach_m: 0\n"), ::testing::HasSubstr("reach_m"));
   EXPECT_THAT(errorOf("outline_memory_restart_m: -1\n"),
               ::testing::HasSubstr("key 'outline_memory_restart_m': must be a number >= 0 (0: off)"));
-}
-
-TEST(InteractionSettingsLoaderTest, ReadsTheUnseenDepth)
-{
-  EXPECT_DOUBLE_EQ(load("").search.unseen_depth_m, 0.5);
-  EXPECT_DOUBLE_EQ(load("unseen_depth_m: 0\n").search.unseen_depth_m, 0.0);
-  EXPECT_THAT(
-      errorOf("unseen_depth_m: -1\n"),
-      ::testing::HasSubstr("key 'unseen_depth_m': must be a number >= 0 (0: as thin as the face seen)"));
 }
 
 TEST(InteractionSettingsLoaderTest, TheExtendedSearchRadiusIsOffOrBeyondTheSearchRadius)
