@@ -67,6 +67,17 @@ void samplePolyline(const std::vector<Point>& polyline, double spacing, std::vec
   }
 }
 
+/// Points every `spacing` round a closed polygon, starting and ending at its first vertex.
+std::vector<Point> outlineSamples(const Polygon& polygon, double spacing)
+{
+  std::vector<Point> outline = polygon;
+  outline.push_back(polygon.front());
+  std::vector<Point> samples;
+  double perimeter = 0.0;
+  samplePolyline(outline, spacing, samples, perimeter);
+  return samples;
+}
+
 struct Node {
   Pose2 pose;
   std::size_t edge = 0;
@@ -200,17 +211,14 @@ PushPlanner::PushPlanner(const PushProblemObject& problem, const PusherSettings&
   }
   heuristic_per_metre_ = smallest_force / search.reference_force_n;
 
-  std::vector<Point> outline = model_.footprint;
-  outline.push_back(model_.footprint.front());
-  double perimeter = 0.0;
-  samplePolyline(outline, search.boundary_sample_m, boundary_samples_, perimeter);
-  collision_samples_ = {boundary_samples_, boundary_samples_};
+  const std::vector<Point> footprint_samples = outlineSamples(model_.footprint, search.boundary_sample_m);
+  collision_samples_ = {footprint_samples, footprint_samples};
   collision_outlines_ = {model_.footprint, model_.footprint};
 
   // A footprint recovered from a rasterised polygon may already sit a little inside a wall: allow what
   // the start pose has, so "never hit an obstacle" means "never pushed deeper".
   allowed_depth_m_ = pusher.inflation_m + search.penetration_tolerance_m;
-  for (const Point& sample : boundary_samples_) {
+  for (const Point& sample : footprint_samples) {
     const Point world = model_.pose.transform(sample);
     for (const Polygon& obstacle : obstacles_) {
       if (geometry::locatePoint(obstacle, world) == geometry::Containment::Inside) {
@@ -345,11 +353,7 @@ void PushPlanner::addUnseenDepth(double unseen_depth_m, double sample_spacing_m)
     grown.push_back(base + outward * reached);
     grown.push_back(base + along * face_length + outward * reached);
     collision_outlines_[side] = geometry::convexHull(grown);
-    std::vector<Point> outline = collision_outlines_[side];
-    outline.push_back(outline.front());
-    double perimeter = 0.0;
-    collision_samples_[side].clear();
-    samplePolyline(outline, sample_spacing_m, collision_samples_[side], perimeter);
+    collision_samples_[side] = outlineSamples(collision_outlines_[side], sample_spacing_m);
   }
 }
 

@@ -115,7 +115,6 @@ class PushPlanner {
   std::vector<EdgePushOptions> options_;
   std::vector<geometry::Polygon> obstacles_;
   std::vector<Bounds> obstacle_bounds_;
-  std::vector<geometry::Point> boundary_samples_;  ///< body frame
   /// What collides, body frame: the footprint, with an object seen only as a face taken to be
   /// unseen_depth_m deep beyond the face along face_normal_ ([0]) or against it ([1]).
   std::array<geometry::Polygon, 2> collision_outlines_;
