@@ -147,6 +147,37 @@ std::vector<int> ringStretches(const std::vector<std::size_t>& ring, Kept&& kept
 
 }  // namespace
 
+std::optional<PushPlanner::ThinWall> PushPlanner::thinWall(const Polygon& obstacle, double inflation,
+                                                           double allowed_depth)
+{
+  if (obstacle.size() != 4) {
+    return std::nullopt;
+  }
+  const Vector first = obstacle[1] - obstacle[0];
+  const Vector second = obstacle[2] - obstacle[1];
+  const bool rectangle = std::abs(first.dot(second)) <= 1e-9 * first.norm() * second.norm() &&
+                         (obstacle[3] - obstacle[2] + first).norm() <= 1e-9 * first.norm();
+  if (!rectangle) {
+    return std::nullopt;
+  }
+  const bool first_shorter = first.norm() <= second.norm();
+  const Vector& short_side = first_shorter ? first : second;
+  const Vector& long_side = first_shorter ? second : first;
+  const double half_width = short_side.norm() / 2.0;
+  // The face ends where the inflation round its last cell begins.
+  const double reach = long_side.norm() / 2.0 - inflation;
+  if (half_width < inflation || half_width > allowed_depth || reach <= 0.0) {
+    return std::nullopt;
+  }
+  ThinWall wall;
+  wall.bounds = boundsOf(obstacle);
+  wall.centre = (obstacle[0] + obstacle[2]) / 2.0;
+  wall.across = short_side.normalized();
+  wall.along = long_side.normalized();
+  wall.reach = reach;
+  return wall;
+}
+
 struct PushPlanner::Passage {
   Segment segment;
   Polygon window;  ///< the passage rectangle widened by the inflation, counter-clockwise
@@ -248,6 +279,24 @@ PushPlanner::PushPlanner(const PushProblemObject& problem, const PusherSettings&
     face_ends_ = {Point(along * low), Point(along * high)};
     face_normal_ = Vector(-along.y(), along.x());
     addUnseenDepth(search.unseen_depth_m, search.boundary_sample_m);
+  }
+
+  for (const Polygon& obstacle : obstacles_) {
+    std::optional<ThinWall> wall = thinWall(obstacle, pusher.inflation_m, allowed_depth_m_);
+    if (!wall) {
+      continue;
+    }
+    // A point of the unmoved object already inside the wall's inflation is not held to its face, as the
+    // depth test allows what the start pose has: the outlines are perceived (the demo room's doorway box
+    // is 5 cm from each frame, its perceived footprint reaches past the west one).
+    for (std::size_t side = 0; side < 2; ++side) {
+      for (const Point& sample : collision_samples_[side]) {
+        const Point world = model_.pose.transform(sample);
+        wall->exempt[side].push_back(wall->bounds.contains(world) &&
+                                     geometry::locatePoint(obstacle, world) == geometry::Containment::Inside);
+      }
+    }
+    thin_walls_.push_back(std::move(*wall));
   }
 
   if (search.corridor) {
@@ -357,18 +406,41 @@ void PushPlanner::addUnseenDepth(double unseen_depth_m, double sample_spacing_m)
   }
 }
 
-bool PushPlanner::objectCollides(const Pose2& pose, std::size_t side) const
+bool PushPlanner::objectCollides(const Pose2& from, const Pose2& to, std::size_t side) const
 {
-  const Bounds bounds = boundsOf(transformed(collision_outlines_[side], pose));
+  const Bounds before = boundsOf(transformed(collision_outlines_[side], from));
+  const Bounds after = boundsOf(transformed(collision_outlines_[side], to));
   for (std::size_t index = 0; index < obstacles_.size(); ++index) {
-    if (!obstacle_bounds_[index].overlaps(bounds)) {
+    if (!obstacle_bounds_[index].overlaps(after)) {
       continue;
     }
     for (const Point& sample : collision_samples_[side]) {
-      const Point world = pose.transform(sample);
+      const Point world = to.transform(sample);
       if (obstacle_bounds_[index].contains(world) &&
           geometry::locatePoint(obstacles_[index], world) == geometry::Containment::Inside &&
           geometry::distanceToBoundary(obstacles_[index], world) > allowed_depth_m_) {
+        return true;
+      }
+    }
+  }
+  const Bounds swept{before.minimum.cwiseMin(after.minimum), before.maximum.cwiseMax(after.maximum)};
+  for (const ThinWall& wall : thin_walls_) {
+    if (!wall.bounds.overlaps(swept)) {
+      continue;
+    }
+    for (std::size_t index = 0; index < collision_samples_[side].size(); ++index) {
+      if (wall.exempt[side][index]) {
+        continue;
+      }
+      const Point start = from.transform(collision_samples_[side][index]);
+      const Point end = to.transform(collision_samples_[side][index]);
+      const double start_offset = (start - wall.centre).dot(wall.across);
+      const double end_offset = (end - wall.centre).dot(wall.across);
+      if (start_offset * end_offset >= 0.0) {
+        continue;  // stays on one side of the face (or touches it)
+      }
+      const Point crossing = start + (end - start) * (start_offset / (start_offset - end_offset));
+      if (std::abs((crossing - wall.centre).dot(wall.along)) <= wall.reach) {
         return true;
       }
     }
@@ -687,7 +759,7 @@ PushPlan PushPlanner::corridorPush(PushPlan plan, const std::vector<Contact>& co
     };
     const int steps = static_cast<int>(std::floor(search_.search_radius_m / search_.collision_step_m));
     int last = 0;  // the farthest step before the object runs into an obstacle
-    while (last < steps && !objectCollides(poseAt(last + 1), depth_side)) {
+    while (last < steps && !objectCollides(poseAt(last), poseAt(last + 1), depth_side)) {
       ++last;
     }
     // The way on is judged every kCorridorJudgementStepM, then refined back to the first collision step
@@ -807,16 +879,19 @@ PushPlan PushPlanner::plan(const Point& start, const Point& goal) const
   // An object pose no push may reach: in an obstacle, or beyond the search radius, where the object would
   // leave the surroundings the onward check sees (a box pushed on along a corridor would look as if it had
   // left the corridor).
-  const auto ruledOut = [&](const Pose2& pose) {
-    return (pose.position() - model_.pose.position()).norm() > search_.search_radius_m ||
-           objectCollides(pose, depth_side);
+  const auto ruledOut = [&](const Pose2& from, const Pose2& to) {
+    return (to.position() - model_.pose.position()).norm() > search_.search_radius_m ||
+           objectCollides(from, to, depth_side);
   };
   const auto pushAllowed = [&](const std::function<Pose2(double)>& along_motion, double distance) {
     const int steps = std::max(1, static_cast<int>(std::ceil(distance / search_.collision_step_m)));
+    Pose2 previous = along_motion(0.0);
     for (int step = 1; step <= steps; ++step) {
-      if (ruledOut(along_motion(distance * step / steps))) {
+      const Pose2 next = along_motion(distance * step / steps);
+      if (ruledOut(previous, next)) {
         return false;
       }
+      previous = next;
     }
     return true;
   };
@@ -868,12 +943,14 @@ PushPlan PushPlanner::plan(const Point& start, const Point& goal) const
         (current.root || expansions % std::max<std::size_t>(1, search_.analytic_interval) == 0)) {
       const int steps =
           static_cast<int>(std::ceil(search_.analytic_max_distance_m / search_.collision_step_m));
+      Pose2 previous = current.pose;
       for (int step = 1; step <= steps; ++step) {
         const double distance = step * search_.collision_step_m;
         const Pose2 pose = straightPose(current.pose, current.edge, distance);
-        if (ruledOut(pose)) {
+        if (ruledOut(previous, pose)) {
           break;
         }
+        previous = pose;
         if (goalReached(pose, passage)) {
           Node node;
           node.pose = pose;

@@ -55,6 +55,23 @@ class PushPlanner {
     double length = 0.0;
   };
   struct Passage;
+  /// A wall perceived as a single raster cell becomes, inflated, a rectangle only about twice the
+  /// inflation wide (the layer's 0.15 m cells and 0.35 m inflation: 0.75 m). No point of it lies deeper
+  /// than allowed_depth_m_, so the depth test alone lets the object through it (driven Willow t0: a box
+  /// turned through the corridor's east wall, seen as one cell from inside). For these the test is
+  /// whether a footprint point crosses the rectangle's middle line: the face as perceived.
+  struct ThinWall {
+    Bounds bounds;
+    geometry::Point centre;
+    geometry::Vector across;  ///< unit, along the rectangle's short side
+    geometry::Vector along;   ///< unit, along its long side
+    double reach = 0.0;       ///< how far from the centre along the middle line the face reaches
+    /// exempt[side][sample]: collision_samples_[side][sample] is not held to this face.
+    std::array<std::vector<bool>, 2> exempt;
+  };
+  /// `obstacle` as a thin wall: a rectangle whose half width lies between `inflation` and `allowed_depth`.
+  static std::optional<ThinWall> thinWall(const geometry::Polygon& obstacle, double inflation,
+                                          double allowed_depth);
   /// A contact edge the vehicle reaches from the start waypoint in a straight line.
   struct Contact {
     std::size_t edge = 0;
@@ -79,9 +96,10 @@ class PushPlanner {
   /// An object seen only as a face reaches `unseen_depth_m` (less where a wall stands behind its face)
   /// on either side of the face, in collision_outlines_ and collision_samples_.
   void addUnseenDepth(double unseen_depth_m, double sample_spacing_m);
-  /// Whether the object at `pose` enters an obstacle; `depth_side` picks the side of the face its unseen
-  /// depth lies on (0: along face_normal_).
-  bool objectCollides(const geometry::Pose2& pose, std::size_t depth_side) const;
+  /// Whether the object moving from `from` to `to` enters an obstacle: deeper than allowed_depth_m_ at
+  /// `to`, or through a thin wall's face on the way (thin_walls_); `depth_side` picks the side of the
+  /// face its unseen depth lies on (0: along face_normal_).
+  bool objectCollides(const geometry::Pose2& from, const geometry::Pose2& to, std::size_t depth_side) const;
   /// An object seen only as a face, with both ends of the face close to walls at `pose` and a probe
   /// length further along `depth_direction` (body frame): no arcs, they would sweep the unseen depth.
   bool turnConfined(const geometry::Pose2& pose, const geometry::Vector& depth_direction) const;
@@ -123,6 +141,8 @@ class PushPlanner {
   std::optional<FreeSpaceRaster> surroundings_;
   /// How deep a footprint point may sit inside an inflated obstacle.
   double allowed_depth_m_ = 0.0;
+  /// The obstacles no point of which lies deeper than allowed_depth_m_: walls perceived one cell thick.
+  std::vector<ThinWall> thin_walls_;
   /// Corridor search: wayOnBeyond looks this far round the object.
   double junction_margin_m_ = 0.0;
   /// Object seen only as a face: the face's two ends, body frame (turnConfined).

@@ -145,6 +145,38 @@ TEST(PushSearchTest, WallBehindTheDoorForcesATurnedPush)
   }
 }
 
+TEST(PushSearchTest, AWallSeenAsOneCellIsNotPushedThrough)
+{
+  // Inflated, a wall one cell thick has no point deeper than the allowed depth (inflation + tolerance):
+  // the depth test alone let the straight push run the box through it (driven Willow t0: the east
+  // corridor's box turned through the corridor's wall). No point of the box may cross the wall's face.
+  const LocalScene scene = test::doorwayWithThinWallBehindScene();
+  const InteractionSettings settings = defaultSettings();
+  const ObjectInteractions result = planObjectInteractions(scene, 0, ObjectPhysics{0.4, 20.0}, settings);
+  const double face_x = 1.875;       // the middle of the wall's cell
+  const double face_reach_y = 0.65;  // the cell's ends, inflation taken off the rectangle
+  bool eastward = false;
+  for (const PairPlan& pair : result.plans) {
+    if (result.connectivity.waypoints[pair.pair.from].position.x() > 0.0) {
+      continue;
+    }
+    eastward = true;
+    ASSERT_EQ(pair.plan.status, PlanStatus::Found) << toString(pair.plan.status);
+    expectControlsConsistent(pair.plan);
+    double farthest = -std::numeric_limits<double>::infinity();
+    for (const PushControl& control : pair.plan.controls) {
+      for (const Point& vertex : pair.plan.footprint) {
+        const Point world = control.object_pose.transform(vertex);
+        if (std::abs(world.y()) <= face_reach_y) {
+          farthest = std::max(farthest, world.x());
+        }
+      }
+    }
+    EXPECT_LT(farthest, face_x);
+  }
+  EXPECT_TRUE(eastward);
+}
+
 /// The lowest and highest y of `footprint` placed at `pose`.
 std::pair<double, double> spanInY(const geometry::Polygon& footprint, const Pose2& pose)
 {

@@ -33,6 +33,15 @@ inline LocalScene doorwayWithWallBehindScene()
   return scene;
 }
 
+/// The doorway with a wall 1.8 m (real) beyond the door seen as the layer sees a wall by one face: one
+/// 0.15 m cell (x from 1.8 to 1.95), inflated over whole cells to a rectangle 0.75 m wide.
+inline LocalScene doorwayWithThinWallBehindScene()
+{
+  LocalScene scene = doorwayScene();
+  scene.background.push_back(rectangle(1.5, -1.0, 2.25, 1.0));
+  return scene;
+}
+
 /// The doorway with a wall 1.6 m (real) beyond the door: the box has to be pushed through, then the
 /// vehicle drives round it and pushes it sideways (a contact switch).
 inline LocalScene doorwayWithNearWallScene()
