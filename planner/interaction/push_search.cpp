@@ -408,7 +408,6 @@ void PushPlanner::addUnseenDepth(double unseen_depth_m, double sample_spacing_m)
 
 bool PushPlanner::objectCollides(const Pose2& from, const Pose2& to, std::size_t side) const
 {
-  const Bounds before = boundsOf(transformed(collision_outlines_[side], from));
   const Bounds after = boundsOf(transformed(collision_outlines_[side], to));
   for (std::size_t index = 0; index < obstacles_.size(); ++index) {
     if (!obstacle_bounds_[index].overlaps(after)) {
@@ -423,6 +422,10 @@ bool PushPlanner::objectCollides(const Pose2& from, const Pose2& to, std::size_t
       }
     }
   }
+  if (thin_walls_.empty()) {
+    return false;  // only a thin wall looks at where the move starts
+  }
+  const Bounds before = boundsOf(transformed(collision_outlines_[side], from));
   const Bounds swept{before.minimum.cwiseMin(after.minimum), before.maximum.cwiseMax(after.maximum)};
   for (const ThinWall& wall : thin_walls_) {
     if (!wall.bounds.overlaps(swept)) {

@@ -145,6 +145,18 @@ TEST(PushSearchTest, WallBehindTheDoorForcesATurnedPush)
   }
 }
 
+/// The plan of the pair that pushes from the west of the doorway (x < 0) eastward.
+PushPlan eastwardPlan(const ObjectInteractions& interactions)
+{
+  for (const PairPlan& pair : interactions.plans) {
+    if (interactions.connectivity.waypoints[pair.pair.from].position.x() < 0.0) {
+      return pair.plan;
+    }
+  }
+  ADD_FAILURE() << "no eastward pair";
+  return PushPlan{};
+}
+
 TEST(PushSearchTest, AWallSeenAsOneCellIsNotPushedThrough)
 {
   // Inflated, a wall one cell thick has no point deeper than the allowed depth (inflation + tolerance):
@@ -155,26 +167,19 @@ TEST(PushSearchTest, AWallSeenAsOneCellIsNotPushedThrough)
   const ObjectInteractions result = planObjectInteractions(scene, 0, ObjectPhysics{0.4, 20.0}, settings);
   const double face_x = 1.875;       // the middle of the wall's cell
   const double face_reach_y = 0.65;  // the cell's ends, inflation taken off the rectangle
-  bool eastward = false;
-  for (const PairPlan& pair : result.plans) {
-    if (result.connectivity.waypoints[pair.pair.from].position.x() > 0.0) {
-      continue;
-    }
-    eastward = true;
-    ASSERT_EQ(pair.plan.status, PlanStatus::Found) << toString(pair.plan.status);
-    expectControlsConsistent(pair.plan);
-    double farthest = -std::numeric_limits<double>::infinity();
-    for (const PushControl& control : pair.plan.controls) {
-      for (const Point& vertex : pair.plan.footprint) {
-        const Point world = control.object_pose.transform(vertex);
-        if (std::abs(world.y()) <= face_reach_y) {
-          farthest = std::max(farthest, world.x());
-        }
+  const PushPlan plan = eastwardPlan(result);
+  ASSERT_EQ(plan.status, PlanStatus::Found) << toString(plan.status);
+  expectControlsConsistent(plan);
+  double farthest = -std::numeric_limits<double>::infinity();
+  for (const PushControl& control : plan.controls) {
+    for (const Point& vertex : plan.footprint) {
+      const Point world = control.object_pose.transform(vertex);
+      if (std::abs(world.y()) <= face_reach_y) {
+        farthest = std::max(farthest, world.x());
       }
     }
-    EXPECT_LT(farthest, face_x);
   }
-  EXPECT_TRUE(eastward);
+  EXPECT_LT(farthest, face_x);
 }
 
 /// The lowest and highest y of `footprint` placed at `pose`.
@@ -498,17 +503,8 @@ TEST(PushSearchTest, AFaceOnlyBoxIsNotPushedIntoAWallByItsUnseenDepth)
   // real box would be 0.12 m into that wall. Taken to be unseen_depth_m (0.5 m) deep, it is turned aside
   // short of the wall instead.
   InteractionSettings settings = defaultSettings();
-  const auto eastward = [](const ObjectInteractions& interactions) {
-    for (const PairPlan& pair : interactions.plans) {
-      if (interactions.connectivity.waypoints[pair.pair.from].position.x() < 0.0) {
-        return pair.plan;
-      }
-    }
-    ADD_FAILURE() << "no eastward pair";
-    return PushPlan{};
-  };
   const LocalScene scene = test::faceOnlyDoorwayWithWallBehindScene();
-  const PushPlan plan = eastward(planObjectInteractions(scene, 0, ObjectPhysics{0.4, 20.0}, settings));
+  const PushPlan plan = eastwardPlan(planObjectInteractions(scene, 0, ObjectPhysics{0.4, 20.0}, settings));
   ASSERT_EQ(plan.status, PlanStatus::Found) << toString(plan.status);
   expectControlsConsistent(plan);
   EXPECT_TRUE(std::any_of(plan.controls.begin(), plan.controls.end(), turns));
@@ -516,7 +512,7 @@ TEST(PushSearchTest, AFaceOnlyBoxIsNotPushedIntoAWallByItsUnseenDepth)
             0.01);
 
   settings.search.unseen_depth_m = 0.0;  // as thin as the face seen
-  const PushPlan thin = eastward(planObjectInteractions(scene, 0, ObjectPhysics{0.4, 20.0}, settings));
+  const PushPlan thin = eastwardPlan(planObjectInteractions(scene, 0, ObjectPhysics{0.4, 20.0}, settings));
   ASSERT_EQ(thin.status, PlanStatus::Found) << toString(thin.status);
   EXPECT_GT(deepestIntoWalls(thin, Point(1.0, 0.0), 0.5, test::faceOnlyDoorwayWithWallBehindRealWalls()),
             0.1);
