@@ -28,14 +28,22 @@ double clearanceAt(const geometry::Pose2& pose, const ObstacleGrid& grid, const 
   const geometry::Point body_centre = footprint.bodyCentre();
   const geometry::Point centre(pose.x + cosine * body_centre.x() - sine * body_centre.y(),
                                pose.y + sine * body_centre.x() + cosine * body_centre.y());
-  double nearest = search_radius;
+  // Squared distances pick the nearest point and one hypot measures it: a hypot per point was most of
+  // the follower's cycle.
+  double nearest_squared = kInfinity;
+  geometry::Point nearest_body = geometry::Point::Zero();
   grid.forEachNear(centre, footprint.circumradius() + search_radius, [&](const geometry::Point& point) {
     const double dx = point.x() - pose.x;
     const double dy = point.y() - pose.y;
-    nearest =
-        std::min(nearest, footprint.distanceFromBody({cosine * dx + sine * dy, -sine * dx + cosine * dy}));
+    const geometry::Point body(cosine * dx + sine * dy, -sine * dx + cosine * dy);
+    const double squared = footprint.squaredDistanceFromBody(body);
+    if (squared < nearest_squared) {
+      nearest_squared = squared;
+      nearest_body = body;
+    }
   });
-  return nearest;
+  return nearest_squared < kInfinity ? std::min(search_radius, footprint.distanceFromBody(nearest_body))
+                                     : search_radius;
 }
 
 double headingError(const geometry::Pose2& pose, const geometry::Point& target)

@@ -1,6 +1,5 @@
 #include "executive/follower/footprint.hpp"
 
-#include <algorithm>
 #include <cmath>
 
 namespace ifar::executive {
@@ -12,10 +11,7 @@ double Footprint::circumradius() const
 
 double Footprint::distanceFromBody(const geometry::Point& body_point) const
 {
-  const double half_length = (front_m + rear_m) / 2.0;
-  const geometry::Point offset = body_point - bodyCentre();
-  const double outside_x = std::max(std::abs(offset.x()) - half_length, 0.0);
-  const double outside_y = std::max(std::abs(offset.y()) - half_width_m, 0.0);
+  const auto [outside_x, outside_y] = outsideRectangle(body_point);
   return std::hypot(outside_x, outside_y);
 }
 

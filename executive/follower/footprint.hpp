@@ -1,6 +1,10 @@
 #pragma once
 // The vehicle's outline in its body frame: a rectangle from the rear to the bumper face.
 
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
 #include "common/geometry/point.hpp"
 #include "common/geometry/pose2.hpp"
 
@@ -17,6 +21,21 @@ struct Footprint {
   double circumradius() const;
   /// Distance from a body-frame point to the rectangle; 0 inside or on it.
   double distanceFromBody(const geometry::Point& body_point) const;
+  /// The square of distanceFromBody, without the square root: for picking the nearest of many points
+  /// (inline: the follower calls it for every point near every sample of every arc).
+  double squaredDistanceFromBody(const geometry::Point& body_point) const
+  {
+    const auto [outside_x, outside_y] = outsideRectangle(body_point);
+    return outside_x * outside_x + outside_y * outside_y;
+  }
+  /// How far a body-frame point lies beyond the rectangle along each body axis (0 where it is within).
+  std::pair<double, double> outsideRectangle(const geometry::Point& body_point) const
+  {
+    const double half_length = (front_m + rear_m) / 2.0;
+    const double offset_x = body_point.x() - (front_m - rear_m) / 2.0;
+    return {std::max(std::abs(offset_x) - half_length, 0.0),
+            std::max(std::abs(body_point.y()) - half_width_m, 0.0)};
+  }
   /// Distance from a world point to the rectangle placed at `pose`.
   double distance(const geometry::Pose2& pose, const geometry::Point& world_point) const;
 };
