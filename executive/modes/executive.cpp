@@ -38,6 +38,12 @@ constexpr double kStayArrivedM = 0.1;
 constexpr double kStallTurnToleranceRad = 0.2;
 constexpr double kStallTurnTimeoutS = 5.0;
 constexpr double kStallEscapeReleases = 3.0;
+/// Backing up this far frees the turn at the stand-off point from a wall up to about 0.3 m ahead of
+/// the bumper (the front corners sweep the footprint's 0.57 m circumradius).
+constexpr double kAlignBackUpM = 0.5;
+/// ... until the turn keeps this much more than the guard clearance: the guard steps the turn otherwise
+/// than freeTurn and would stop one that only just clears.
+constexpr double kAlignTurnMarginM = 0.03;
 /// A stall escape toward a waypoint behind the vehicle reverses along the follower's cost-to-go (not
 /// straight back) while the turn to face the way on is not free, for up to this far: out of a dead-end
 /// aisle too narrow to turn in, back to where it widens.
@@ -328,6 +334,7 @@ void Executive::stepFollow(Cycle& cycle)
       active_plan_ = *plan;
       startObjectPath();
       approach_.begin(active_plan_.contact_pose, cycle.pose, settings_.approach);
+      align_backup_start_.reset();
       anchorMotion(cycle);
       task_ = Task::Approach;
       stepApproach(cycle);
@@ -690,6 +697,9 @@ void Executive::stepApproach(Cycle& cycle)
     giveUpUnreachableContact(cycle, "contact");
     return;
   }
+  if (backUpToAlign(cycle, obstacles)) {
+    return;
+  }
   const ApproachStep result =
       approach_.step(cycle.pose, cycle.force_n, obstacles, settings_.approach, settings_.follower, drive_);
   if (result.phase != ApproachPhase::Done) {
@@ -712,6 +722,33 @@ void Executive::stepApproach(Cycle& cycle)
   tactile_.begin(active_plan_, max_push_force_n_, jammed_before);
   task_ = Task::Push;
   stepPush(cycle);
+}
+
+bool Executive::backUpToAlign(Cycle& cycle, common::Span<const geometry::Point> obstacles)
+{
+  const double lane_heading = approach_.contact().heading;
+  if (approach_.phase() != ApproachPhase::Align ||
+      std::abs(wrapToPi(lane_heading - cycle.pose.heading)) <= settings_.approach.heading_tolerance_rad ||
+      freeTurn(cycle.pose, lane_heading, obstacles, kAlignTurnMarginM)) {
+    return false;
+  }
+  if (!align_backup_start_) {
+    align_backup_start_ = cycle.pose.position();
+  }
+  const double backed = (cycle.pose.position() - *align_backup_start_).norm();
+  if (backed >= kAlignBackUpM) {
+    return false;  // turn as far as the guard lets it; a stall escapes once, then gives the contact up
+  }
+  const std::string turning = cycle.reason;
+  cycle.desired = {-settings_.pusher.reverse_speed, 0.0};
+  cycle.reason = fmt::format("object {}: approach: backing up to turn to the lane's heading, {:.2f} m",
+                             active_plan_.object_id, backed);
+  guardCommand(cycle, obstacles);
+  if (cycle.desired.isZero()) {
+    cycle.reason = turning;
+    return false;
+  }
+  return true;
 }
 
 void Executive::stepPush(Cycle& cycle)
@@ -951,10 +988,10 @@ double Executive::freeStraightDistance(const geometry::Pose2& pose, double sign,
 }
 
 bool Executive::freeTurn(const geometry::Pose2& pose, double heading,
-                         common::Span<const geometry::Point> obstacles) const
+                         common::Span<const geometry::Point> obstacles, double margin_m) const
 {
   const Footprint& footprint = settings_.follower.footprint;
-  const double clearance = settings_.pushed_object.guard_clearance_m;
+  const double clearance = settings_.pushed_object.guard_clearance_m + margin_m;
   constexpr double kStepRad = 0.05;
   const double turn = wrapToPi(heading - pose.heading);
   const int steps = static_cast<int>(std::ceil(std::abs(turn) / kStepRad));

@@ -112,6 +112,9 @@ class Executive {
   /// True when the path from the current waypoint on still goes through the doorway being driven.
   bool pathCrossesDoorway(const Path& path) const;
   void stepApproach(Cycle& cycle);
+  /// Aligning at the stand-off point turns on the spot; when a point ahead would stop that turn, backs
+  /// straight up (at most kAlignBackUpM per approach) until the turn is free. True while it does.
+  bool backUpToAlign(Cycle& cycle, common::Span<const geometry::Point> obstacles);
   void stepPush(Cycle& cycle);
   /// Sends AFFORDANCE "not reached" for the active plan's object and waits for the replan.
   void giveUpUnreachableContact(Cycle& cycle, const std::string& contact);
@@ -139,9 +142,9 @@ class Executive {
   double freeStraightDistance(const geometry::Pose2& pose, double sign,
                               common::Span<const geometry::Point> obstacles, double limit_m) const;
   /// True when turning on the spot from `pose` to `heading` keeps the footprint out of the guard clearance
-  /// of every point it is not already that close to.
-  bool freeTurn(const geometry::Pose2& pose, double heading,
-                common::Span<const geometry::Point> obstacles) const;
+  /// (plus `margin_m`) of every point it is not already that close to.
+  bool freeTurn(const geometry::Pose2& pose, double heading, common::Span<const geometry::Point> obstacles,
+                double margin_m = 0.0) const;
   /// Reversing along the follower's cost-to-go toward the current waypoint, when it lies behind the
   /// vehicle and a reversing arc gets closer to it; none otherwise.
   std::optional<FollowerResult> reverseTowardWaypoint(const Cycle& cycle) const;
@@ -182,6 +185,7 @@ class Executive {
   std::optional<geometry::Point> backoff_start_;  // where BackOff began reversing (set on its first step)
   bool backoff_after_stall_ = false;              // BackOff because following got nowhere, not after a push
   std::optional<std::int64_t> approach_escaped_object_;  // the object whose approach used its one escape
+  std::optional<geometry::Point> align_backup_start_;    // where this approach began backing up to align
   // Objects that jammed after sliding, this goal: a second jam of one is reported unpushable.
   std::vector<std::int64_t> jammed_objects_;
   double stall_escape_sign_ = 0.0;  // after a stall: -1 reversing, +1 driving ahead, 0 not chosen yet

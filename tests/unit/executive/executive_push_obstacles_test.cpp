@@ -221,6 +221,36 @@ TEST_F(ExecutivePushObstaclesTest, AnApproachStuckOnItsWayToTheStandOffPointEsca
   EXPECT_NEAR(object_.x(), 3.15, 0.1);
 }
 
+TEST_F(ExecutivePushObstaclesTest, AnApproachWhoseTurnAtTheStandOffPointIsBlockedBacksUpAndPushes)
+{
+  // At the stand-off point (0.9, 0) but facing across the lane, a wall 0.1 m ahead of the bumper: the
+  // turn on the spot to the lane's heading sweeps the front corners 0.57 m out, and the guard stops it.
+  // (A Willow approach ended so: the leg's last decimetres turned the vehicle across a corridor, and the
+  // stand-still reported the object unpushable.) The vehicle backs straight up until the turn is free,
+  // turns, and the creep takes out the offset on its way to the contact.
+  pose_ = Pose2{0.9, 0.0, kPi / 2.0};
+  std::vector<Point> wall;
+  for (int index = 0; index <= 70; ++index) {  // x from -1.5 to 2.0 every 5 cm
+    wall.emplace_back(-1.5 + 0.05 * index, 0.55);
+  }
+  Output output;
+  double backed_to = 0.0;
+  for (int index = 0; index < 3000 && output.status.pushes == 0; ++index) {
+    output = cycle(wall);
+    ASSERT_FALSE(output.affordance.has_value()) << "cycle " << index << ": " << output.affordance->text;
+    ASSERT_EQ(output.status.reason.find("stalled"), std::string::npos)
+        << "cycle " << index << ": " << output.status.reason;
+    if (output.status.reason.find("backing up to turn to the lane's heading") != std::string::npos) {
+      backed_to = pose_.y;
+    }
+  }
+  // Backed up 5-15 cm: the turn then clears the wall by the guard's 5 cm and a few more.
+  EXPECT_LT(backed_to, -0.05);
+  EXPECT_GT(backed_to, -0.15);
+  EXPECT_EQ(output.status.pushes, 1) << output.status.reason;
+  EXPECT_NEAR(object_.x(), 3.15, 0.1);
+}
+
 TEST_F(ExecutivePushObstaclesTest, AnApproachStuckTwiceOnItsWayReportsTheContactAsNotReached)
 {
   // Boxed in on all sides, 0.1 m from the footprint, short of the stand-off point: the one escape cannot
