@@ -38,8 +38,9 @@ constexpr double kStayArrivedM = 0.1;
 constexpr double kStallTurnToleranceRad = 0.2;
 constexpr double kStallTurnTimeoutS = 5.0;
 constexpr double kStallEscapeReleases = 3.0;
-/// Backing up this far frees the turn at the stand-off point from a wall up to about 0.3 m ahead of
-/// the bumper (the front corners sweep the footprint's 0.57 m circumradius).
+/// Backing up at most this far to free the turn at the stand-off point: a wall square ahead needs 0.2 m
+/// at most (the front corners sweep the footprint's 0.57 m circumradius, the bumper is 0.45 m ahead), a
+/// slanted one or a corner more.
 constexpr double kAlignBackUpM = 0.5;
 /// ... until the turn keeps this much more than the guard clearance: the guard steps the turn otherwise
 /// than freeTurn and would stop one that only just clears.
