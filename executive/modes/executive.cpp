@@ -654,16 +654,22 @@ void Executive::countStall(Cycle& cycle, const geometry::Point& target)
 
 void Executive::giveUpUnreachableContact(Cycle& cycle, const std::string& contact)
 {
-  // The contact cannot be reached (the stand-off point boxed in, the guard stopping the creep): the plan
-  // costs more than planned, without bound. Algorithm 2's answer: tell the planner, wait for its replan.
+  // The contact cannot be reached (the stand-off point boxed in, the guard stopping the creep).
+  giveUpPlan(cycle, fmt::format("object {}: {} not reached: no motion for {:.1f} s on the way to it",
+                                active_plan_.object_id, contact, 2.0 * settings_.stall_timeout_s));
+}
+
+void Executive::giveUpPlan(Cycle& cycle, const std::string& text)
+{
+  // The plan costs more than planned, without bound. Algorithm 2's answer: tell the planner, wait for
+  // its replan.
   AffordanceEvent event;
   event.object_id = active_plan_.object_id;
   event.pushable = false;
   event.planned_cost = active_plan_.expected_cost;
   event.measured_cost = active_plan_.expected_cost;
   event.reason = AffordanceReason::CostHigher;
-  event.text = fmt::format("object {}: {} not reached: no motion for {:.1f} s on the way to it",
-                           active_plan_.object_id, contact, 2.0 * settings_.stall_timeout_s);
+  event.text = text;
   cycle.affordance = event;
   task_ = Task::ReplanWait;
   replan_requested_us_ = cycle.now_us;
@@ -825,6 +831,14 @@ void Executive::stepPush(Cycle& cycle)
   cycle.desired = result.command;
   cycle.reason = fmt::format("object {}: {}", active_plan_.object_id, result.reason);
   guardCommand(cycle, obstacles);
+  if (cycle.desired.isZero() && !result.command.isZero() && standingStill(cycle)) {
+    // The guard has held the push for twice stall_timeout_s: something beside the object is in the
+    // vehicle's way (no force rises, so the tactile monitor says nothing). Without this the vehicle stood
+    // there for good (bench Willow t8 beside a door post, docs/executive.md, "Known gap").
+    rememberPushedObject(object_position);
+    giveUpPlan(cycle, fmt::format("object {}: push held by the guard: no motion for {:.1f} s",
+                                  active_plan_.object_id, 2.0 * settings_.stall_timeout_s));
+  }
 }
 
 void Executive::startObjectPath()

@@ -118,6 +118,9 @@ class Executive {
   void stepPush(Cycle& cycle);
   /// Sends AFFORDANCE "not reached" for the active plan's object and waits for the replan.
   void giveUpUnreachableContact(Cycle& cycle, const std::string& contact);
+  /// Sends AFFORDANCE (not pushable, cost higher, `text`) for the active plan's object and waits for the
+  /// replan: the vehicle stood still where the plan needs it to move.
+  void giveUpPlan(Cycle& cycle, const std::string& text);
   void stepReplanWait(Cycle& cycle);
   void stepBackOff(Cycle& cycle);
   /// Following (or an approach's collision-free leg) got nowhere: back off straight or reversing along

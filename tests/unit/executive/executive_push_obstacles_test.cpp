@@ -251,6 +251,38 @@ TEST_F(ExecutivePushObstaclesTest, AnApproachWhoseTurnAtTheStandOffPointIsBlocke
   EXPECT_NEAR(object_.x(), 3.15, 0.1);
 }
 
+TEST_F(ExecutivePushObstaclesTest, APushTheGuardHoldsIsReportedAndReplanned)
+{
+  // The push turns left (0.3 rad/s), which swings the rear right into a post 4 cm beside the rear
+  // corner, first seen when the push starts: the guard holds the vehicle, no force rises, and the
+  // tactile monitor has nothing to say. It stood there for good before (as in bench Willow t8 beside a
+  // door post); now twice stall_timeout_s without motion is reported like a contact not reached.
+  PushControl& control = path_.push_plans.front().controls.front();
+  control.angular_velocity = 0.3;
+  control.expected_vehicle_pose = {1.5 + std::sin(0.9), 1.0 - std::cos(0.9), 0.9};
+  control.expected_object_pose = {control.expected_vehicle_pose.x + 0.75 * std::cos(0.9),
+                                  control.expected_vehicle_pose.y + 0.75 * std::sin(0.9), 0.9};
+  const std::vector<Point> post = {Point(1.1, -0.39)};
+  Output output;
+  std::optional<AffordanceEvent> event;
+  int pushing_cycles = 0;
+  for (int index = 0; index < 3000 && !event; ++index) {
+    const bool pushing = executive_.mode() == Mode::Push;
+    output = cycle(pushing ? post : std::vector<Point>{});
+    event = output.affordance;
+    pushing_cycles += pushing ? 1 : 0;
+  }
+  ASSERT_TRUE(event) << output.status.reason;
+  EXPECT_EQ(event->object_id, 9);
+  EXPECT_FALSE(event->pushable);
+  EXPECT_EQ(event->reason, AffordanceReason::CostHigher);
+  EXPECT_EQ(event->text, "object 9: push held by the guard: no motion for 3.0 s");
+  EXPECT_EQ(output.status.mode, Mode::ReplanWait);
+  EXPECT_TRUE(output.command.isZero());
+  // Held from the push's first cycles: reported twice the stall time later.
+  EXPECT_NEAR(pushing_cycles * kCycleUs * 1e-6, 2.0 * settings_.stall_timeout_s, 0.3);
+}
+
 TEST_F(ExecutivePushObstaclesTest, AnApproachStuckTwiceOnItsWayReportsTheContactAsNotReached)
 {
   // Boxed in on all sides, 0.1 m from the footprint, short of the stand-off point: the one escape cannot
