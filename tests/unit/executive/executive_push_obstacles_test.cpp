@@ -71,6 +71,19 @@ std::vector<Point> boxReturns(const Point& centre)
   return points;
 }
 
+/// The executive gave the plan of object 9 up with `text` and waits for the replan, standing.
+void expectPlanGivenUp(const Output& output, const std::optional<AffordanceEvent>& event,
+                       const std::string& text)
+{
+  ASSERT_TRUE(event) << output.status.reason;
+  EXPECT_EQ(event->object_id, 9);
+  EXPECT_FALSE(event->pushable);
+  EXPECT_EQ(event->reason, AffordanceReason::CostHigher);
+  EXPECT_EQ(event->text, text);
+  EXPECT_EQ(output.status.mode, Mode::ReplanWait);
+  EXPECT_TRUE(output.command.isZero());
+}
+
 class ExecutivePushObstaclesTest : public ::testing::Test {
  protected:
   ExecutivePushObstaclesTest() : executive_(settings_, vehicle_) {}
@@ -272,13 +285,7 @@ TEST_F(ExecutivePushObstaclesTest, APushTheGuardHoldsIsReportedAndReplanned)
     event = output.affordance;
     pushing_cycles += pushing ? 1 : 0;
   }
-  ASSERT_TRUE(event) << output.status.reason;
-  EXPECT_EQ(event->object_id, 9);
-  EXPECT_FALSE(event->pushable);
-  EXPECT_EQ(event->reason, AffordanceReason::CostHigher);
-  EXPECT_EQ(event->text, "object 9: push held by the guard: no motion for 3.0 s");
-  EXPECT_EQ(output.status.mode, Mode::ReplanWait);
-  EXPECT_TRUE(output.command.isZero());
+  expectPlanGivenUp(output, event, "object 9: push held by the guard: no motion for 3.0 s");
   // Held from the push's first cycles: reported twice the stall time later.
   EXPECT_NEAR(pushing_cycles * kCycleUs * 1e-6, 2.0 * settings_.stall_timeout_s, 0.3);
 }
@@ -337,13 +344,8 @@ TEST_F(ExecutivePushObstaclesTest, AContactSwitchThatGetsNowhereIsReportedAsNotR
       ++held_cycles;
     }
   }
-  ASSERT_TRUE(event) << output.status.reason;
-  EXPECT_EQ(event->object_id, 9);
-  EXPECT_FALSE(event->pushable);
-  EXPECT_EQ(event->reason, AffordanceReason::CostHigher);
-  EXPECT_EQ(event->text, "object 9: contact edge 3 not reached: no motion for 3.0 s on the way to it");
-  EXPECT_EQ(output.status.mode, Mode::ReplanWait);
-  EXPECT_TRUE(output.command.isZero());
+  expectPlanGivenUp(output, event,
+                    "object 9: contact edge 3 not reached: no motion for 3.0 s on the way to it");
   EXPECT_NEAR(held_cycles * kCycleUs * 1e-6, 2.0 * settings_.stall_timeout_s, 0.1);
 }
 
