@@ -744,7 +744,7 @@ bool Executive::backUpToAlign(Cycle& cycle, common::Span<const geometry::Point> 
   }
   const double backed = (cycle.pose.position() - *align_backup_start_).norm();
   if (backed >= kAlignBackUpM) {
-    return false;  // turn as far as the guard lets it; a stall escapes once, then gives the contact up
+    return false;  // turn as far as the guard lets it; standing still there gives the contact up
   }
   const std::string turning = cycle.reason;
   cycle.desired = {-settings_.pusher.reverse_speed, 0.0};
