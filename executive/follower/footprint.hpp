@@ -32,7 +32,7 @@ struct Footprint {
   std::pair<double, double> outsideRectangle(const geometry::Point& body_point) const
   {
     const double half_length = (front_m + rear_m) / 2.0;
-    const double offset_x = body_point.x() - (front_m - rear_m) / 2.0;
+    const double offset_x = body_point.x() - bodyCentre().x();
     return {std::max(std::abs(offset_x) - half_length, 0.0),
             std::max(std::abs(body_point.y()) - half_width_m, 0.0)};
   }
