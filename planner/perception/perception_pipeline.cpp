@@ -1,8 +1,11 @@
 #include "planner/perception/perception_pipeline.hpp"
 
 #include <chrono>
+#include <cmath>
+#include <vector>
 
 #include "planner/perception/classification.hpp"
+#include "planner/perception/grazing_gap_fill.hpp"
 #include "planner/perception/height_filter.hpp"
 #include "planner/perception/motion_compensation.hpp"
 
@@ -14,6 +17,16 @@ using Clock = std::chrono::steady_clock;
 double millisecondsSince(Clock::time_point start)
 {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+GrazingGapSettings grazingGapSettings(const PerceptionSettings& settings)
+{
+  constexpr double kRadiansPerDegree = M_PI / 180.0;
+  GrazingGapSettings gaps;
+  gaps.azimuth_step_rad = settings.gap_fill_azimuth_step_deg * kRadiansPerDegree;
+  gaps.min_incidence_rad = settings.gap_fill_min_incidence_deg * kRadiansPerDegree;
+  gaps.spacing_m = 0.5 * settings.cell_size_m;
+  return gaps;
 }
 
 }  // namespace
@@ -75,6 +88,14 @@ PerceptionResult runPerception(const PerceptionInput& input, const PerceptionSet
 
   result.observed_background = classified.background;
   result.observed_movable = classified.movable;
+  // Filled gaps hold for this scan only: the memory keeps what rays hit, so a passage a later, nearer scan
+  // sees through is not closed for good.
+  const Eigen::Vector3d sensor = (input.motion.vehicle_at_end * input.mount).translation();
+  const std::vector<geometry::Point> gap_fill =
+      fillGrazingGaps(classified.background, classified.movable, geometry::Point(sensor.x(), sensor.y()),
+                      grazingGapSettings(settings));
+  result.stats.gap_fill_points = gap_fill.size();
+  classified.background.insert(classified.background.end(), gap_fill.begin(), gap_fill.end());
   classified.background.insert(classified.background.end(), input.remembered_background.begin(),
                                input.remembered_background.end());
 

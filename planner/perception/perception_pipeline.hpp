@@ -44,6 +44,7 @@ struct PerceptionStats {
   std::size_t outside_height_band_points = 0;
   std::size_t background_points = 0;
   std::size_t movable_points = 0;
+  std::size_t gap_fill_points = 0;  // joined across grazing gaps (grazing_gap_fill.hpp), this scan only
   std::size_t points_outside_layer = 0;
   std::size_t dropped_contours = 0;
   double compensation_ms = 0.0;

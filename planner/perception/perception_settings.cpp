@@ -17,6 +17,29 @@ double requirePositive(const common::ConfigNode& node, const std::string& key)
 
 constexpr int kMaxLayerCells = 20000;
 
+struct KeyProblem {
+  const char* key;
+  std::string reason;
+};
+
+// The gap filling's keys: the step 0 (off) or positive, the incidence above 1.25 steps (the most a join
+// spans) and below 90 degrees.
+std::optional<KeyProblem> gapFillProblem(const PerceptionSettings& settings)
+{
+  if (!std::isfinite(settings.gap_fill_azimuth_step_deg) || settings.gap_fill_azimuth_step_deg < 0.0) {
+    return KeyProblem{"gap_fill_azimuth_step_deg", "must be 0 (off) or positive, got " +
+                                                       std::to_string(settings.gap_fill_azimuth_step_deg)};
+  }
+  if (settings.gap_fill_azimuth_step_deg > 0.0 &&
+      !(settings.gap_fill_min_incidence_deg > 1.25 * settings.gap_fill_azimuth_step_deg &&
+        settings.gap_fill_min_incidence_deg < 90.0)) {
+    return KeyProblem{"gap_fill_min_incidence_deg",
+                      "must be above 1.25 x gap_fill_azimuth_step_deg and below 90, got " +
+                          std::to_string(settings.gap_fill_min_incidence_deg)};
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 std::optional<std::string> findSettingsProblem(const PerceptionSettings& settings)
@@ -40,6 +63,9 @@ std::optional<std::string> findSettingsProblem(const PerceptionSettings& setting
   }
   if (settings.vehicle_height_m <= settings.ground_clearance_m) {
     return std::string("vehicle_height_m must be above ground_clearance_m");
+  }
+  if (const auto problem = gapFillProblem(settings)) {
+    return std::string(problem->key) + " " + problem->reason;
   }
   if (settings.cell_size_m > settings.layer_size_m) {
     return std::string("cell_size_m must not exceed layer_size_m");
@@ -70,6 +96,11 @@ PerceptionSettings loadPerceptionSettings(const common::ConfigNode& root)
   settings.simplify_epsilon_m = requirePositive(node, "simplify_epsilon_m");
   settings.min_polygon_area_m2 = requirePositive(node, "min_polygon_area_m2");
   settings.remember_background = node.required<bool>("remember_background");
+  settings.gap_fill_azimuth_step_deg = node.required<double>("gap_fill_azimuth_step_deg");
+  settings.gap_fill_min_incidence_deg = node.required<double>("gap_fill_min_incidence_deg");
+  if (const auto problem = gapFillProblem(settings)) {
+    node.fail(problem->key, problem->reason);
+  }
   if (settings.vehicle_height_m <= settings.ground_clearance_m) {
     node.fail("vehicle_height_m", "must be above ground_clearance_m");
   }

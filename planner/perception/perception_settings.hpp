@@ -30,6 +30,11 @@ struct PerceptionSettings {
   double min_polygon_area_m2 = 0.05;
   /// Keep the background seen in earlier scans in the layer (planner/perception/background_memory.hpp).
   bool remember_background = true;
+  /// Gaps in a far wall that no ray went through are filled for the scan (grazing_gap_fill.hpp): returns
+  /// of neighbouring rays, the lidar's azimuth step apart (degrees; 0 = off), are joined when a surface
+  /// seen at gap_fill_min_incidence_deg or steeper could hold both.
+  double gap_fill_azimuth_step_deg = 0.0;
+  double gap_fill_min_incidence_deg = 3.0;
 
   /// Cells along one side of the layer.
   int layerCells() const;

@@ -278,5 +278,49 @@ TEST(PerceptionPipeline, ClosedRoomEnclosesTheVehicleInAHole)
   EXPECT_EQ(polygonsOf(result.layer, ObstacleClass::Background, BoundaryKind::Outer).size(), 1U);
 }
 
+// The cells along a corridor wall's inflated face from y_from to y_to that the layer leaves free.
+int freeCellsAlongWall(const LocalLayer& layer, double face_x, double y_from, double y_to)
+{
+  int free_cells = 0;
+  for (double y = y_from; y <= y_to; y += 0.05) {
+    const auto index = layer.grid.indexOf(geometry::Point(face_x, y));
+    if (!index || layer.background_occupancy[*index] == 0) {
+      ++free_cells;
+    }
+  }
+  return free_cells;
+}
+
+TEST(PerceptionPipeline, AFarCorridorWallIsWholeWithGrazingGapsFilled)
+{
+  // A 4 m corridor running 80 m north of the vehicle, walls 4 m high: 25-35 m on, its walls are seen at
+  // 3.3-4.6 degrees by the one laser whose returns lie in the height band there (-1 degree).
+  const std::vector<PrismObstacle> walls = {{boxFootprint(-2.1, 35.0, 0.2, 90.0), 4.0, 20.0F},
+                                            {boxFootprint(2.1, 35.0, 0.2, 90.0), 4.0, 20.0F}};
+  const Eigen::Isometry3d vehicle = planarPose(0.0, 0.0, kPi / 2.0);
+  const std::vector<SensorPoint> points =
+      synthetic::simulateRevolution(walls, vehicle * mount(), synthetic::RevolutionSettings{});
+  PerceptionInput input;
+  input.points = points;
+  input.mount = mount();
+  input.motion.vehicle_at_start = vehicle;
+  input.motion.vehicle_at_end = vehicle;
+  PerceptionSettings settings;
+  settings.gap_fill_azimuth_step_deg = 0.2;  // the VLP-16's step at 10 Hz, as the synthetic revolution's
+  const PerceptionResult filled = runPerception(input, settings);
+  ASSERT_EQ(filled.status, PerceptionStatus::Ok) << filled.message;
+  EXPECT_GT(filled.stats.gap_fill_points, 0U);
+  // The inflated face 0.35 m inside each wall is occupied all the way to 35 m on.
+  EXPECT_EQ(freeCellsAlongWall(filled.layer, 2.0 - 0.3, 1.0, 35.0), 0);
+  EXPECT_EQ(freeCellsAlongWall(filled.layer, -2.0 + 0.3, 1.0, 35.0), 0);
+  // The memory gets only what the rays hit.
+  EXPECT_EQ(filled.observed_background.size(), filled.stats.background_points);
+
+  settings.gap_fill_azimuth_step_deg = 0.0;
+  const PerceptionResult unfilled = runPerception(input, settings);
+  EXPECT_EQ(unfilled.stats.gap_fill_points, 0U);
+  EXPECT_GT(freeCellsAlongWall(unfilled.layer, 2.0 - 0.3, 1.0, 35.0), 20);
+}
+
 }  // namespace
 }  // namespace ifar::perception

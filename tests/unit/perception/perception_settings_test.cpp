@@ -20,6 +20,8 @@ perception:
   simplify_epsilon_m: 0.05
   min_polygon_area_m2: 0.1
   remember_background: false
+  gap_fill_azimuth_step_deg: 0.5
+  gap_fill_min_incidence_deg: 4.0
 )";
 
 std::string messageOf(const std::string& text)
@@ -52,6 +54,8 @@ TEST(PerceptionSettings, ReadsEveryKey)
   EXPECT_DOUBLE_EQ(settings.simplify_epsilon_m, 0.05);
   EXPECT_DOUBLE_EQ(settings.min_polygon_area_m2, 0.1);
   EXPECT_FALSE(settings.remember_background);
+  EXPECT_DOUBLE_EQ(settings.gap_fill_azimuth_step_deg, 0.5);
+  EXPECT_DOUBLE_EQ(settings.gap_fill_min_incidence_deg, 4.0);
   EXPECT_EQ(settings.layerCells(), 200);
 }
 
@@ -77,6 +81,15 @@ TEST(PerceptionSettings, BadValuesNameTheKey)
   EXPECT_NE(messageOf(replaced("min_range_m: 0.5", "min_range_m: 0.5\n  colour: red")).find("colour"),
             std::string::npos);
   EXPECT_NE(messageOf("graph: {}\n").find("perception"), std::string::npos);
+  EXPECT_NE(messageOf(replaced("gap_fill_azimuth_step_deg: 0.5", "gap_fill_azimuth_step_deg: -0.5"))
+                .find("gap_fill_azimuth_step_deg"),
+            std::string::npos);
+  // A join spans up to 1.25 azimuth steps, so the incidence must be above that.
+  EXPECT_NE(messageOf(replaced("gap_fill_min_incidence_deg: 4.0", "gap_fill_min_incidence_deg: 0.6"))
+                .find("gap_fill_min_incidence_deg"),
+            std::string::npos);
+  EXPECT_EQ(messageOf(replaced("gap_fill_azimuth_step_deg: 0.5", "gap_fill_azimuth_step_deg: 0")),
+            "no error");
 }
 
 TEST(PerceptionSettings, ProblemsInProgrammaticSettingsNameTheField)
@@ -95,6 +108,10 @@ TEST(PerceptionSettings, ProblemsInProgrammaticSettingsNameTheField)
   settings = PerceptionSettings{};
   settings.vehicle_height_m = 0.1;
   EXPECT_NE(findSettingsProblem(settings).value_or("").find("vehicle_height_m"), std::string::npos);
+  settings = PerceptionSettings{};
+  settings.gap_fill_azimuth_step_deg = 0.2;
+  settings.gap_fill_min_incidence_deg = 90.0;
+  EXPECT_NE(findSettingsProblem(settings).value_or("").find("gap_fill_min_incidence_deg"), std::string::npos);
 }
 
 }  // namespace
