@@ -54,6 +54,9 @@ constexpr double kReversingProgressM = 0.01;
 /// Stalls within this distance of the first one of a series, toward waypoints this close to each other,
 /// count as the same passage.
 constexpr double kStallSiteRadiusM = 1.0;
+/// The guard's comparisons allow this much rounding: distances computed at a slant to the axes are off by
+/// it, and a vehicle backing straight along a wall exactly guard_clearance_m away was stopped for good.
+constexpr double kGuardRoundingM = 1e-4;
 constexpr std::size_t kPushedObjectsRemembered = 8;
 /// A blocked passage is reported toward the path point this far ahead (along the path), not the
 /// waypoint: the planner seals beyond the vehicle's inflation, so a waypoint a step ahead leaves it no
@@ -935,7 +938,7 @@ void Executive::guardCommand(Cycle& cycle, common::Span<const geometry::Point> o
           integrateArc(cycle.pose, command.linear, command.angular, step * time_step_s);
       const double distance = footprint.distance(ahead, point);
       // Only closing in counts, so the vehicle can always back away from something already near.
-      if (distance < clearance && distance < distance_now) {
+      if (distance < clearance - kGuardRoundingM && distance < distance_now - kGuardRoundingM) {
         cycle.desired = {};
         cycle.reason +=
             fmt::format(" (stopped: obstacle at ({:.2f}, {:.2f}) in the way)", point.x(), point.y());

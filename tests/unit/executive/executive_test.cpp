@@ -295,6 +295,42 @@ TEST_F(ExecutiveTest, FollowingThatGetsNowhereBacksOffAndTriesAgain)
   EXPECT_LT(lowest_y, stalled_y - settings_.pusher.release_m + 0.05);  // backed up the whole distance
 }
 
+TEST_F(ExecutiveTest, BackingUpAlongAWallAtASlantIsNotStoppedByRounding)
+{
+  // As above, turned 0.3 rad off the axes: backing straight up brings the wall behind the rear corner to
+  // the side's 5 cm, the guard's clearance, which computed at the slant comes out a rounding below it
+  // (office2x-3+4 t4 stood wedged so in a door for 230 s).
+  const double heading = 0.5 * M_PI + 0.3;
+  const Point forward(std::cos(heading), std::sin(heading));
+  const Point right(forward.y(), -forward.x());
+  std::vector<Point> wall;
+  for (double along = -4.0; along <= 4.0; along += 0.05) {
+    wall.push_back(forward * along + right * (0.35 + 0.05));
+  }
+  Path path = straightPath();
+  const Point behind = -2.3 * forward;
+  path.waypoints = {waypoint(0.0, 0.0), waypoint(behind.x(), behind.y())};
+  pose_ = Pose2{0.0, 0.0, heading};
+  double stalled_along = 1.0;  // where the first back-off began, along the heading
+  double least_along = 0.0;
+  std::string last_reason;
+  for (int cycle = 0; cycle < 1500; ++cycle) {
+    now_us_ += kCycleUs;
+    Inputs inputs = freshInputs(now_us_, path);
+    inputs.obstacles = Stamped<std::vector<Point>>{wall, now_us_};
+    const Output output = executive_.step(now_us_, inputs);
+    last_reason = output.status.reason;
+    const double along = pose_.position().dot(forward);
+    if (output.status.reason.find("stalled for") != std::string::npos && stalled_along > 0.5) {
+      stalled_along = along;
+    }
+    pose_ = testing::drive(pose_, output.command, kCycleUs * 1e-6);
+    least_along = std::min(least_along, pose_.position().dot(forward));
+  }
+  ASSERT_LT(stalled_along, 0.5) << "never stalled: " << last_reason;
+  EXPECT_LT(least_along, stalled_along - settings_.pusher.release_m + 0.05) << last_reason;
+}
+
 /// A door `width` wide (centred on x = 0) in a 0.2 m wall at y 0 .. 0.2, as obstacle points 5 cm apart.
 std::vector<Point> doorWalls(double width = 1.0)
 {
