@@ -1,6 +1,8 @@
 // sealPassage: where a passage the vehicle could not get through is closed, on hand-made (inflated)
 // obstacles.
 
+#include <algorithm>
+
 #include <gtest/gtest.h>
 
 #include "planner/core/passage_seal.hpp"
@@ -56,6 +58,29 @@ TEST(PassageSeal, ClosesTheNarrowestPointAcrossTheSegmentIntoTheInflation)
     EXPECT_TRUE(obstacles.isBlocked(beyond));
     EXPECT_GT(obstacles.distanceToBoundary(beyond), 0.25) << beyond.x();
   }
+}
+
+TEST(PassageSeal, ReachesAcrossPastAnObstacleTheSegmentCrosses)
+{
+  // A bar x 0 .. 2.0, y 1.0 .. 1.3 (inflated) across the segment, a wall from x 2.2: the vehicle north of
+  // the bar, its target south, the gap between the bar's end and the wall is what it could not pass. The
+  // narrowest free point lies a step off the bar, so its nearest obstacle is the bar, along the segment;
+  // the row must still reach across into the wall's inflation, closing the gap's mouth.
+  std::vector<graph::ObstacleLoop> loops;
+  loops.push_back(graph::loopFromPolygon({{0.0, 1.0}, {2.0, 1.0}, {2.0, 1.3}, {0.0, 1.3}}));
+  loops.push_back(graph::loopFromPolygon({{2.2, -2.0}, {4.0, -2.0}, {4.0, 4.0}, {2.2, 4.0}}));
+  const graph::ObstacleSet obstacles(std::move(loops));
+  const std::optional<PassageSeal> seal =
+      sealPassage(obstacles, geometry::Point(1.6, 2.3), geometry::Point(1.6, -0.5), 0.35, 0.15);
+  ASSERT_TRUE(seal);
+  EXPECT_LT(seal->half_width_m, 0.1);
+  EXPECT_TRUE(seal->centre.y() < 1.0 || seal->centre.y() > 1.3);
+  // The row ends inside the wall's inflation: the gap (x 2.0 .. 2.2) is closed at the bar's side.
+  double most_x = -1e9;
+  for (const geometry::Point& cell : seal->cells) {
+    most_x = std::max(most_x, cell.x());
+  }
+  EXPECT_GT(most_x, 2.2) << "row ends at x " << most_x;
 }
 
 TEST(PassageSeal, KeepsClearOfTheVehicle)
