@@ -16,7 +16,8 @@ std::optional<PassageSeal> sealPassage(const graph::ObstacleSet& obstacles, cons
     return std::nullopt;
   }
   const geometry::Point direction = along / length;
-  const double keep_clear_m = std::max(0.0, inflation_m) + cell_size_m;
+  const double inflation = std::max(0.0, inflation_m);
+  const double keep_clear_m = inflation + cell_size_m;
   // Integer steps of half a cell: fine enough to find the narrowest point of a channel a cell wide.
   const double step_m = 0.5 * cell_size_m;
   const auto steps = static_cast<int>(std::floor(length / step_m + 1e-9));
@@ -55,7 +56,7 @@ std::optional<PassageSeal> sealPassage(const graph::ObstacleSet& obstacles, cons
   // At least the vehicle's width (twice the inflation) each side: the nearest obstacle may lie along the
   // segment, not across it (a segment that crosses a pushed bar seals just past the bar's inflation, 2 cm
   // from it, and a row of 3 cells left the gap beside the bar's end open: tunnel-1 t2 sealed 72 times).
-  const double reach_m = std::max(seal.half_width_m, std::max(0.0, inflation_m)) + inflation_m;
+  const double reach_m = std::max(seal.half_width_m, inflation) + inflation_m;
   const auto most_cells = static_cast<int>(std::ceil(reach_m / cell_size_m));
   const auto cellsToward = [&](double side) {
     int count = 0;
@@ -70,7 +71,6 @@ std::optional<PassageSeal> sealPassage(const graph::ObstacleSet& obstacles, cons
   for (int offset = -right_cells; offset <= left_cells; ++offset) {
     seal.cells.push_back(seal.centre + static_cast<double>(offset) * cell_size_m * across);
   }
-  const double inflation = std::max(0.0, inflation_m);
   seal.across.start = seal.centre - (static_cast<double>(right_cells) * cell_size_m + inflation) * across;
   seal.across.end = seal.centre + (static_cast<double>(left_cells) * cell_size_m + inflation) * across;
   return seal;

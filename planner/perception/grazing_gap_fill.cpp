@@ -5,10 +5,12 @@
 #include <cstddef>
 #include <limits>
 
+#include "common/geometry/angle.hpp"
+
 namespace ifar::perception {
 namespace {
 
-constexpr double kTwoPi = 2.0 * M_PI;
+constexpr double kTwoPi = 2.0 * geometry::kPi;
 // Range noise allowed on top of the geometric spacing, metres.
 constexpr double kRangeNoiseM = 0.05;
 
@@ -33,7 +35,7 @@ void keepNearest(common::Span<const geometry::Point> points, bool movable, const
     if (!std::isfinite(range) || range <= 0.0) {
       continue;
     }
-    const double azimuth = std::atan2(offset.y(), offset.x()) + M_PI;  // 0 .. 2 pi
+    const double azimuth = std::atan2(offset.y(), offset.x()) + geometry::kPi;  // 0 .. 2 pi
     const std::size_t index = std::min(static_cast<std::size_t>(azimuth / bin_rad), bins.size() - 1);
     BinReturn& bin = bins[index];
     if (range < bin.range_m) {
@@ -48,7 +50,7 @@ void keepNearest(common::Span<const geometry::Point> points, bool movable, const
 bool onOneSurface(const BinReturn& first, const BinReturn& second, double min_incidence, double most_apart)
 {
   double angle = std::abs(second.azimuth_rad - first.azimuth_rad);
-  if (angle > M_PI) {
+  if (angle > geometry::kPi) {
     angle = kTwoPi - angle;
   }
   if (angle > most_apart || angle >= min_incidence) {

@@ -1,9 +1,9 @@
 #include "planner/perception/perception_pipeline.hpp"
 
 #include <chrono>
-#include <cmath>
 #include <vector>
 
+#include "common/geometry/angle.hpp"
 #include "planner/perception/classification.hpp"
 #include "planner/perception/grazing_gap_fill.hpp"
 #include "planner/perception/height_filter.hpp"
@@ -21,10 +21,9 @@ double millisecondsSince(Clock::time_point start)
 
 GrazingGapSettings grazingGapSettings(const PerceptionSettings& settings)
 {
-  constexpr double kRadiansPerDegree = M_PI / 180.0;
   GrazingGapSettings gaps;
-  gaps.azimuth_step_rad = settings.gap_fill_azimuth_step_deg * kRadiansPerDegree;
-  gaps.min_incidence_rad = settings.gap_fill_min_incidence_deg * kRadiansPerDegree;
+  gaps.azimuth_step_rad = geometry::radiansFromDegrees(settings.gap_fill_azimuth_step_deg);
+  gaps.min_incidence_rad = geometry::radiansFromDegrees(settings.gap_fill_min_incidence_deg);
   gaps.spacing_m = 0.5 * settings.cell_size_m;
   return gaps;
 }
