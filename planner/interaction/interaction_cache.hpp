@@ -27,10 +27,11 @@ class InteractionCache {
   /// The object's interactions, planned now when stale(); `replanned` tells whether the answer is new.
   /// A replan that finds fewer pushes than the plans in hand is not taken while only the object's own
   /// outline changed (same physics, centroid within `keep_radius_m` of where those plans were found, the
-  /// same surroundings in the window those plans were found in): a part of the object hidden in one view
-  /// and seen in the next must not make a push come and go frame by frame. The touch decides such a push
-  /// (AFFORDANCE, then invalidate()). The reference stays valid until the next call for the same object or
-  /// invalidate()/forget().
+  /// same static surroundings in the window those plans were found in): a part of the object hidden in one
+  /// view and seen in the next must not make a push come and go frame by frame. Other movable objects are
+  /// left out of that comparison: their outlines come and go with the view in the same way. The touch decides
+  /// such a push (AFFORDANCE, then invalidate()). The reference stays valid until the next call for the same
+  /// object or invalidate()/forget().
   const ObjectInteractions& interactionsFor(std::int64_t object_id, const LocalScene& scene,
                                             std::size_t movable_index, const ObjectPhysics& physics,
                                             bool& replanned);
@@ -57,15 +58,21 @@ class InteractionCache {
   struct Entry {
     Signature signature;
     ObjectInteractions interactions;
-    /// The view `interactions` were planned from (a kept view does not replace it).
+    /// The view `interactions` were planned from (a kept view does not replace it), and the same view's
+    /// static surroundings alone (background, no other movable object) in the same window.
     Signature planned;
+    Signature planned_static;
     bool valid = false;
   };
+
+  /// Which obstacles a signature's surroundings summarise.
+  enum class Neighbours { All, StaticOnly };
 
   /// The view's signature; its surroundings are summarised in `window`, by default the object's bounds
   /// grown by the connectivity window margin (which moves with the object's outline).
   Signature signatureOf(const LocalScene& scene, std::size_t movable_index, const ObjectPhysics& physics,
-                        const std::optional<Bounds>& window = std::nullopt) const;
+                        const std::optional<Bounds>& window = std::nullopt,
+                        Neighbours neighbours = Neighbours::All) const;
   bool same(const Signature& first, const Signature& second) const;
   bool sameSurroundings(const Signature& first, const Signature& second) const;
   /// True when `entry` (valid) keeps its plans against `fresh`, planned from the view `signature` of

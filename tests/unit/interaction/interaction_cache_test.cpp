@@ -134,6 +134,27 @@ TEST(InteractionCacheTest, TheSurroundingsOfAKeptViewAreComparedInTheWindowThePl
   EXPECT_FALSE(replanned);
 }
 
+TEST(InteractionCacheTest, ANeighbouringObjectSeenInPartDoesNotDropThePlansInHand)
+{
+  // A second object 2 m up-left of the door, inside the box's window. Seen whole (1 m^2) with the box,
+  // then seen by one face (0.3 m^2) while the box is seen as the bar: the vehicle came closer, nothing
+  // moved. Its outline changes with the view as the box's does, so the two pushes stay.
+  LocalScene box = test::doorwayScene();
+  box.movable.push_back(test::rectangle(-3.0, 2.0, -2.0, 3.0));
+  LocalScene bar = barThroughTheDoorScene();
+  bar.movable.push_back(test::rectangle(-3.0, 2.0, -2.7, 3.0));
+  InteractionCache cache(defaultSettings());
+  const ObjectPhysics physics{0.4, 20.0};
+  bool replanned = false;
+  ASSERT_EQ(foundPushes(cache.interactionsFor(5, box, 0, physics, replanned)), 2U);
+  EXPECT_EQ(foundPushes(cache.interactionsFor(5, bar, 0, physics, replanned)), 2U);
+  EXPECT_FALSE(replanned);
+  // The neighbour still counts for whether a view is new: seen whole again beside the bar, it is.
+  LocalScene bar_beside_whole = bar;
+  bar_beside_whole.movable[1] = box.movable[1];
+  EXPECT_TRUE(cache.stale(5, bar_beside_whole, 0, physics));
+}
+
 TEST(InteractionCacheTest, FewerPushesAreTakenWithNewSurroundingsNewPhysicsOrAfterInvalidate)
 {
   const ObjectPhysics physics{0.4, 20.0};
