@@ -118,6 +118,17 @@ TEST(InteractionCacheTest, AViewOfTheUnmovedObjectWithFewerPushesKeepsThePlansIn
   EXPECT_TRUE(replanned);
 }
 
+/// Plans the view `first` of the box (two pushes), then asks for the view `second`: the two pushes are
+/// kept, not planned again.
+void expectThePushesKept(InteractionCache& cache, const LocalScene& first, const LocalScene& second)
+{
+  const ObjectPhysics physics{0.4, 20.0};
+  bool replanned = false;
+  ASSERT_EQ(foundPushes(cache.interactionsFor(5, first, 0, physics, replanned)), 2U);
+  EXPECT_EQ(foundPushes(cache.interactionsFor(5, second, 0, physics, replanned)), 2U);
+  EXPECT_FALSE(replanned);
+}
+
 TEST(InteractionCacheTest, TheSurroundingsOfAKeptViewAreComparedInTheWindowThePlansWereFoundIn)
 {
   // A wall 5 m east of the door: outside the box's window (its bounds grown by 3 m), inside the bar's.
@@ -126,12 +137,8 @@ TEST(InteractionCacheTest, TheSurroundingsOfAKeptViewAreComparedInTheWindowThePl
   LocalScene bar = barThroughTheDoorScene();
   bar.background = box.background;
   InteractionCache cache(defaultSettings());
-  const ObjectPhysics physics{0.4, 20.0};
-  bool replanned = false;
-  ASSERT_EQ(foundPushes(cache.interactionsFor(5, box, 0, physics, replanned)), 2U);
   // The bar's longer outline takes in 2 m^2 more wall; where the pushes were found, nothing changed.
-  EXPECT_EQ(foundPushes(cache.interactionsFor(5, bar, 0, physics, replanned)), 2U);
-  EXPECT_FALSE(replanned);
+  expectThePushesKept(cache, box, bar);
 }
 
 TEST(InteractionCacheTest, ANeighbouringObjectSeenInPartDoesNotDropThePlansInHand)
@@ -144,15 +151,11 @@ TEST(InteractionCacheTest, ANeighbouringObjectSeenInPartDoesNotDropThePlansInHan
   LocalScene bar = barThroughTheDoorScene();
   bar.movable.push_back(test::rectangle(-3.0, 2.0, -2.7, 3.0));
   InteractionCache cache(defaultSettings());
-  const ObjectPhysics physics{0.4, 20.0};
-  bool replanned = false;
-  ASSERT_EQ(foundPushes(cache.interactionsFor(5, box, 0, physics, replanned)), 2U);
-  EXPECT_EQ(foundPushes(cache.interactionsFor(5, bar, 0, physics, replanned)), 2U);
-  EXPECT_FALSE(replanned);
+  expectThePushesKept(cache, box, bar);
   // The neighbour still counts for whether a view is new: seen whole again beside the bar, it is.
   LocalScene bar_beside_whole = bar;
   bar_beside_whole.movable[1] = box.movable[1];
-  EXPECT_TRUE(cache.stale(5, bar_beside_whole, 0, physics));
+  EXPECT_TRUE(cache.stale(5, bar_beside_whole, 0, ObjectPhysics{0.4, 20.0}));
 }
 
 TEST(InteractionCacheTest, FewerPushesAreTakenWithNewSurroundingsNewPhysicsOrAfterInvalidate)
