@@ -56,7 +56,7 @@ std::optional<PassageSeal> sealPassage(const graph::ObstacleSet& obstacles, cons
   // At least the vehicle's width (twice the inflation) each side: the nearest obstacle may lie along the
   // segment, not across it (a segment that crosses a pushed bar seals just past the bar's inflation, 2 cm
   // from it, and a row of 3 cells left the gap beside the bar's end open: tunnel-1 t2 sealed 72 times).
-  const double reach_m = std::max(seal.half_width_m, inflation) + inflation_m;
+  const double reach_m = std::max(seal.half_width_m, inflation) + inflation;
   const auto most_cells = static_cast<int>(std::ceil(reach_m / cell_size_m));
   const auto cellsToward = [&](double side) {
     int count = 0;

@@ -111,8 +111,8 @@ bool InteractionCache::keepsPlans(const Entry& entry, const LocalScene& scene, s
   // and a 24 m way round from 150 to 260 s).
   return entry.valid && foundCount(fresh) < foundCount(entry.interactions) &&
          (signature.object_centroid - entry.planned.object_centroid).norm() <= keep_radius_m_ &&
-         sameSurroundings(entry.planned_static, signatureOf(scene, movable_index, signature.physics,
-                                                            entry.planned.window, Neighbours::StaticOnly));
+         sameSurroundings(entry.planned, signatureOf(scene, movable_index, signature.physics,
+                                                     entry.planned.window, Neighbours::StaticOnly));
 }
 
 bool InteractionCache::stale(std::int64_t object_id, const LocalScene& scene, std::size_t movable_index,
@@ -140,9 +140,7 @@ const ObjectInteractions& InteractionCache::interactionsFor(std::int64_t object_
     }
     entry.signature = signature;
     entry.interactions = std::move(fresh);
-    entry.planned = signature;
-    entry.planned_static =
-        signatureOf(scene, movable_index, physics, signature.window, Neighbours::StaticOnly);
+    entry.planned = signatureOf(scene, movable_index, physics, signature.window, Neighbours::StaticOnly);
     entry.valid = true;
   }
   return entry.interactions;

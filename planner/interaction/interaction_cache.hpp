@@ -58,10 +58,9 @@ class InteractionCache {
   struct Entry {
     Signature signature;
     ObjectInteractions interactions;
-    /// The view `interactions` were planned from (a kept view does not replace it), and the same view's
-    /// static surroundings alone (background, no other movable object) in the same window.
+    /// The view `interactions` were planned from (a kept view does not replace it), its surroundings
+    /// summarised without other movable objects (only keepsPlans() reads it).
     Signature planned;
-    Signature planned_static;
     bool valid = false;
   };
 
