@@ -12,6 +12,7 @@
 #include "planner/core/passage_seal.hpp"
 #include "planner/graph/graph_file.hpp"
 #include "planner/graph/merge.hpp"
+#include "planner/graph/path_check.hpp"
 #include "planner/graph/visibility_builder.hpp"
 #include "planner/perception/line_of_sight.hpp"
 #include "planner/perception/motion_compensation.hpp"
@@ -409,7 +410,6 @@ void Planner::search(FrameResult& result)
     appendMessage(status.message, "goal lies outside the observed map: attempted through unknown space");
   }
   const Clock::time_point start = Clock::now();
-  const graph::SearchGraph search_graph = graph::SearchGraph::fromDvGraph(global_);
   graph::RoutePreference preference;
   if (settings_.graph.route_preference > 0.0 && last_path_.valid && last_path_.goal_id == goal_->id) {
     preference.discount = settings_.graph.route_preference;
@@ -426,9 +426,33 @@ void Planner::search(FrameResult& result)
       return settings_.graph.unseen_cost * seen_.unseenLength(from, to);
     };
   }
-  const graph::SearchResult found =
-      graph::findPath(search_graph, *obstacles_, *robot_, goal_->position, scratch_, preference, unseen);
+  // An edge the path takes may cross an obstacle seen since it was made (path_check.hpp): drop it and
+  // search again. Each round drops at least one edge; the cap only bounds a frame's time.
+  constexpr int kEdgeCheckRounds = 8;
+  constexpr double kEdgeEndMarginM = 0.25;
+  graph::SearchResult found;
+  std::size_t dropped_edges = 0;
+  for (int round = 0;; ++round) {
+    const graph::SearchGraph search_graph = graph::SearchGraph::fromDvGraph(global_);
+    found =
+        graph::findPath(search_graph, *obstacles_, *robot_, goal_->position, scratch_, preference, unseen);
+    if (found.status != graph::SearchStatus::Found || round == kEdgeCheckRounds) {
+      break;
+    }
+    const std::vector<std::pair<graph::VertexId, graph::VertexId>> blocked =
+        graph::blockedPathEdges(found.path, *obstacles_, kEdgeEndMarginM);
+    if (blocked.empty()) {
+      break;
+    }
+    for (const auto& [from, to] : blocked) {
+      dropped_edges += global_.removeVisibilityEdge(from, to) ? 1 : 0;
+    }
+  }
   status.timings.search_ms = millisecondsSince(start);
+  if (dropped_edges > 0) {
+    appendMessage(status.message,
+                  fmt::format("dropped {} graph edges that this frame's obstacles block", dropped_edges));
+  }
 
   PlannedPath path;
   path.goal_id = goal_->id;

@@ -355,6 +355,34 @@ TEST(PlannerCore, SavedGraphLoadsAsPriorMap)
   EXPECT_EQ(graph::serializeGraph(second.graph()), graph::serializeGraph(first.graph()));
 }
 
+// A prior map's edge that an obstacle now crosses (the merge keeps it: neither end is observed) is
+// dropped when the search takes it, and the path goes round the box.
+TEST(PlannerCore, AGraphEdgeThroughAnObstacleSeenSinceIsDroppedWhenTheSearchTakesIt)
+{
+  const std::vector<FrameInput> frames = pushRoomFrames();
+  ASSERT_GE(frames.size(), 2U);
+  graph::DvGraph prior;
+  graph::Vertex vertex;
+  vertex.kind = graph::VertexKind::TopologicalWaypoint;
+  vertex.position = geometry::Point(2.2, 6.0);  // beside the vehicle, 0.7 m from the box's corners
+  const graph::VertexId west = prior.addVertex(vertex);
+  vertex.position = geometry::Point(5.8, 6.0);  // beside the goal
+  const graph::VertexId east = prior.addVertex(vertex);
+  ASSERT_EQ(prior.addVisibilityEdge(west, east), graph::EdgeStatus::Added);  // through the box
+  const std::string path = std::string(IFAR_BINARY_DIR) + "/planner_core_stale_edge_graph.txt";
+  ASSERT_EQ(graph::saveGraph(prior, path), "");
+
+  Planner planner{PlannerSettings{}};
+  ASSERT_EQ(planner.loadPriorGraph(path), "");
+  ASSERT_TRUE(planner.setGoal(Goal{7, geometry::Point(6.0, 6.0)}));
+  const FrameResult result = planner.processFrame(frames[1]);
+  ASSERT_TRUE(result.path.valid) << result.status.message;
+  EXPECT_GT(result.path.length_m, 4.0 + 1e-3) << "the 4.0 m way through the box";
+  EXPECT_LT(result.path.length_m, 5.5);
+  EXPECT_FALSE(planner.graph().hasVisibilityEdge(west, east));
+  EXPECT_NE(result.status.message.find("dropped 1 graph edges"), std::string::npos) << result.status.message;
+}
+
 TEST(PlannerCore, ReplanAnswersANewGoalWithoutANewFrame)
 {
   const std::vector<FrameInput> frames = pushRoomFrames();
