@@ -426,8 +426,9 @@ void Planner::search(FrameResult& result)
       return settings_.graph.unseen_cost * seen_.unseenLength(from, to);
     };
   }
-  // An edge the path takes may cross an obstacle seen since it was made (path_check.hpp): drop it and
-  // search again. Each round drops at least one edge; the cap only bounds a frame's time.
+  // An edge the path takes may cross an obstacle seen since it was made (path_check.hpp): drop it, with
+  // the other blocked edges of its two ends, and search again. Each round drops at least one edge; the
+  // cap only bounds a frame's time.
   constexpr int kEdgeCheckRounds = 8;
   constexpr double kEdgeEndMarginM = 0.25;
   graph::SearchResult found;
@@ -444,7 +445,15 @@ void Planner::search(FrameResult& result)
     if (blocked.empty()) {
       break;
     }
+    std::vector<std::pair<graph::VertexId, graph::VertexId>> stale = blocked;
     for (const auto& [from, to] : blocked) {
+      for (const graph::VertexId end : {from, to}) {
+        const std::vector<std::pair<graph::VertexId, graph::VertexId>> others =
+            graph::blockedEdgesOf(global_, end, *obstacles_, kEdgeEndMarginM);
+        stale.insert(stale.end(), others.begin(), others.end());
+      }
+    }
+    for (const auto& [from, to] : stale) {
       dropped_edges += global_.removeVisibilityEdge(from, to) ? 1 : 0;
     }
   }

@@ -20,4 +20,10 @@ namespace ifar::graph {
 std::vector<std::pair<VertexId, VertexId>> blockedPathEdges(const std::vector<PathPoint>& path,
                                                             const ObstacleSet& obstacles, double end_margin);
 
+/// Every visibility edge of `vertex` that `obstacles` block, tested as above. Where one edge of a vertex
+/// is stale, others usually are too (the vertex's wall was seen anew and the vertex waits out its unseen
+/// votes), and each would otherwise cost the search another round.
+std::vector<std::pair<VertexId, VertexId>> blockedEdgesOf(const DvGraph& graph, VertexId vertex,
+                                                          const ObstacleSet& obstacles, double end_margin);
+
 }  // namespace ifar::graph

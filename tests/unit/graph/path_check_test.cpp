@@ -53,5 +53,28 @@ TEST(PathCheck, AnEdgeEndingJustInsideAnObstacleIsKeptWithinTheMargin)
   EXPECT_EQ(blockedPathEdges(deep, oneCell(), 0.25).size(), 1U);
 }
 
+TEST(PathCheck, TheBlockedEdgesOfAVertexAreAllFound)
+{
+  DvGraph graph;
+  Vertex vertex;
+  vertex.position = Point(0.5, 2.5);
+  const VertexId west = graph.addVertex(vertex);
+  vertex.position = Point(4.5, 2.5);  // behind the cell
+  const VertexId east = graph.addVertex(vertex);
+  vertex.position = Point(4.5, 2.9);  // behind the cell
+  const VertexId east_higher = graph.addVertex(vertex);
+  vertex.position = Point(0.5, 4.5);  // in the clear
+  const VertexId north = graph.addVertex(vertex);
+  for (const VertexId other : {east, east_higher, north}) {
+    ASSERT_EQ(graph.addVisibilityEdge(west, other), EdgeStatus::Added);
+  }
+  const std::vector<std::pair<VertexId, VertexId>> blocked = blockedEdgesOf(graph, west, oneCell(), 0.25);
+  ASSERT_EQ(blocked.size(), 2U);
+  EXPECT_EQ(blocked[0], std::make_pair(west, east));
+  EXPECT_EQ(blocked[1], std::make_pair(west, east_higher));
+  EXPECT_TRUE(blockedEdgesOf(graph, north, oneCell(), 0.25).empty());
+  EXPECT_TRUE(blockedEdgesOf(graph, VertexId{99}, oneCell(), 0.25).empty());
+}
+
 }  // namespace
 }  // namespace ifar::graph
