@@ -445,7 +445,8 @@ void Planner::search(FrameResult& result)
     if (blocked.empty()) {
       break;
     }
-    std::vector<std::pair<graph::VertexId, graph::VertexId>> stale = blocked;
+    // The sweep of `from` finds the path's own edge again (the same test), so it needs no copy here.
+    std::vector<std::pair<graph::VertexId, graph::VertexId>> stale;
     for (const auto& [from, to] : blocked) {
       for (const graph::VertexId end : {from, to}) {
         const std::vector<std::pair<graph::VertexId, graph::VertexId>> others =
