@@ -130,6 +130,24 @@ double meanOptimal(const std::vector<ResultRow>& rows, const std::string& kind)
   return count > 0 ? sum / count : NAN;
 }
 
+/// Mean SPL of a vehicle that drives each task's achievable path (static obstacles inflated, objects too
+/// heavy to push as obstacles) against the ground truth; a task with no achievable path scores 0. NaN when
+/// a row's achievable length is unknown.
+double achievableSpl(const std::vector<const ResultRow*>& rows)
+{
+  if (rows.empty()) {
+    return NAN;
+  }
+  double sum = 0.0;
+  for (const ResultRow* row : rows) {
+    if (std::isnan(row->achievable)) {
+      return NAN;
+    }
+    sum += successWeightedByPathLength(std::isfinite(row->achievable), row->optimal, row->achievable);
+  }
+  return sum / static_cast<double>(rows.size());
+}
+
 bool anyRunnerRows(const std::vector<ResultRow>& rows)
 {
   return std::any_of(rows.begin(), rows.end(), [](const ResultRow& row) {
@@ -337,13 +355,20 @@ std::string targetCheck(const std::vector<ResultRow>& rows)
   const auto spl_line = [&](const std::string& table, const std::string& kind, double target) {
     const auto selected = select(rows, table, "ours", kind);
     const double spl = meanSpl(selected);
+    // Driven, the most any vehicle scores is driving each achievable path: when that is below the target,
+    // the world, not the planner, decides the verdict.
+    const double ceiling = table == "system" ? achievableSpl(selected) : NAN;
+    const std::string beside =
+        std::isfinite(ceiling) ? "; driving the achievable paths: " + fixed(ceiling, 3) : std::string();
+    std::string verdict = !std::isfinite(spl) ? "not measured"
+                          : spl >= target     ? "met"
+                                              : "missed by " + fixed(target - spl, 3);
+    if (std::isfinite(spl) && spl < target && ceiling < target) {
+      verdict += ", beyond any vehicle in these worlds";
+    }
     text += "| SPL " + kind + " >= " + fixed(target, 2) + " (" + (table == "system" ? "driven" : "planned") +
             ") | " + fixed(spl, 3) + ", success " + std::to_string(successes(selected)) + "/" +
-            std::to_string(selected.size()) + " | " +
-            (!std::isfinite(spl) ? "not measured"
-             : spl >= target     ? "met"
-                                 : "missed by " + fixed(target - spl, 3)) +
-            " |\n";
+            std::to_string(selected.size()) + beside + " | " + verdict + " |\n";
   };
   // Planned is the paper's Table II (paths on the known map, as its A*, RRT* and BIT* rows); driven is
   // what the vehicle travelled exploring the unknown world in the runner.
