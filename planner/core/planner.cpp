@@ -445,17 +445,19 @@ void Planner::search(FrameResult& result)
     if (blocked.empty()) {
       break;
     }
-    // The sweep of `from` finds the path's own edge again (the same test), so it needs no copy here.
-    std::vector<std::pair<graph::VertexId, graph::VertexId>> stale;
+    // Each end once (consecutive blocked steps share one); the sweep of an end finds the path's own edge
+    // again (the same test), so it needs no copy here.
+    std::vector<graph::VertexId> ends;
     for (const auto& [from, to] : blocked) {
-      for (const graph::VertexId end : {from, to}) {
-        const std::vector<std::pair<graph::VertexId, graph::VertexId>> others =
-            graph::blockedEdgesOf(global_, end, *obstacles_, kEdgeEndMarginM);
-        stale.insert(stale.end(), others.begin(), others.end());
-      }
+      ends.push_back(from);
+      ends.push_back(to);
     }
-    for (const auto& [from, to] : stale) {
-      dropped_edges += global_.removeVisibilityEdge(from, to) ? 1 : 0;
+    std::sort(ends.begin(), ends.end());
+    ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
+    for (const graph::VertexId end : ends) {
+      for (const auto& [from, to] : graph::blockedEdgesOf(global_, end, *obstacles_, kEdgeEndMarginM)) {
+        dropped_edges += global_.removeVisibilityEdge(from, to) ? 1 : 0;
+      }
     }
   }
   status.timings.search_ms = millisecondsSince(start);
