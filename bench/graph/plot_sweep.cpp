@@ -18,14 +18,14 @@
 #include <utility>
 #include <vector>
 
-#include "tools/render/canvas.hpp"
+#include "viz/canvas.hpp"
 
 namespace ifar::graph::bench {
 namespace {
 
 using geometry::Point;
-using render::Canvas;
-using render::Color;
+using viz::Canvas;
+using viz::Color;
 
 struct SweepPoint {
   double vertices = 0.0;

@@ -7,12 +7,12 @@
 #include "bench/scenarios/search_suite.hpp"
 #include "common/vehicle.hpp"
 #include "sim/world/world_geometry.hpp"
-#include "tools/render/canvas.hpp"
+#include "viz/canvas.hpp"
 
 namespace ifar::scenarios {
 namespace {
 
-using render::Color;
+using viz::Color;
 
 Color plannerColor(const std::string& planner)
 {
@@ -80,8 +80,8 @@ std::string writeTimeVsGraphSizePlot(const std::vector<ResultRow>& rows, const s
     return geometry::Point(left + (x - x_min) / (x_max - x_min) * width,
                            bottom + (y - y_min) / (y_max - y_min) * height);
   };
-  render::Canvas canvas(geometry::Point(0.0, 0.0),
-                        geometry::Point(left + width + 40.0, bottom + height + 50.0), 1.0);
+  viz::Canvas canvas(geometry::Point(0.0, 0.0), geometry::Point(left + width + 40.0, bottom + height + 50.0),
+                     1.0);
   const Color axis = Color::gray(40);
   const Color grid = Color::gray(225);
   // The limits are whole decades: one grid line and label per power of ten.
@@ -101,7 +101,7 @@ std::string writeTimeVsGraphSizePlot(const std::vector<ResultRow>& rows, const s
                   "DV-graph vertices of the world (planning map, log)", axis);
   canvas.drawText(geometry::Point(left + 200.0, bottom + height + 25.0),
                   "search time per query, CPU ms (log)", axis);
-  std::vector<render::LegendEntry> legend;
+  std::vector<viz::LegendEntry> legend;
   for (const std::string& planner : searchPlanners()) {
     legend.push_back({planner, plannerColor(planner)});
   }
@@ -125,7 +125,7 @@ std::string writePathPlot(const sim::World& world, const std::vector<PathPair>& 
   const geometry::Point margin(2.0, 2.0);
   // Room for the title under the world (the legend takes the top-left corner).
   const geometry::Point title_room(0.0, 40.0 * metres_per_pixel);
-  render::Canvas canvas(world.bounds_min - margin - title_room, world.bounds_max + margin, metres_per_pixel);
+  viz::Canvas canvas(world.bounds_min - margin - title_room, world.bounds_max + margin, metres_per_pixel);
   const Color wall = Color::gray(90);
   for (const sim::StaticObstacle& obstacle : world.obstacles) {
     canvas.drawPolygon(obstacle.outline, {wall, wall, 1});

@@ -1,5 +1,5 @@
 #pragma once
-// Tables II and III (system level): the headless runner (sim/runner, contract C) drives the vehicle
+// Tables II and III (system level): the headless runner (system/) drives the vehicle
 // through a task with FAR mode or ours. CMake builds this against the runner when the ifar_runner target
 // exists (system_runs_runner.cpp) and otherwise against a stand-in that reports "runner unavailable"
 // (system_runs_unavailable.cpp), so Tables II and III always come out of the same command.

@@ -1,10 +1,10 @@
-// Built when the headless runner (sim/runner, target ifar_runner) exists: Tables II and III for real.
+// Built when the headless runner (system/, target ifar_runner) exists: Tables II and III for real.
 #include <exception>
 #include <stdexcept>
 
 #include "bench/scenarios/system_runs.hpp"
-#include "sim/runner/run_config.hpp"
-#include "sim/runner/scenario_runner.hpp"
+#include "system/run_config.hpp"
+#include "system/scenario_runner.hpp"
 
 namespace ifar::scenarios {
 

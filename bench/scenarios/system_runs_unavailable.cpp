@@ -1,4 +1,4 @@
-// Built when sim/runner (target ifar_runner) does not exist: every system run is reported, not faked.
+// Built when system/ (target ifar_runner) does not exist: every system run is reported, not faked.
 #include "bench/scenarios/system_runs.hpp"
 
 namespace ifar::scenarios {
@@ -18,7 +18,7 @@ SystemRun SystemRunner::run(const sim::World& /*world*/, const Task& /*task*/, b
                             double /*max_sim_time_s*/) const
 {
   SystemRun run;
-  run.reason = "runner unavailable: this build has no sim/runner (target ifar_runner)";
+  run.reason = "runner unavailable: this build has no system/ (target ifar_runner)";
   return run;
 }
 

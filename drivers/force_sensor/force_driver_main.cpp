@@ -7,19 +7,18 @@
 #include <cstdint>
 #include <string>
 
-#include "common/bus/heartbeat.hpp"
-#include "common/bus/run_loop.hpp"
+#include "bus/heartbeat.hpp"
+#include "bus/run_loop.hpp"
 #include "common/daemon_main.hpp"
 #include "common/rate_limiter.hpp"
 #include "common/time.hpp"
 #include "drivers/can/error_frame.hpp"
 #include "drivers/can/lcm_bridge_bus.hpp"
 #include "drivers/can/open_bus.hpp"
-#include "drivers/force_sensor/force_monitor.hpp"
+#include "drivers/force_sensor/force_driver_node.hpp"
 #include "drivers/force_sensor/force_sensor_config.hpp"
 #include "drivers/motor/motor_config.hpp"
 #include "ifar/can_bus_status_t.hpp"
-#include "ifar/force_t.hpp"
 
 namespace {
 
@@ -63,17 +62,6 @@ std::int8_t toLcmState(ifar::can::BusState state)
   return ifar::can_bus_status_t::STATE_ACTIVE;
 }
 
-ifar::force_t toMessage(const ifar::force_sensor::ForceSample& sample, std::int64_t utime)
-{
-  ifar::force_t message{};
-  message.utime = utime;
-  message.force_n = static_cast<float>(sample.force_newtons);
-  message.counter = sample.counter;
-  message.status = sample.status;
-  message.frames_bad = sample.frames_bad;
-  return message;
-}
-
 int run(ifar::common::DaemonContext& context)
 {
   const DriverSettings settings = loadSettings(context.config);
@@ -92,11 +80,8 @@ int run(ifar::common::DaemonContext& context)
               ifar::can::toString(settings.bus.kind));
   const bool republish_raw = settings.bus.kind != ifar::can::BusKind::kLcm;
 
-  ifar::force_sensor::ForceMonitor monitor(settings.monitor);
-  ifar::common::RateLimiter bad_frame_log(ifar::common::kMicrosecondsPerSecond);
-  std::int64_t unknown_frames = 0;
-  std::int64_t last_silent_publish_us = 0;
-  std::int32_t last_status = -1;
+  ifar::force_sensor::ForceDriverNode node(settings.monitor, context.logger);
+  ifar::common::RateLimiter bus_error_log(ifar::common::kMicrosecondsPerSecond);
   ifar::can::BusState last_bus_state = bus.state();
   // A replayed log is paced as it was recorded: frame time + offset = wall time.
   std::int64_t replay_offset_us = 0;
@@ -121,23 +106,8 @@ int run(ifar::common::DaemonContext& context)
       }
       return;
     }
-    const auto verdict = monitor.onFrame(frame, now_us);
-    if (verdict == ifar::force_sensor::FrameVerdict::kIgnored) {
-      ++unknown_frames;
-      return;
-    }
-    if (verdict == ifar::force_sensor::FrameVerdict::kBad) {
-      if (bad_frame_log.allow(now_us)) {
-        logger.warn("bad force sensor frame (dlc {}) skipped; {} bad so far", frame.dlc,
-                    monitor.sample(now_us).frames_bad);
-      }
-      return;
-    }
-    const auto sample = monitor.sample(now_us);
-    loop.publish(settings.force_channel, toMessage(sample, frame.timestamp_us));
-    if (sample.status != last_status) {
-      logger.info("force sensor status {} -> {}", last_status, sample.status);
-      last_status = sample.status;
+    if (const auto force = node.onFrame(frame, now_us)) {
+      loop.publish(settings.force_channel, *force);
     }
   };
 
@@ -170,7 +140,7 @@ int run(ifar::common::DaemonContext& context)
       }
       const auto result = bus.receive(std::chrono::microseconds(0));
       if (result.status == ifar::can::IoStatus::kError) {
-        if (bad_frame_log.allow(now_us)) {
+        if (bus_error_log.allow(now_us)) {
           logger.error("{}", result.error);
         }
         break;
@@ -180,17 +150,8 @@ int run(ifar::common::DaemonContext& context)
       }
       handleFrame(result.frame);
     }
-    // A silent sensor is reported every timeout period, so listeners see the flag without the frames.
-    const auto sample = monitor.sample(now_us);
-    if ((sample.status & ifar::force_sensor::kHealthSilent) != 0 &&
-        now_us - last_silent_publish_us >= settings.monitor.silence_timeout_us) {
-      loop.publish(settings.force_channel, toMessage(sample, now_us));
-      last_silent_publish_us = now_us;
-      if (sample.status != last_status) {
-        logger.warn("force sensor silent: no valid frame for {} ms",
-                    settings.monitor.silence_timeout_us / 1000);
-        last_status = sample.status;
-      }
+    if (const auto silent = node.silenceReport(now_us)) {
+      loop.publish(settings.force_channel, *silent);
     }
   };
 
@@ -205,9 +166,9 @@ int run(ifar::common::DaemonContext& context)
     status.frames_sent = counters.frames_sent;
     status.error_frames = counters.error_frames;
     status.write_errors = counters.write_errors;
-    status.bad_frames = counters.bad_frames + monitor.sample(status.utime).frames_bad + unknown_frames;
+    status.bad_frames = counters.bad_frames + node.sample(status.utime).frames_bad + node.unknownFrames();
     loop.publish(settings.status_channel, status);
-    const auto suppressed = bad_frame_log.takeSuppressed();
+    const auto suppressed = node.takeSuppressedWarnings();
     if (suppressed > 0) {
       logger.warn("{} more bad-frame reports suppressed", suppressed);
     }

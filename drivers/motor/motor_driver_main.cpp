@@ -9,8 +9,8 @@
 #include <filesystem>
 #include <string>
 
-#include "common/bus/heartbeat.hpp"
-#include "common/bus/run_loop.hpp"
+#include "bus/heartbeat.hpp"
+#include "bus/run_loop.hpp"
 #include "common/daemon_main.hpp"
 #include "common/rate_limiter.hpp"
 #include "common/time.hpp"

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "common/bus/heartbeat.hpp"
-#include "common/bus/run_loop.hpp"
+#include "bus/heartbeat.hpp"
+#include "bus/run_loop.hpp"
 #include "common/daemon_main.hpp"
 #include "common/time.hpp"
 #include "drivers/velodyne/driver_settings.hpp"
@@ -40,6 +40,23 @@ class StatusClock {
  private:
   std::int64_t last_us_ = common::monotonicMicroseconds();
 };
+
+/// Checks one datagram and publishes it when it passes.
+void forwardDatagram(bus::RunLoop& loop, PacketForwarder& forwarder, std::uint16_t port,
+                     common::ByteView payload, std::int64_t receive_time_us)
+{
+  if (const std::optional<ForwardedPacket> forwarded = forwarder.onDatagram(port, payload, receive_time_us)) {
+    loop.publish(forwarded->channel, forwarded->packet);
+    forwarder.notePublished(receive_time_us, common::nowMicroseconds());
+  }
+}
+
+void publishStatus(bus::RunLoop& loop, const DriverSettings& settings, PacketForwarder& forwarder,
+                   StatusClock& status_clock)
+{
+  loop.publish(settings.status_channel,
+               forwarder.statusReport(status_clock.takeInterval(), common::nowMicroseconds()));
+}
 
 int runUdp(const DriverSettings& settings, bus::RunLoop& loop, PacketForwarder& forwarder,
            spdlog::logger& logger)
@@ -87,10 +104,10 @@ int runUdp(const DriverSettings& settings, bus::RunLoop& loop, PacketForwarder& 
           break;
         }
         if (datagram.wire_size > datagram.payload.size()) {
-          forwarder.onOversizedDatagram(receiver.port(), datagram.wire_size);
+          forwarder.onOversizedDatagram(receiver.port(), datagram.wire_size, common::nowMicroseconds());
           continue;
         }
-        forwarder.onDatagram(receiver.port(), datagram.payload, datagram.receive_time_us);
+        forwardDatagram(loop, forwarder, receiver.port(), datagram.payload, datagram.receive_time_us);
       }
     }
     loop.spinOnce(0);
@@ -148,7 +165,7 @@ int runPcap(const ReplayOptions& replay, const DriverSettings& settings, bus::Ru
       }
     }
     // Host receive time of a replayed packet is the time it is sent on, as for a live sensor.
-    forwarder.onDatagram(datagram.destination_port, datagram.payload, common::nowMicroseconds());
+    forwardDatagram(loop, forwarder, datagram.destination_port, datagram.payload, common::nowMicroseconds());
     loop.spinOnce(0);
   }
   logger.info("replay finished: {} packets published, {} bad, {} records skipped",
@@ -174,14 +191,14 @@ int main(int argc, char** argv)
         context.config.rejectUnknownKeys();
         bus::RunLoop loop(context.lcm_url, context.logger);
         bus::publishHeartbeats(loop, context.logger->name());
-        velodyne::PacketForwarder forwarder(settings, loop, context.logger);
+        velodyne::PacketForwarder forwarder(settings, context.logger);
         velodyne::StatusClock status_clock;
         loop.every(settings.status_period_s,
-                   [&forwarder, &status_clock] { forwarder.publishStatus(status_clock.takeInterval()); });
+                   [&] { velodyne::publishStatus(loop, settings, forwarder, status_clock); });
         const int result = replay.pcap_path.empty()
                                ? velodyne::runUdp(settings, loop, forwarder, *context.logger)
                                : velodyne::runPcap(replay, settings, loop, forwarder, *context.logger);
-        forwarder.publishStatus(status_clock.takeInterval());
+        velodyne::publishStatus(loop, settings, forwarder, status_clock);
         return result;
       },
       [&replay](CLI::App& app) {

@@ -5,67 +5,66 @@
 
 #include "common/time.hpp"
 #include "drivers/velodyne/packet_format.hpp"
-#include "ifar/velodyne_packet_t.hpp"
-#include "ifar/velodyne_status_t.hpp"
 
 namespace ifar::velodyne {
 
-PacketForwarder::PacketForwarder(const DriverSettings& settings, bus::RunLoop& loop,
-                                 std::shared_ptr<spdlog::logger> logger)
+PacketForwarder::PacketForwarder(const DriverSettings& settings, std::shared_ptr<spdlog::logger> logger)
     : settings_(settings),
-      loop_(loop),
       logger_(std::move(logger)),
       bad_packet_log_limiter_(common::secondsToMicroseconds(settings.bad_packet_log_interval_s))
 {
 }
 
-void PacketForwarder::onDatagram(std::uint16_t port, common::ByteView payload, std::int64_t receive_time_us)
+std::optional<ForwardedPacket> PacketForwarder::onDatagram(std::uint16_t port, common::ByteView payload,
+                                                           std::int64_t receive_time_us)
 {
   monitor_.recordReceived();
   if (port == settings_.data_port) {
     const PacketInfo info = inspectPacket(payload);
     if (info.status != PacketStatus::kOk) {
-      reject(std::string("data packet (") + std::to_string(payload.size()) +
-             " bytes): " + toString(info.status));
-      return;
+      reject(
+          std::string("data packet (") + std::to_string(payload.size()) + " bytes): " + toString(info.status),
+          receive_time_us);
+      return std::nullopt;
     }
     monitor_.recordValid(info);
-    publish(settings_.data_channel, port, payload, receive_time_us, info.device_time_past_hour);
-    return;
+    return forward(settings_.data_channel, port, payload, receive_time_us, info.device_time_past_hour);
   }
   if (settings_.position_packets && port == settings_.position_port) {
     if (payload.size() != kPositionPacketSize) {
-      reject("position packet: " + std::to_string(payload.size()) + " bytes, expected 512");
-      return;
+      reject("position packet: " + std::to_string(payload.size()) + " bytes, expected 512", receive_time_us);
+      return std::nullopt;
     }
     // The position packet's timestamp (microseconds past the hour) sits at byte 198 (VLP-16 manual).
     constexpr std::size_t kPositionTimestampOffset = 198;
-    publish(settings_.position_channel, port, payload, receive_time_us,
-            readUint32Le(payload.data() + kPositionTimestampOffset));
-    return;
+    return forward(settings_.position_channel, port, payload, receive_time_us,
+                   readUint32Le(payload.data() + kPositionTimestampOffset));
   }
-  reject("datagram on port " + std::to_string(port) + " that the driver does not read");
+  reject("datagram on port " + std::to_string(port) + " that the driver does not read", receive_time_us);
+  return std::nullopt;
 }
 
-void PacketForwarder::onOversizedDatagram(std::uint16_t port, std::size_t wire_size)
+void PacketForwarder::onOversizedDatagram(std::uint16_t port, std::size_t wire_size, std::int64_t now_us)
 {
   monitor_.recordReceived();
   reject("datagram of " + std::to_string(wire_size) + " bytes on port " + std::to_string(port) +
-         ", larger than any VLP-16 packet");
+             ", larger than any VLP-16 packet",
+         now_us);
 }
 
-void PacketForwarder::reject(const std::string& reason)
+void PacketForwarder::reject(const std::string& reason, std::int64_t now_us)
 {
   monitor_.recordBad(reason);
-  if (bad_packet_log_limiter_.allow(common::monotonicMicroseconds())) {
+  if (bad_packet_log_limiter_.allow(now_us)) {
     const std::int64_t suppressed = bad_packet_log_limiter_.takeSuppressed();
     logger_->warn("skipping bad input: {} ({} bad so far, {} not logged since the last warning)", reason,
                   monitor_.counts().bad_packets, suppressed);
   }
 }
 
-void PacketForwarder::publish(const std::string& channel, std::uint16_t port, common::ByteView payload,
-                              std::int64_t receive_time_us, std::uint32_t device_time_past_hour)
+ForwardedPacket PacketForwarder::forward(const std::string& channel, std::uint16_t port,
+                                         common::ByteView payload, std::int64_t receive_time_us,
+                                         std::uint32_t device_time_past_hour)
 {
   ifar::velodyne_packet_t message;
   message.utime = receive_time_us;
@@ -73,18 +72,22 @@ void PacketForwarder::publish(const std::string& channel, std::uint16_t port, co
   message.port = port;
   message.size = static_cast<std::int32_t>(payload.size());
   message.data.assign(payload.begin(), payload.end());
-  loop_.publish(channel, message);
+  return ForwardedPacket{channel, std::move(message)};
+}
+
+void PacketForwarder::notePublished(std::int64_t receive_time_us, std::int64_t published_us)
+{
   constexpr std::size_t kMostLatenciesKept = 100'000;  // bounded even if the status timer stalls
   if (publish_latencies_us_.size() < kMostLatenciesKept) {
-    publish_latencies_us_.push_back(common::nowMicroseconds() - receive_time_us);
+    publish_latencies_us_.push_back(published_us - receive_time_us);
   }
 }
 
-void PacketForwarder::publishStatus(double interval_s)
+ifar::velodyne_status_t PacketForwarder::statusReport(double interval_s, std::int64_t now_us)
 {
   const MonitorCounts& counts = monitor_.counts();
   ifar::velodyne_status_t status;
-  status.utime = common::nowMicroseconds();
+  status.utime = now_us;
   const std::int64_t valid = monitor_.takeValidSinceLastReport();
   status.packets_per_second =
       interval_s > 0.0 ? static_cast<float>(static_cast<double>(valid) / interval_s) : 0.0F;
@@ -93,7 +96,6 @@ void PacketForwarder::publishStatus(double interval_s)
   status.bad_packets = counts.bad_packets;
   status.dropped_packets = counts.dropped_packets;
   status.last_error = counts.last_error;
-  loop_.publish(settings_.status_channel, status);
 
   if (!publish_latencies_us_.empty() && logger_->should_log(spdlog::level::debug)) {
     auto& latencies = publish_latencies_us_;
@@ -103,6 +105,7 @@ void PacketForwarder::publishStatus(double interval_s)
                    latencies.back());
   }
   publish_latencies_us_.clear();
+  return status;
 }
 
 }  // namespace ifar::velodyne

@@ -1,5 +1,5 @@
-// ifar-executive: the executive daemon (docs/executive.md). Steps the executive library at 50 Hz on
-// the LCM bus; on exit it publishes a zero command.
+// ifar-executive: the executive daemon (docs/executive.md). Steps the executive node (executive/node) at
+// 50 Hz on the LCM bus; on exit it publishes a zero command.
 //
 // Obstacle points for the follower come from the executive's own decoding of VELODYNE_PACKET
 // (executive/obstacles), so it reacts to a new obstacle within a packet, not a planner frame.
@@ -8,20 +8,18 @@
 #include <filesystem>
 #include <string>
 
-#include "common/bus/heartbeat.hpp"
-#include "common/bus/run_loop.hpp"
+#include "bus/heartbeat.hpp"
+#include "bus/run_loop.hpp"
 #include "common/daemon_main.hpp"
 #include "common/time.hpp"
 #include "common/vehicle.hpp"
-#include "executive/daemon/executive_node.hpp"
+#include "executive/daemon/executive_daemon.hpp"
 
 namespace {
 
-constexpr double kControlPeriodS = 0.02;
-
 /// Publishes zero velocity three times when it goes out of scope.
 struct StopOnExit {
-  ifar::executive::ExecutiveNode& node;
+  ifar::executive::ExecutiveDaemon& daemon;
   spdlog::logger& logger;
   StopOnExit(const StopOnExit&) = delete;
   StopOnExit(StopOnExit&&) = delete;
@@ -30,7 +28,7 @@ struct StopOnExit {
   ~StopOnExit()
   {
     for (int repeat = 0; repeat < 3; ++repeat) {
-      node.publishStop(ifar::common::nowMicroseconds());
+      daemon.publishStop();
     }
     logger.info("executive stopped; zero velocity published");
   }
@@ -52,14 +50,14 @@ int runExecutive(ifar::common::DaemonContext& context, const std::string& vehicl
       ifar::common::loadVehicleSettings(ifar::common::ConfigNode::loadFile(vehicle_file));
 
   ifar::bus::RunLoop loop(context.lcm_url, context.logger);
-  ifar::executive::ExecutiveNode node(loop, settings, obstacles, vehicle, context.logger);
-  ifar::bus::publishHeartbeats(loop, context.logger->name(), 1.0, [&node] { return node.healthProblem(); });
-  loop.every(kControlPeriodS, [&node]() { node.cycle(ifar::common::nowMicroseconds()); });
+  ifar::executive::ExecutiveDaemon daemon(loop, settings, obstacles, vehicle, context.logger);
+  ifar::bus::publishHeartbeats(loop, context.logger->name(), 1.0,
+                               [&daemon] { return daemon.node().healthProblem(); });
 
-  context.logger->info("executive running at {:.0f} Hz", 1.0 / kControlPeriodS);
+  context.logger->info("executive running at {:.0f} Hz", 1.0 / ifar::executive::kControlPeriodS);
   // Leaving, by a signal or by an exception on its way out of the loop, the last command anyone hears is
   // a stop (the motor driver would stop the drives on the stale command anyway, 200 ms later).
-  const StopOnExit stop_on_exit{node, *context.logger};
+  const StopOnExit stop_on_exit{daemon, *context.logger};
   return loop.run();
 }
 

@@ -1,7 +1,8 @@
 // ifar-sim WORLD.yaml: the simulator in real time, indistinguishable from the vehicle on the wire.
 // VLP-16 data packets by UDP (754/s), the force sensor and the two wheel drives on the configured CAN bus
 // (velocity commands arrive as RPDO1 frames), POSE at 50 Hz and SIM_GROUND_TRUTH for evaluation.
-// With `commands: source: lcm` it follows velocity_cmd_t on VELOCITY_CMD instead of the drives.
+// With `commands: source: lcm` it follows velocity_cmd_t on VELOCITY_CMD instead of the drives. The
+// simulation itself is the simulator node (sim/node), which the headless runner steps as well.
 
 #include <chrono>
 #include <cmath>
@@ -9,72 +10,23 @@
 #include <optional>
 #include <string>
 
-#include "common/bus/heartbeat.hpp"
-#include "common/bus/run_loop.hpp"
+#include "bus/heartbeat.hpp"
+#include "bus/run_loop.hpp"
 #include "common/daemon_main.hpp"
 #include "common/rate_limiter.hpp"
 #include "common/time.hpp"
 #include "common/vehicle.hpp"
 #include "drivers/can/open_bus.hpp"
-#include "ifar/pose_t.hpp"
 #include "ifar/velocity_cmd_t.hpp"
-#include "ifar/world_state_t.hpp"
-#include "sim/can_nodes/vehicle_can_nodes.hpp"
-#include "sim/daemon/daemon_settings.hpp"
-#include "sim/daemon/udp_sender.hpp"
 #include "sim/generators/generators.hpp"
+#include "sim/lidar/udp_sender.hpp"
+#include "sim/node/node_settings.hpp"
+#include "sim/node/simulator_node.hpp"
 #include "sim/simulator/builtin_worlds.hpp"
 #include "sim/simulator/simulator.hpp"
 #include "sim/world/world_file.hpp"
 
 namespace {
-
-using ifar::sim::StepOutput;
-
-ifar::pose_t toPose(const StepOutput& output)
-{
-  ifar::pose_t message{};
-  message.utime = output.utime;
-  const auto& estimate = output.pose_estimate;
-  message.position[0] = estimate.pose.x;
-  message.position[1] = estimate.pose.y;
-  message.position[2] = 0.0;
-  message.orientation[0] = std::cos(0.5 * estimate.pose.heading);
-  message.orientation[1] = 0.0;
-  message.orientation[2] = 0.0;
-  message.orientation[3] = std::sin(0.5 * estimate.pose.heading);
-  message.velocity[0] = estimate.linear_velocity.x();
-  message.velocity[1] = estimate.linear_velocity.y();
-  message.velocity[2] = 0.0;
-  message.angular_velocity[0] = 0.0;
-  message.angular_velocity[1] = 0.0;
-  message.angular_velocity[2] = estimate.angular_velocity;
-  return message;
-}
-
-ifar::world_state_t toGroundTruth(const StepOutput& output)
-{
-  ifar::world_state_t message{};
-  message.utime = output.utime;
-  message.vehicle_x = output.vehicle.pose.x;
-  message.vehicle_y = output.vehicle.pose.y;
-  message.vehicle_heading = output.vehicle.pose.heading;
-  message.bumper_force_n = output.bumper_force_n;
-  for (const auto& object : output.objects) {
-    ifar::object_state_t state{};
-    state.id = object.id;
-    state.x = object.pose.x;
-    state.y = object.pose.y;
-    state.heading = object.pose.heading;
-    state.linear_velocity[0] = object.linear_velocity.x();
-    state.linear_velocity[1] = object.linear_velocity.y();
-    state.angular_velocity = object.angular_velocity;
-    state.movable = true;
-    message.objects.push_back(state);
-  }
-  message.num_objects = static_cast<std::int32_t>(message.objects.size());
-  return message;
-}
 
 struct CommandLine {
   std::string world_path;
@@ -85,13 +37,11 @@ struct CommandLine {
 int runSimulator(ifar::common::DaemonContext& context, const CommandLine& command_line)
 {
   auto& logger = *context.logger;
-  auto settings = ifar::sim::loadSimDaemonSettings(context.config);
+  auto settings = ifar::sim::loadSimNodeSettings(context.config);
   const auto bus_settings = ifar::can::loadBusSettings(context.config);
   context.config.rejectUnknownKeys();
   const auto vehicle =
       ifar::common::loadVehicleSettings(ifar::common::ConfigNode::loadFile(settings.vehicle_config));
-  settings.can_nodes.force_range_n = vehicle.force_sensor_range_n;
-  settings.can_nodes.wheel_radius_m = vehicle.wheel_radius_m;
 
   ifar::sim::World world;
   const std::string world_path = command_line.world_path.empty() ? settings.world : command_line.world_path;
@@ -135,8 +85,7 @@ int runSimulator(ifar::common::DaemonContext& context, const CommandLine& comman
   auto& bus = *opened.bus;
   ifar::sim::UdpSender lidar_sender(settings.lidar_host, settings.lidar_port);
   settings.simulator.epoch_utime = ifar::common::nowMicroseconds();
-  ifar::sim::Simulator simulator(world, vehicle, settings.simulator);
-  ifar::sim::VehicleCanNodes nodes(settings.can_nodes);
+  ifar::sim::SimulatorNode node(world, vehicle, settings);
   logger.info(
       "world '{}' from {}: {} obstacles, {} movable objects; lidar to {}:{}, CAN on {}, commands from {}",
       world.name, world.source, world.obstacles.size(), world.objects.size(), settings.lidar_host,
@@ -144,19 +93,14 @@ int runSimulator(ifar::common::DaemonContext& context, const CommandLine& comman
       settings.command_source == ifar::sim::CommandSource::kCan ? "the drives (RPDO1)"
                                                                 : settings.velocity_channel);
 
-  std::optional<ifar::velocity_cmd_t> last_command;
   if (settings.command_source == ifar::sim::CommandSource::kLcm) {
     loop.subscribe<ifar::velocity_cmd_t>(
         settings.velocity_channel,
-        [&](const ifar::velocity_cmd_t& message, std::int64_t) { last_command = message; });
+        [&node](const ifar::velocity_cmd_t& message, std::int64_t) { node.onVelocityCommand(message); });
   }
 
   std::int64_t start_monotonic = ifar::common::monotonicMicroseconds();
   constexpr std::int64_t kMaxCatchUpNs = 200'000'000;
-  const auto pose_period_ns = static_cast<std::int64_t>(1e9 / settings.pose_rate_hz);
-  const auto truth_period_ns = static_cast<std::int64_t>(1e9 / settings.ground_truth_rate_hz);
-  std::int64_t next_pose_ns = 0;
-  std::int64_t next_truth_ns = 0;
   std::int64_t frames_in = 0;
   std::int64_t can_send_errors = 0;
   ifar::common::RateLimiter warn_limiter(5'000'000);
@@ -164,7 +108,6 @@ int runSimulator(ifar::common::DaemonContext& context, const CommandLine& comman
 
   loop.every(settings.simulator.physics.step_seconds, [&] {
     const std::int64_t now_monotonic = ifar::common::monotonicMicroseconds();
-    const std::int64_t sim_now_us = settings.simulator.epoch_utime + simulator.timeNanoseconds() / 1000;
     // Frames from the bus to the emulated drives.
     while (true) {
       const auto received = bus.receive(std::chrono::microseconds(0));
@@ -175,20 +118,12 @@ int runSimulator(ifar::common::DaemonContext& context, const CommandLine& comman
         break;
       }
       if (!received.frame.error()) {
-        nodes.onFrame(received.frame, sim_now_us);
+        node.onFrame(received.frame);
         ++frames_in;
       }
     }
-    if (settings.command_source == ifar::sim::CommandSource::kCan) {
-      simulator.setWheelSpeedCommand(nodes.commandedWheelSpeeds());
-    } else if (last_command && sim_now_us - last_command->utime <
-                                   static_cast<std::int64_t>(settings.command_timeout_s * 1e6)) {
-      simulator.setVelocityCommand(last_command->linear_velocity, last_command->angular_velocity);
-    } else {
-      simulator.setVelocityCommand(0.0, 0.0);  // no or stale command: stop, as the drives would
-    }
     // Catch up with the wall clock (whole physics steps; the remainder carries over).
-    std::int64_t behind_ns = (now_monotonic - start_monotonic) * 1000 - simulator.timeNanoseconds();
+    std::int64_t behind_ns = (now_monotonic - start_monotonic) * 1000 - node.simulator().timeNanoseconds();
     if (behind_ns <= 0) {
       return;
     }
@@ -200,30 +135,29 @@ int runSimulator(ifar::common::DaemonContext& context, const CommandLine& comman
         logger.warn("running behind real time; skipped ahead");
       }
     }
-    const StepOutput output = simulator.step(static_cast<double>(behind_ns) * 1e-9);
+    const ifar::sim::SimulatorStep step = node.step(static_cast<double>(behind_ns) * 1e-9);
+    const ifar::sim::StepOutput& output = step.output;
     for (const auto& packet : output.packets) {
       if (!lidar_sender.send(ifar::common::ByteView(packet)) && warn_limiter.allow(now_monotonic)) {
         logger.warn("lidar packets to {}:{} failing ({} so far)", settings.lidar_host, settings.lidar_port,
                     lidar_sender.failures());
       }
     }
-    for (const auto& frame : nodes.update(output.utime, output.bumper_force_n, output.wheel_speeds)) {
+    for (const auto& frame : step.frames) {
       if (bus.send(frame).status != ifar::can::IoStatus::kOk) {
         ++can_send_errors;
       }
     }
-    if (output.time_ns >= next_pose_ns) {
-      loop.publish(settings.pose_channel, toPose(output));
-      next_pose_ns = output.time_ns - output.time_ns % pose_period_ns + pose_period_ns;
+    if (step.pose) {
+      loop.publish(settings.pose_channel, *step.pose);
     }
-    if (output.time_ns >= next_truth_ns) {
-      loop.publish(settings.ground_truth_channel, toGroundTruth(output));
-      next_truth_ns = output.time_ns - output.time_ns % truth_period_ns + truth_period_ns;
+    if (step.ground_truth) {
+      loop.publish(settings.ground_truth_channel, *step.ground_truth);
     }
     if (status_limiter.allow(now_monotonic)) {
       logger.info("t={:.1f}s packets sent {} (failed {}), CAN frames in {} (send errors {}), drives {}",
                   static_cast<double>(output.time_ns) * 1e-9, lidar_sender.sent(), lidar_sender.failures(),
-                  frames_in, can_send_errors, nodes.drivesEnabled() ? "enabled" : "not enabled");
+                  frames_in, can_send_errors, node.canNodes().drivesEnabled() ? "enabled" : "not enabled");
     }
   });
   return loop.run();

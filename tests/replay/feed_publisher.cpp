@@ -4,7 +4,7 @@
 
 namespace ifar::replay_testing {
 
-using planner::testing::FeedRecord;
+using test_support::FeedRecord;
 
 pose_t toPoseMessage(const FeedRecord& record, std::int64_t utime)
 {

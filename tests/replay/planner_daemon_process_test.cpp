@@ -18,9 +18,9 @@
 #include "ifar/path_t.hpp"
 #include "ifar/planner_status_t.hpp"
 #include "sim/simulator/builtin_worlds.hpp"
+#include "testing/child_process.hpp"
+#include "testing/simulated_feed.hpp"
 #include "tests/replay/feed_publisher.hpp"
-#include "tests/support/child_process.hpp"
-#include "tests/unit/planner_core/simulated_feed.hpp"
 
 namespace ifar::planner {
 namespace {
@@ -67,8 +67,8 @@ TEST(PlannerDaemonProcess, PublishesPathGraphAndStatusForSimulatedInput)
   ASSERT_GT(received.statuses, 0) << "no PLANNER_STATUS from the idle daemon";
   EXPECT_EQ(received.status->state, planner_status_t::STATE_IDLE);
 
-  const std::vector<testing::FeedRecord> records =
-      testing::recordSimulation(sim::builtinPushRoom(200.0), 1.2);
+  const std::vector<test_support::FeedRecord> records =
+      test_support::recordSimulation(sim::builtinPushRoom(200.0), 1.2);
   goal_t goal{};
   goal.goal_id = 42;
   goal.x = 6.0;

@@ -35,13 +35,13 @@
 #include "ifar/velodyne_packet_t.hpp"
 #include "planner/core/frame_assembler.hpp"
 #include "planner/core/planner.hpp"
-#include "planner/daemon/daemon_settings.hpp"
-#include "planner/daemon/planner_messages.hpp"
+#include "planner/node/node_settings.hpp"
+#include "planner/node/planner_messages.hpp"
 #include "sim/simulator/builtin_worlds.hpp"
+#include "testing/child_process.hpp"
+#include "testing/simulated_feed.hpp"
+#include "testing/temporary_directory.hpp"
 #include "tests/replay/feed_publisher.hpp"
-#include "tests/support/child_process.hpp"
-#include "tests/support/temporary_directory.hpp"
-#include "tests/unit/planner_core/simulated_feed.hpp"
 
 namespace ifar::planner {
 namespace {
@@ -133,9 +133,9 @@ DaemonConfiguration loadDaemonConfiguration()
   const std::string source = IFAR_SOURCE_DIR;
   const PlannerConfig loaded =
       loadPlannerConfig(common::ConfigNode::loadFile(source + "/config/planner.yaml"));
-  DaemonConfiguration configuration{loaded.planner, loaded.daemon.input};
+  DaemonConfiguration configuration{loaded.planner, loaded.node.input};
   configuration.planner.vehicle =
-      common::loadVehicleSettings(common::ConfigNode::loadFile(source + "/" + loaded.daemon.vehicle_config));
+      common::loadVehicleSettings(common::ConfigNode::loadFile(source + "/" + loaded.node.vehicle_config));
   return configuration;
 }
 
@@ -269,15 +269,15 @@ std::string recordLiveRun(const std::filesystem::path& directory, const std::str
   }
 
   // 2 s at 0.4 m/s turning left at 0.25 rad/s, goal beyond the box.
-  const std::vector<testing::FeedRecord> records =
-      testing::recordSimulation(sim::builtinPushRoom(200.0), 2.0, 0.4, 0.25);
+  const std::vector<test_support::FeedRecord> records =
+      test_support::recordSimulation(sim::builtinPushRoom(200.0), 2.0, 0.4, 0.25);
   goal_t goal{};
   goal.goal_id = 7;
   goal.x = 9.0;
   goal.y = 8.0;
   goal.cancel = false;
-  for (const testing::FeedRecord& record : records) {
-    ++(record.kind == testing::FeedRecord::Kind::Pose ? published.poses : published.packets);
+  for (const test_support::FeedRecord& record : records) {
+    ++(record.kind == test_support::FeedRecord::Kind::Pose ? published.poses : published.packets);
   }
   replay_testing::publishInRealTime(bus, records, goal);
   // Two more ticks at 2.5 Hz take the last revolution; then the answers have reached the logger.

@@ -13,7 +13,7 @@
 #include "planner/core/planner.hpp"
 #include "planner/graph/graph_file.hpp"
 #include "sim/simulator/builtin_worlds.hpp"
-#include "tests/unit/planner_core/simulated_feed.hpp"
+#include "testing/simulated_feed.hpp"
 
 namespace ifar::planner {
 namespace {
@@ -34,13 +34,13 @@ double median(std::vector<double> values)
   return values.empty() ? 0.0 : values[values.size() / 2];
 }
 
-std::vector<FrameOutcome> replay(const std::vector<testing::FeedRecord>& log)
+std::vector<FrameOutcome> replay(const std::vector<test_support::FeedRecord>& log)
 {
   FrameAssembler assembler{InputSettings{}};
   Planner planner{PlannerSettings{}};
   planner.setGoal(Goal{1, geometry::Point(9.0, 8.0)});
   std::vector<FrameOutcome> outcomes;
-  for (const FrameInput& frame : testing::feedAll(log, assembler)) {
+  for (const FrameInput& frame : test_support::feedAll(log, assembler)) {
     const FrameResult result = planner.processFrame(frame);
     FrameOutcome outcome;
     outcome.graph = graph::serializeGraph(planner.graph());
@@ -60,8 +60,8 @@ std::vector<FrameOutcome> replay(const std::vector<testing::FeedRecord>& log)
 TEST(PlannerReplay, SameRecordedPacketsGiveTheSameGraphAndPath)
 {
   // 2 s at 0.4 m/s turning left at 0.25 rad/s: about 20 revolutions from a moving sensor.
-  const std::vector<testing::FeedRecord> log =
-      testing::recordSimulation(sim::builtinPushRoom(200.0), 2.0, 0.4, 0.25);
+  const std::vector<test_support::FeedRecord> log =
+      test_support::recordSimulation(sim::builtinPushRoom(200.0), 2.0, 0.4, 0.25);
   const std::vector<FrameOutcome> first = replay(log);
   const std::vector<FrameOutcome> second = replay(log);
 

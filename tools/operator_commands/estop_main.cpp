@@ -9,7 +9,7 @@
 #include <CLI/CLI.hpp>
 #include <lcm/lcm-cpp.hpp>
 
-#include "common/bus/run_loop.hpp"
+#include "bus/run_loop.hpp"
 #include "common/command_line.hpp"
 #include "common/time.hpp"
 #include "ifar/e_stop_t.hpp"

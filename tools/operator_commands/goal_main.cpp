@@ -11,7 +11,7 @@
 #include <spdlog/spdlog.h>
 #include <CLI/CLI.hpp>
 
-#include "common/bus/run_loop.hpp"
+#include "bus/run_loop.hpp"
 #include "common/command_line.hpp"
 #include "common/time.hpp"
 #include "ifar/exec_status_t.hpp"

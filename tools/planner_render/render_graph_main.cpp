@@ -7,7 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include "common/command_line.hpp"
-#include "tools/planner_render/graph_render.hpp"
+#include "viz/graph_render.hpp"
 
 int main(int argc, char** argv)
 {
@@ -21,7 +21,7 @@ int main(int argc, char** argv)
   std::string path_channel = "GLOBAL_PATH";
   std::string pose_channel = "POSE";
   std::string truth_channel = "SIM_GROUND_TRUTH";
-  ifar::planner_render::RenderOptions options;
+  ifar::viz::RenderOptions options;
   app.add_option("log", log_path, "LCM log file")->required();
   app.add_option("-o,--output", output, "PNG to write")->capture_default_str();
   app.add_option("--graph-channel", graph_channel, "channel of the dv_graph_t messages")
@@ -40,16 +40,16 @@ int main(int argc, char** argv)
     return *exit_code;
   }
   if (!window_text.empty()) {
-    options.window = ifar::planner_render::parseWindow(window_text);
+    options.window = ifar::viz::parseWindow(window_text);
     if (!options.window) {
-      std::cerr << "error: --window: expected " << ifar::planner_render::kWindowFormat << ", got '"
-                << window_text << "'\n";
+      std::cerr << "error: --window: expected " << ifar::viz::kWindowFormat << ", got '" << window_text
+                << "'\n";
       return ifar::common::kBadInputExitCode;
     }
   }
 
-  const ifar::planner_render::LastMessages last = ifar::planner_render::readLastMessages(
-      log_path, graph_channel, path_channel, pose_channel, truth_channel);
+  const ifar::viz::LastMessages last =
+      ifar::viz::readLastMessages(log_path, graph_channel, path_channel, pose_channel, truth_channel);
   if (!last.error.empty()) {
     std::cerr << "error: " << last.error << "\n";
     return 1;
@@ -66,8 +66,7 @@ int main(int argc, char** argv)
     std::cerr << "error: " << log_path << ": no decodable message on channel " << graph_channel << "\n";
     return 1;
   }
-  const ifar::render::Canvas canvas =
-      ifar::planner_render::renderGraph(*last.graph, last.path, options, last.run);
+  const ifar::viz::Canvas canvas = ifar::viz::renderGraph(*last.graph, last.path, options, last.run);
   const std::string error = canvas.writePng(output);
   if (!error.empty()) {
     std::cerr << "error: " << error << "\n";

@@ -9,7 +9,7 @@
 #include "common/config.hpp"
 #include "common/vehicle.hpp"
 #include "sim/world/world_file.hpp"
-#include "tools/render_command/world_picture.hpp"
+#include "viz/world_picture.hpp"
 
 int main(int argc, char** argv)
 {
@@ -48,7 +48,7 @@ int main(int argc, char** argv)
   }
   const auto& world = loaded.world();
   if (resolution == 0.0) {
-    resolution = ifar::render::defaultResolution(world);
+    resolution = ifar::viz::defaultResolution(world);
   }
   if (out.empty()) {
     const auto dot = world_path.rfind('.');
@@ -57,9 +57,9 @@ int main(int argc, char** argv)
                                                                                    : world_path) +
           ".png";
   }
-  const ifar::render::WorldPictureStyle style;
-  auto canvas = ifar::render::makeWorldCanvas(world, resolution, style);
-  ifar::render::drawWorld(canvas, world, vehicle, style);
+  const ifar::viz::WorldPictureStyle style;
+  auto canvas = ifar::viz::makeWorldCanvas(world, resolution, style);
+  ifar::viz::drawWorld(canvas, world, vehicle, style);
   const auto error = canvas.writePng(out);
   if (!error.empty()) {
     std::cerr << "error: " << error << "\n";

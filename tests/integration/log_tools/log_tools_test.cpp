@@ -13,8 +13,8 @@
 #include <gtest/gtest.h>
 
 #include "lcmtypes/samples/sample_messages.hpp"
-#include "tests/support/child_process.hpp"
-#include "tests/support/temporary_directory.hpp"
+#include "testing/child_process.hpp"
+#include "testing/temporary_directory.hpp"
 #include "tests/unit/lcm_log/log_bytes.hpp"
 
 namespace ifar::lcm_log::test {

@@ -28,8 +28,8 @@
 #include "ifar/path_t.hpp"
 #include "ifar/velocity_cmd_t.hpp"
 #include "ifar/world_state_t.hpp"
-#include "tests/support/child_process.hpp"
-#include "tests/support/temporary_directory.hpp"
+#include "testing/child_process.hpp"
+#include "testing/temporary_directory.hpp"
 
 namespace {
 

@@ -11,7 +11,7 @@
 
 #include <spdlog/sinks/null_sink.h>
 
-#include "common/bus/heartbeat.hpp"
+#include "bus/heartbeat.hpp"
 #include "ifar/goal_t.hpp"
 #include "ifar/heartbeat_t.hpp"
 

@@ -12,7 +12,7 @@
 
 #include <spdlog/sinks/null_sink.h>
 
-#include "common/bus/run_loop.hpp"
+#include "bus/run_loop.hpp"
 #include "ifar/goal_t.hpp"
 #include "ifar/velodyne_packet_t.hpp"
 

@@ -1,6 +1,6 @@
-// The daemon's obstacle wiring over an in-process bus (memq://): VELODYNE_PACKET messages become the
-// executive's obstacle points and, while approaching a push, the pushed object's observation; malformed
-// packets are counted and reported, position packets ignored.
+// The executive node's obstacle inputs: VELODYNE_PACKET messages become the executive's obstacle points
+// and, while approaching a push, the pushed object's observation; malformed packets are counted and
+// reported, position packets ignored.
 
 #include <cmath>
 #include <cstdint>
@@ -9,8 +9,7 @@
 #include <gtest/gtest.h>
 #include <spdlog/sinks/null_sink.h>
 
-#include "common/time.hpp"
-#include "executive/daemon/executive_node.hpp"
+#include "executive/node/executive_node.hpp"
 #include "ifar/velodyne_packet_t.hpp"
 #include "tests/unit/executive/vlp16_test_packet.hpp"
 
@@ -23,53 +22,56 @@ constexpr std::size_t kLaserMinus1 = 14;  // -1 degree elevation
 class ExecutiveNodeObstaclesTest : public ::testing::Test {
  protected:
   ExecutiveNodeObstaclesTest()
-      : logger_(std::make_shared<spdlog::logger>("executive_node_obstacles_test",
-                                                 std::make_shared<spdlog::sinks::null_sink_mt>())),
-        loop_("memq://", logger_),
-        node_(loop_, ExecutiveSettings{}, ObstacleSettings{}, common::VehicleSettings{}, logger_)
+      : node_(ExecutiveSettings{}, ObstacleSettings{}, common::VehicleSettings{},
+              std::make_shared<spdlog::logger>("executive_node_obstacles_test",
+                                               std::make_shared<spdlog::sinks::null_sink_mt>()))
   {
-    loop_.subscribe<ifar::exec_status_t>(
-        "EXEC_STATUS",
-        [this](const ifar::exec_status_t& message, std::int64_t) { statuses_.push_back(message); });
+  }
+
+  /// The test's clock: each call is a millisecond later.
+  std::int64_t tick()
+  {
+    now_ += 1'000;
+    return now_;
+  }
+
+  Output cycle()
+  {
+    ExecutiveOutputs outputs = node_.cycle(tick());
+    if (outputs.status) {
+      statuses_.push_back(*outputs.status);
+    }
+    return outputs.output;
   }
 
   /// Fresh pose (at the origin facing +x), force and motor status, and `path`.
   void publishInputs(const ifar::path_t& path)
   {
-    const std::int64_t now = common::nowMicroseconds();
+    const std::int64_t now = tick();
     ifar::pose_t pose{};
     pose.utime = now;
     pose.orientation[0] = 1.0;
-    loop_.publish("POSE", pose);
-    loop_.publish("GLOBAL_PATH", path);
+    node_.onPose(pose, now);
+    node_.onPath(path, now);
     ifar::force_t force{};
     force.utime = now;
-    loop_.publish("FORCE", force);
+    node_.onForce(force, now);
     ifar::motor_status_t motor{};
     motor.utime = now;
     motor.node_id = 1;
     motor.heartbeat_ok = 1;
     motor.drive_state = ifar::motor_status_t::DRIVE_OPERATION_ENABLED;
-    loop_.publish("MOTOR_STATUS", motor);
-    deliver();
+    node_.onMotorStatus(motor, now);
   }
 
   void publishPacket(const std::vector<std::uint8_t>& payload, std::int32_t port = 2368)
   {
     ifar::velodyne_packet_t message{};
-    message.utime = common::nowMicroseconds();
+    message.utime = tick();
     message.port = port;
     message.size = static_cast<std::int32_t>(payload.size());
     message.data = payload;
-    loop_.publish("VELODYNE_PACKET", message);
-    deliver();
-  }
-
-  void deliver()
-  {
-    for (int round = 0; round < 10; ++round) {
-      loop_.spinOnce(0);
-    }
+    node_.onVelodynePacket(message, message.utime);
   }
 
   static ifar::waypoint_t waypoint(double x, std::int8_t kind, std::int64_t object_id, std::int32_t plan)
@@ -122,8 +124,7 @@ class ExecutiveNodeObstaclesTest : public ::testing::Test {
     return path;
   }
 
-  std::shared_ptr<spdlog::logger> logger_;
-  bus::RunLoop loop_;
+  std::int64_t now_ = 1'700'000'000'000'000;
   ExecutiveNode node_;
   std::vector<ifar::exec_status_t> statuses_;
 };
@@ -131,8 +132,7 @@ class ExecutiveNodeObstaclesTest : public ::testing::Test {
 TEST_F(ExecutiveNodeObstaclesTest, PacketsBecomeObstaclePoints)
 {
   publishInputs(straightPath());
-  node_.cycle(common::nowMicroseconds());
-  deliver();
+  cycle();
   EXPECT_FALSE(node_.inputs().obstacles.has_value());  // no packet yet
   ASSERT_FALSE(statuses_.empty());
   EXPECT_NE(statuses_.back().reason.find("no fresh obstacle points"), std::string::npos)
@@ -140,17 +140,16 @@ TEST_F(ExecutiveNodeObstaclesTest, PacketsBecomeObstaclePoints)
 
   testing::TestPacket packet(0);
   packet.set(0, kLaserMinus1, 1000, 10);  // 2 m straight ahead of the lidar
-  const std::int64_t before_packet = common::nowMicroseconds();
   publishPacket(packet.bytes());
+  const std::int64_t packet_received = now_;
   publishInputs(straightPath());
-  node_.cycle(common::nowMicroseconds());
+  cycle();
   const auto& obstacles = node_.inputs().obstacles;
   ASSERT_TRUE(obstacles.has_value());
   ASSERT_EQ(obstacles->value.size(), 1u);
   EXPECT_NEAR(obstacles->value[0].x(), 0.2 + 2.0 * std::cos(kDegree), 1e-5);
   EXPECT_NEAR(obstacles->value[0].y(), 0.0, 1e-5);
-  EXPECT_GE(obstacles->utime, before_packet);
-  EXPECT_LE(obstacles->utime, common::nowMicroseconds());
+  EXPECT_EQ(obstacles->utime, packet_received);            // stamped with the newest packet, not the cycle
   EXPECT_FALSE(node_.inputs().pushed_object.has_value());  // following: no pushed object
   EXPECT_EQ(node_.malformedPackets(), 0);
 }
@@ -169,10 +168,9 @@ TEST_F(ExecutiveNodeObstaclesTest, MalformedPacketsAreCountedAndReportedPosition
   EXPECT_EQ(node_.malformedPackets(), 1);
 
   statuses_.clear();
-  for (int cycle = 0; cycle < 5; ++cycle) {
-    node_.cycle(common::nowMicroseconds());
+  for (int count = 0; count < 5; ++count) {
+    cycle();
   }
-  deliver();
   ASSERT_FALSE(statuses_.empty());
   EXPECT_NE(statuses_.back().reason.find("[1 malformed lidar packets]"), std::string::npos)
       << statuses_.back().reason;
@@ -183,7 +181,7 @@ TEST_F(ExecutiveNodeObstaclesTest, MalformedPacketsAreCountedAndReportedPosition
 TEST_F(ExecutiveNodeObstaclesTest, RetroReflectiveReturnsNearTheApproachedObjectBecomeItsObservation)
 {
   publishInputs(pushPath());
-  const Output first = node_.cycle(common::nowMicroseconds());
+  const Output first = cycle();
   ASSERT_EQ(first.status.mode, Mode::Approach) << first.status.reason;
 
   // The object's near face (x = 1.95) seen 1.75 m ahead of the lidar, straight ahead and 2.4 degrees
@@ -196,7 +194,7 @@ TEST_F(ExecutiveNodeObstaclesTest, RetroReflectiveReturnsNearTheApproachedObject
   wall.set(0, kLaserMinus1, 1500, 20);
   publishPacket(wall.bytes());
   publishInputs(pushPath());
-  const Output second = node_.cycle(common::nowMicroseconds());
+  const Output second = cycle();
   EXPECT_EQ(second.status.mode, Mode::Approach);
 
   const auto& observed = node_.inputs().pushed_object;

@@ -1,40 +1,32 @@
-#include "executive/daemon/executive_node.hpp"
+#include "executive/node/executive_node.hpp"
 
 #include <vector>
 
 #include <gtest/gtest.h>
 #include <spdlog/sinks/null_sink.h>
 
-#include "common/time.hpp"
-
 namespace ifar::executive {
 namespace {
 
-/// The daemon's wiring over an in-process bus (memq://): messages in, commands and status out.
+constexpr std::int64_t kStartUs = 1'700'000'000'000'000;
+
+/// The node core on a clock of its own: messages in with their receive times, outputs back.
 class ExecutiveNodeTest : public ::testing::Test {
  protected:
   ExecutiveNodeTest()
-      : logger_(std::make_shared<spdlog::logger>("executive_node_test",
-                                                 std::make_shared<spdlog::sinks::null_sink_mt>())),
-        loop_("memq://", logger_),
-        node_(loop_, ExecutiveSettings{}, common::VehicleSettings{}, logger_)
+      : node_(ExecutiveSettings{}, ObstacleSettings{}, common::VehicleSettings{},
+              std::make_shared<spdlog::logger>("executive_node_test",
+                                               std::make_shared<spdlog::sinks::null_sink_mt>()))
   {
-    loop_.subscribe<ifar::velocity_cmd_t>(
-        "VELOCITY_CMD",
-        [this](const ifar::velocity_cmd_t& message, std::int64_t) { commands_.push_back(message); });
-    loop_.subscribe<ifar::exec_status_t>(
-        "EXEC_STATUS",
-        [this](const ifar::exec_status_t& message, std::int64_t) { statuses_.push_back(message); });
   }
 
-  /// Publishes fresh pose, path, force and motor status and delivers them.
-  void publishInputs()
+  /// Fresh pose, path, force and motor status received at `now`.
+  void receiveInputs(std::int64_t now)
   {
-    const std::int64_t now = common::nowMicroseconds();
     ifar::pose_t pose{};
     pose.utime = now;
     pose.orientation[0] = 1.0;
-    loop_.publish("POSE", pose);
+    node_.onPose(pose, now);
     ifar::path_t path{};
     path.utime = 1;
     path.goal_id = 3;
@@ -45,97 +37,101 @@ class ExecutiveNodeTest : public ::testing::Test {
     goal.x = 4.0;
     path.waypoints = {start, goal};
     path.num_waypoints = 2;
-    loop_.publish("GLOBAL_PATH", path);
+    node_.onPath(path, now);
     ifar::force_t force{};
     force.utime = now;
-    loop_.publish("FORCE", force);
+    node_.onForce(force, now);
     ifar::motor_status_t motor{};
     motor.utime = now;
     motor.node_id = 1;
     motor.heartbeat_ok = 1;
     motor.drive_state = ifar::motor_status_t::DRIVE_OPERATION_ENABLED;
-    loop_.publish("MOTOR_STATUS", motor);
-    deliver();
+    node_.onMotorStatus(motor, now);
   }
 
-  void deliver()
-  {
-    for (int round = 0; round < 10; ++round) {
-      loop_.spinOnce(0);
-    }
-  }
-
-  std::shared_ptr<spdlog::logger> logger_;
-  bus::RunLoop loop_;
   ExecutiveNode node_;
-  std::vector<ifar::velocity_cmd_t> commands_;
-  std::vector<ifar::exec_status_t> statuses_;
 };
 
 TEST_F(ExecutiveNodeTest, FollowsThenStopsOnEStopAndOnExit)
 {
-  publishInputs();
-  node_.cycle(common::nowMicroseconds());
-  const Output moving = node_.cycle(common::nowMicroseconds() + 20'000);
-  deliver();
-  EXPECT_EQ(moving.status.mode, Mode::Follow);
-  ASSERT_EQ(commands_.size(), 2u);
-  EXPECT_GT(commands_.back().linear_velocity, 0.0);
-  ASSERT_FALSE(statuses_.empty());  // the mode change to follow was reported at once
-  EXPECT_EQ(statuses_.back().mode, ifar::exec_status_t::MODE_FOLLOW);
-  EXPECT_EQ(statuses_.back().goal_id, 3);
+  receiveInputs(kStartUs);
+  const ExecutiveOutputs first = node_.cycle(kStartUs);
+  const ExecutiveOutputs moving = node_.cycle(kStartUs + 20'000);
+  EXPECT_EQ(moving.output.status.mode, Mode::Follow);
+  EXPECT_EQ(moving.command.utime, kStartUs + 20'000);
+  EXPECT_GT(moving.command.linear_velocity, 0.0);
+  // The mode change to follow was reported at once.
+  ASSERT_TRUE(first.status || moving.status);
+  const ifar::exec_status_t& follow_status = first.status ? *first.status : *moving.status;
+  EXPECT_EQ(follow_status.mode, ifar::exec_status_t::MODE_FOLLOW);
+  EXPECT_EQ(follow_status.goal_id, 3);
 
   ifar::e_stop_t e_stop{};
-  e_stop.utime = common::nowMicroseconds();
+  e_stop.utime = kStartUs + 30'000;
   e_stop.engaged = 1;
   e_stop.source = "test";
-  loop_.publish("E_STOP", e_stop);
-  publishInputs();
-  node_.cycle(common::nowMicroseconds());
-  deliver();
-  EXPECT_EQ(statuses_.back().mode, ifar::exec_status_t::MODE_E_STOP);
-  EXPECT_DOUBLE_EQ(commands_.back().linear_velocity, 0.0);
-  EXPECT_DOUBLE_EQ(commands_.back().angular_velocity, 0.0);
+  node_.onEStop(e_stop, kStartUs + 30'000);
+  receiveInputs(kStartUs + 30'000);
+  const ExecutiveOutputs stopped = node_.cycle(kStartUs + 40'000);
+  ASSERT_TRUE(stopped.status);  // a mode change goes out at once
+  EXPECT_EQ(stopped.status->mode, ifar::exec_status_t::MODE_E_STOP);
+  EXPECT_DOUBLE_EQ(stopped.command.linear_velocity, 0.0);
+  EXPECT_DOUBLE_EQ(stopped.command.angular_velocity, 0.0);
 
-  commands_.clear();
-  statuses_.clear();
-  node_.publishStop(common::nowMicroseconds());
-  deliver();
-  ASSERT_EQ(commands_.size(), 1u);
-  EXPECT_DOUBLE_EQ(commands_.back().linear_velocity, 0.0);
-  EXPECT_DOUBLE_EQ(commands_.back().left_wheel, 0.0);
+  const ExecutiveOutputs exit = node_.stop(kStartUs + 50'000);
+  EXPECT_DOUBLE_EQ(exit.command.linear_velocity, 0.0);
+  EXPECT_DOUBLE_EQ(exit.command.left_wheel, 0.0);
+  EXPECT_EQ(exit.command.utime, kStartUs + 50'000);
   // On exit the last status goes out once more, so a recorder that missed it still logs how things ended.
-  ASSERT_EQ(statuses_.size(), 1u);
-  EXPECT_EQ(statuses_.back().mode, ifar::exec_status_t::MODE_E_STOP);
-  EXPECT_EQ(statuses_.back().goal_id, 3);
+  ASSERT_TRUE(exit.status);
+  EXPECT_EQ(exit.status->mode, ifar::exec_status_t::MODE_E_STOP);
+  EXPECT_EQ(exit.status->goal_id, 3);
+  EXPECT_EQ(exit.status->utime, kStartUs + 50'000);
+}
+
+TEST_F(ExecutiveNodeTest, StatusGoesOutOnModeChangesAndEveryFifthOtherCycle)
+{
+  int steady_cycles = 0;
+  for (int cycle = 0; cycle < 40; ++cycle) {
+    const std::int64_t now = kStartUs + cycle * 20'000;
+    receiveInputs(now);
+    const ExecutiveOutputs outputs = node_.cycle(now);
+    if (outputs.output.mode_changed) {
+      EXPECT_TRUE(outputs.status) << "cycle " << cycle;
+      continue;
+    }
+    ++steady_cycles;
+    EXPECT_EQ(outputs.status.has_value(), steady_cycles % 5 == 0) << "cycle " << cycle;
+  }
+  EXPECT_GE(steady_cycles, 35);
 }
 
 TEST_F(ExecutiveNodeTest, ExitBeforeAnyCyclePublishesNoStatus)
 {
-  node_.publishStop(common::nowMicroseconds());
-  deliver();
-  EXPECT_EQ(commands_.size(), 1u);
-  EXPECT_TRUE(statuses_.empty());
+  const ExecutiveOutputs exit = node_.stop(kStartUs);
+  EXPECT_DOUBLE_EQ(exit.command.linear_velocity, 0.0);
+  EXPECT_FALSE(exit.status);
 }
 
 TEST_F(ExecutiveNodeTest, SilentInputsStop)
 {
-  publishInputs();
-  node_.cycle(common::nowMicroseconds());
+  receiveInputs(kStartUs);
+  node_.cycle(kStartUs);
   // Nothing arrives for half a second: pose and force are stale.
-  const Output output = node_.cycle(common::nowMicroseconds() + 500'000);
-  EXPECT_EQ(output.status.mode, Mode::Stop);
-  EXPECT_TRUE(output.command.isZero());
-  EXPECT_NE(output.status.stale & kStalePose, 0);
+  const ExecutiveOutputs outputs = node_.cycle(kStartUs + 500'000);
+  EXPECT_EQ(outputs.output.status.mode, Mode::Stop);
+  EXPECT_TRUE(outputs.output.command.isZero());
+  EXPECT_DOUBLE_EQ(outputs.command.linear_velocity, 0.0);
+  EXPECT_NE(outputs.output.status.stale & kStalePose, 0);
 }
 
 TEST_F(ExecutiveNodeTest, HealthNamesStaleInputsForTheHeartbeat)
 {
   EXPECT_EQ(node_.healthProblem(), "no control cycle yet");
-  publishInputs();
-  node_.cycle(common::nowMicroseconds());
+  receiveInputs(kStartUs);
+  node_.cycle(kStartUs);
   EXPECT_EQ(node_.healthProblem(), "");
-  node_.cycle(common::nowMicroseconds() + 500'000);
+  node_.cycle(kStartUs + 500'000);
   EXPECT_EQ(node_.healthProblem(), "stale inputs: pose, force, motor");
 }
 

@@ -10,7 +10,7 @@
 #include <lcm/lcm-cpp.hpp>
 
 #include "common/lcm_log/log_reader.hpp"
-#include "tests/support/temporary_directory.hpp"
+#include "testing/temporary_directory.hpp"
 #include "tests/unit/lcm_log/log_bytes.hpp"
 
 namespace ifar::lcm_log {

@@ -11,8 +11,8 @@
 
 #include <gtest/gtest.h>
 
-#include "tests/support/allocation_tracker.hpp"
-#include "tests/support/temporary_directory.hpp"
+#include "testing/allocation_tracker.hpp"
+#include "testing/temporary_directory.hpp"
 #include "tests/unit/lcm_log/log_bytes.hpp"
 
 namespace ifar::lcm_log {
@@ -95,9 +95,9 @@ TEST_F(LcmLogReader, AHeaderClaimingTwoGigabytesIsATruncationAtItsOffsetAndIsNot
   ASSERT_EQ(reader.openError(), "");
 
   LogEvent event;
-  ifar::test::startTrackingAllocations();
+  ifar::test_support::startTrackingAllocations();
   const bool read = reader.next(event);
-  const std::size_t largest_allocation = ifar::test::stopTrackingAllocations();
+  const std::size_t largest_allocation = ifar::test_support::stopTrackingAllocations();
   EXPECT_GT(largest_allocation, 0U);  // the tracker works: the reader's scan buffer at least
   EXPECT_LT(largest_allocation, 1024U * 1024U);
   EXPECT_FALSE(read);
@@ -124,9 +124,9 @@ TEST_F(LcmLogReader, EventsClaiming100MegabytesAnd1GigabyteBeyondTheEndAreTrunca
   append(bytes, Bytes{'P', 'O', 'S', 'E'});
   LogReader reader = openBytes(bytes);
 
-  ifar::test::startTrackingAllocations();
+  ifar::test_support::startTrackingAllocations();
   const std::vector<LogEvent> events = readAll(reader);
-  EXPECT_LT(ifar::test::stopTrackingAllocations(), 1024U * 1024U);
+  EXPECT_LT(ifar::test_support::stopTrackingAllocations(), 1024U * 1024U);
 
   ASSERT_EQ(events.size(), 1U);
   EXPECT_EQ(events[0].data, kPoseData);

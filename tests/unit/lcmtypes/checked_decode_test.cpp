@@ -15,7 +15,7 @@
 #include "ifar/pose_t.hpp"
 #include "ifar/velodyne_packet_t.hpp"
 #include "lcmtypes/samples/sample_messages.hpp"
-#include "tests/support/allocation_tracker.hpp"
+#include "testing/allocation_tracker.hpp"
 
 namespace {
 
@@ -72,9 +72,9 @@ TEST(CheckedDecode, APacketClaimingAGigabyteAllocatesNothingForIt)
   writeInt32(bytes, kSizeOffset, 1'000'000'000);
 
   ifar::velodyne_packet_t decoded;
-  ifar::test::startTrackingAllocations();
+  ifar::test_support::startTrackingAllocations();
   const ifar::lcmtypes::DecodeResult result = ifar::lcmtypes::decodeLcm(decoded, bytes.data(), bytes.size());
-  EXPECT_LT(ifar::test::stopTrackingAllocations(), 64U * 1024U);
+  EXPECT_LT(ifar::test_support::stopTrackingAllocations(), 64U * 1024U);
   EXPECT_FALSE(result.ok());
   EXPECT_EQ(result.error,
             "velodyne_packet_t.data claims 1000000000 elements of at least 1 bytes at byte 28, 3 bytes left");
@@ -93,9 +93,9 @@ TEST(CheckedDecode, ANestedClaimIsNamedAndRefusedBeforeTheDecode)
   writeInt32(bytes, kNumControlsOffset, 500'000'000);
 
   ifar::path_t decoded;
-  ifar::test::startTrackingAllocations();
+  ifar::test_support::startTrackingAllocations();
   const ifar::lcmtypes::DecodeResult result = ifar::lcmtypes::decodeLcm(decoded, bytes.data(), bytes.size());
-  EXPECT_LT(ifar::test::stopTrackingAllocations(), 64U * 1024U);
+  EXPECT_LT(ifar::test_support::stopTrackingAllocations(), 64U * 1024U);
   EXPECT_EQ(
       result.error,
       "path_t.push_plans[0].controls claims 500000000 elements of at least 77 bytes at byte 121, 40 bytes "

@@ -10,9 +10,9 @@
 #include <gtest/gtest.h>
 #include <lcm/lcm-cpp.hpp>
 
-#include "tools/planner_render/graph_render.hpp"
+#include "viz/graph_render.hpp"
 
-namespace ifar::planner_render {
+namespace ifar::viz {
 namespace {
 
 polygon_t square(std::int64_t id, std::int8_t kind, double x0, double y0, double side)
@@ -88,16 +88,16 @@ void writeEvent(lcm::LogFile& log, const std::string& channel, const Message& me
   ASSERT_EQ(log.writeEvent(&event), 0);
 }
 
-render::Color at(const render::Canvas& canvas, double x, double y)
+viz::Color at(const viz::Canvas& canvas, double x, double y)
 {
-  const render::PixelPoint pixel = canvas.toPixel(geometry::Point(x, y));
+  const viz::PixelPoint pixel = canvas.toPixel(geometry::Point(x, y));
   return canvas.pixel(static_cast<int>(pixel.column), static_cast<int>(pixel.row));
 }
 
 /// True when `color` is within one pixel of the world point (thin lines may fall on a pixel boundary).
-bool colorNear(const render::Canvas& canvas, double x, double y, render::Color color)
+bool colorNear(const viz::Canvas& canvas, double x, double y, viz::Color color)
 {
-  const render::PixelPoint pixel = canvas.toPixel(geometry::Point(x, y));
+  const viz::PixelPoint pixel = canvas.toPixel(geometry::Point(x, y));
   for (int row = -1; row <= 1; ++row) {
     for (int column = -1; column <= 1; ++column) {
       if (canvas.pixel(static_cast<int>(pixel.column) + column, static_cast<int>(pixel.row) + row) == color) {
@@ -139,7 +139,7 @@ TEST(PlannerGraphRender, LastGraphAndPathOfALogAreDrawnInTheirColours)
 
   RenderOptions options;
   options.metres_per_pixel = 0.05;
-  const render::Canvas canvas = renderGraph(*last.graph, last.path, options);
+  const viz::Canvas canvas = renderGraph(*last.graph, last.path, options);
   // Extent (0, 0)..(8, 8) plus 1 m margin at 5 cm a pixel. The legend covers the top-left corner.
   EXPECT_EQ(canvas.widthPixels(), 200);
   EXPECT_EQ(canvas.heightPixels(), 200);
@@ -148,7 +148,7 @@ TEST(PlannerGraphRender, LastGraphAndPathOfALogAreDrawnInTheirColours)
   EXPECT_TRUE(colorNear(canvas, 7.0, 4.0, colors::kVisibilityEdge));
   EXPECT_TRUE(colorNear(canvas, 4.0, 2.5, colors::kPath));
   EXPECT_FALSE(colorNear(canvas, 7.0, 4.5, colors::kVisibilityEdge));
-  EXPECT_EQ(at(canvas, 6.0, 6.0), (render::Color{255, 255, 255}));  // nothing drawn here
+  EXPECT_EQ(at(canvas, 6.0, 6.0), (viz::Color{255, 255, 255}));  // nothing drawn here
 
   const std::string png = std::string(IFAR_BINARY_DIR) + "/graph_render_test.png";
   EXPECT_EQ(canvas.writePng(png), "");
@@ -164,9 +164,9 @@ TEST(PlannerGraphRender, ClockwiseHolesAreClearedInsideTheirObstacle)
   graph.num_polygons = 2;
   RenderOptions options;
   options.margin_m = 4.0;  // keeps the legend away from the walls
-  const render::Canvas canvas = renderGraph(graph, std::nullopt, options);
-  EXPECT_EQ(at(canvas, 2.0, 2.0), (render::Color{255, 255, 255}));  // the free room
-  EXPECT_EQ(at(canvas, 0.5, 0.5), colors::kBackground);             // the wall band
+  const viz::Canvas canvas = renderGraph(graph, std::nullopt, options);
+  EXPECT_EQ(at(canvas, 2.0, 2.0), (viz::Color{255, 255, 255}));  // the free room
+  EXPECT_EQ(at(canvas, 0.5, 0.5), colors::kBackground);          // the wall band
   EXPECT_EQ(at(canvas, 3.5, 2.0), colors::kBackground);
 }
 
@@ -178,7 +178,7 @@ TEST(PlannerGraphRender, AWindowDrawsThatRectangleOnlyWithTheTruthOutlined)
   ASSERT_TRUE(options.window.has_value());
   RunOverlay run;
   run.truth = {{{6.5, 0.5}, {8.5, 0.5}, {8.5, 2.5}, {6.5, 2.5}}};  // the object really is here
-  const render::Canvas canvas = renderGraph(exampleGraph(), examplePath(), options, run);
+  const viz::Canvas canvas = renderGraph(exampleGraph(), examplePath(), options, run);
   EXPECT_EQ(canvas.widthPixels(), 400);
   EXPECT_EQ(canvas.heightPixels(), 400);
   EXPECT_EQ(at(canvas, 7.0, 1.0), colors::kMovable);
@@ -209,4 +209,4 @@ TEST(PlannerGraphRender, MissingLogIsAnError)
 }
 
 }  // namespace
-}  // namespace ifar::planner_render
+}  // namespace ifar::viz

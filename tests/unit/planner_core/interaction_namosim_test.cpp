@@ -13,7 +13,7 @@
 #include "planner/interaction/convex_polygon.hpp"
 #include "sim/importers/namosim_svg_importer.hpp"
 #include "sim/simulator/simulator.hpp"
-#include "tests/unit/planner_core/simulated_feed.hpp"
+#include "testing/simulated_feed.hpp"
 
 namespace ifar::planner {
 namespace {
@@ -34,7 +34,8 @@ sim::World importScenario(const std::string& name)
 FrameResult planFromStart(const sim::World& world, const geometry::Point& goal, Planner& planner)
 {
   FrameAssembler assembler{InputSettings{}};
-  const std::vector<FrameInput> frames = testing::feedAll(testing::recordSimulation(world, 0.35), assembler);
+  const std::vector<FrameInput> frames =
+      test_support::feedAll(test_support::recordSimulation(world, 0.35), assembler);
   EXPECT_GE(frames.size(), 2U);
   EXPECT_TRUE(planner.setGoal(Goal{1, goal}));
   FrameResult result;

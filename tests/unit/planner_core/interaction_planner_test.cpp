@@ -14,7 +14,7 @@
 #include "planner/core/frame_assembler.hpp"
 #include "planner/core/planner.hpp"
 #include "sim/world/world_file.hpp"
-#include "tests/unit/planner_core/simulated_feed.hpp"
+#include "testing/simulated_feed.hpp"
 
 namespace ifar::planner {
 namespace {
@@ -39,7 +39,7 @@ const std::vector<FrameInput>& standingFrames()
 {
   static const std::vector<FrameInput> frames = [] {
     FrameAssembler assembler{InputSettings{}};
-    return testing::feedAll(testing::recordSimulation(demoRoom(), 0.45), assembler);
+    return test_support::feedAll(test_support::recordSimulation(demoRoom(), 0.45), assembler);
   }();
   return frames;
 }
@@ -53,7 +53,7 @@ const std::vector<FrameInput>& approachFrames()
     sim::World world = demoRoom();
     world.start = geometry::Pose2{8.0, 12.0, M_PI / 2.0};
     FrameAssembler assembler{InputSettings{}};
-    return testing::feedAll(testing::recordSimulation(world, 1.25), assembler);
+    return test_support::feedAll(test_support::recordSimulation(world, 1.25), assembler);
   }();
   return frames;
 }
@@ -232,7 +232,7 @@ const std::vector<FrameInput>& approachFramesWithoutTheBox()
                                        }),
                         world.objects.end());
     FrameAssembler assembler{InputSettings{}};
-    return testing::feedAll(testing::recordSimulation(world, 1.25), assembler);
+    return test_support::feedAll(test_support::recordSimulation(world, 1.25), assembler);
   }();
   return frames;
 }
@@ -397,7 +397,7 @@ obstacles:
                                                    "one_door");
     EXPECT_TRUE(world.ok()) << world.error();
     FrameAssembler assembler{InputSettings{}};
-    return world.ok() ? testing::feedAll(testing::recordSimulation(world.world(), 1.25), assembler)
+    return world.ok() ? test_support::feedAll(test_support::recordSimulation(world.world(), 1.25), assembler)
                       : std::vector<FrameInput>{};
   }();
   return frames;
@@ -536,7 +536,7 @@ TEST(InteractionPlanner, ObjectKeepsItsIdWhileTheVehicleDrivesTwoMetres)
 {
   FrameAssembler assembler{InputSettings{}};
   const std::vector<FrameInput> frames =
-      testing::feedAll(testing::recordSimulation(demoRoom(), 3.0, 1.0), assembler);
+      test_support::feedAll(test_support::recordSimulation(demoRoom(), 3.0, 1.0), assembler);
   ASSERT_GE(frames.size(), 10U);
   Planner planner{PlannerSettings{}};
   ASSERT_TRUE(planner.setGoal(Goal{3, kGoal}));

@@ -20,9 +20,9 @@
 #include "ifar/path_t.hpp"
 #include "ifar/planner_status_t.hpp"
 #include "sim/world/world_file.hpp"
+#include "testing/child_process.hpp"
+#include "testing/simulated_feed.hpp"
 #include "tests/replay/feed_publisher.hpp"
-#include "tests/support/child_process.hpp"
-#include "tests/unit/planner_core/simulated_feed.hpp"
 
 namespace ifar::planner {
 namespace {
@@ -75,7 +75,7 @@ TEST(PlannerDaemonInteraction, PushPathResendAndAffordance)
   goal.goal_id = 8;
   goal.x = 8.0;
   goal.y = 26.0;
-  replay_testing::publishInRealTime(bus, testing::recordSimulation(world.world(), 1.0), goal);
+  replay_testing::publishInRealTime(bus, test_support::recordSimulation(world.world(), 1.0), goal);
   const auto answer = std::chrono::steady_clock::now() + std::chrono::seconds(3);
   while ((received.paths.empty() || !hasPush(received.paths.back())) &&
          std::chrono::steady_clock::now() < answer) {

@@ -7,10 +7,10 @@
 #include <gtest/gtest.h>
 
 #include "common/geometry/polygon.hpp"
-#include "planner/daemon/planner_messages.hpp"
+#include "planner/node/planner_messages.hpp"
 #include "sim/simulator/builtin_worlds.hpp"
 #include "sim/world/world_file.hpp"
-#include "tests/unit/planner_core/simulated_feed.hpp"
+#include "testing/simulated_feed.hpp"
 
 namespace ifar::planner {
 namespace {
@@ -19,7 +19,7 @@ TEST(PlannerMessages, GraphPathAndStatusCarryThePlannerResult)
 {
   FrameAssembler assembler{InputSettings{}};
   const std::vector<FrameInput> frames =
-      testing::feedAll(testing::recordSimulation(sim::builtinPushRoom(200.0), 0.35), assembler);
+      test_support::feedAll(test_support::recordSimulation(sim::builtinPushRoom(200.0), 0.35), assembler);
   ASSERT_FALSE(frames.empty());
   Planner planner{PlannerSettings{}};
   ASSERT_TRUE(planner.setGoal(Goal{5, geometry::Point(6.0, 6.0)}));
@@ -63,7 +63,7 @@ TEST(PlannerMessages, PushPathCarriesWaypointKindsAndPushPlans)
   ASSERT_TRUE(world.ok()) << world.error();
   FrameAssembler assembler{InputSettings{}};
   const std::vector<FrameInput> frames =
-      testing::feedAll(testing::recordSimulation(world.world(), 0.25), assembler);
+      test_support::feedAll(test_support::recordSimulation(world.world(), 0.25), assembler);
   ASSERT_FALSE(frames.empty());
   Planner planner{PlannerSettings{}};
   ASSERT_TRUE(planner.setGoal(Goal{2, geometry::Point(8.0, 26.0)}));

@@ -14,7 +14,7 @@
 #include "planner/graph/graph_file.hpp"
 #include "sim/simulator/builtin_worlds.hpp"
 #include "sim/world/world_geometry.hpp"
-#include "tests/unit/planner_core/simulated_feed.hpp"
+#include "testing/simulated_feed.hpp"
 
 namespace ifar::planner {
 namespace {
@@ -22,17 +22,17 @@ namespace {
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 /// Box of 0.6 m centred at (3.5, 6) in a 12 m room; the vehicle stands at (2, 6) facing it.
-const std::vector<testing::FeedRecord>& pushRoomRecords()
+const std::vector<test_support::FeedRecord>& pushRoomRecords()
 {
-  static const std::vector<testing::FeedRecord> records =
-      testing::recordSimulation(sim::builtinPushRoom(200.0), 0.35);
+  static const std::vector<test_support::FeedRecord> records =
+      test_support::recordSimulation(sim::builtinPushRoom(200.0), 0.35);
   return records;
 }
 
 std::vector<FrameInput> pushRoomFrames()
 {
   FrameAssembler assembler{InputSettings{}};
-  return testing::feedAll(pushRoomRecords(), assembler);
+  return test_support::feedAll(pushRoomRecords(), assembler);
 }
 
 /// A frame with valid motion: the vehicle still at (2, 6) facing +x.
@@ -444,10 +444,10 @@ sim::World tunnelInRock()
 /// goal's y, whether the path's first step points south (back the way it came).
 std::vector<bool> southboundFrames(double layer_size_m)
 {
-  static const std::vector<testing::FeedRecord> records =
-      testing::recordSimulation(tunnelInRock(), 30.0, 1.0);
+  static const std::vector<test_support::FeedRecord> records =
+      test_support::recordSimulation(tunnelInRock(), 30.0, 1.0);
   FrameAssembler assembler{InputSettings{}};
-  const std::vector<FrameInput> frames = testing::feedAll(records, assembler);
+  const std::vector<FrameInput> frames = test_support::feedAll(records, assembler);
   PlannerSettings settings;
   settings.perception.layer_size_m = layer_size_m;
   Planner planner{settings};
@@ -497,7 +497,7 @@ std::vector<FrameInput> wallBetweenFrames()
   world.goals.push_back(sim::Goal{"east", geometry::Point(10.0, -2.0)});
   sim::updateBounds(world);
   FrameAssembler assembler{InputSettings{}};
-  return testing::feedAll(testing::recordSimulation(world, 8.0, 1.0), assembler);
+  return test_support::feedAll(test_support::recordSimulation(world, 8.0, 1.0), assembler);
 }
 
 TEST(PlannerCore, WithAnUnseenCostAWayThroughSeenSpaceBeatsAShorterGuess)
@@ -530,19 +530,19 @@ TEST(PlannerCore, WithAnUnseenCostAWayThroughSeenSpaceBeatsAShorterGuess)
 TEST(PlannerFrameAssembler, BadPosesAreRefusedWithAReason)
 {
   FrameAssembler assembler{InputSettings{}};
-  PoseSample pose = testing::planarPose(1'000'000, 1.0, 2.0, 0.0);
+  PoseSample pose = test_support::planarPose(1'000'000, 1.0, 2.0, 0.0);
   EXPECT_EQ(assembler.addPose(pose, 1'000'000), InputVerdict::Accepted);
-  PoseSample nan_pose = testing::planarPose(1'010'000, kNaN, 2.0, 0.0);
+  PoseSample nan_pose = test_support::planarPose(1'010'000, kNaN, 2.0, 0.0);
   EXPECT_EQ(assembler.addPose(nan_pose, 1'010'000), InputVerdict::NonFinite);
-  PoseSample infinite_pose = testing::planarPose(1'010'000, 1.0, 2.0, 0.0);
+  PoseSample infinite_pose = test_support::planarPose(1'010'000, 1.0, 2.0, 0.0);
   infinite_pose.orientation.w() = std::numeric_limits<double>::infinity();
   EXPECT_EQ(assembler.addPose(infinite_pose, 1'010'000), InputVerdict::NonFinite);
-  PoseSample scaled = testing::planarPose(1'010'000, 1.0, 2.0, 0.0);
+  PoseSample scaled = test_support::planarPose(1'010'000, 1.0, 2.0, 0.0);
   scaled.orientation.coeffs() *= 2.0;
   EXPECT_EQ(assembler.addPose(scaled, 1'010'000), InputVerdict::NotUnitQuaternion);
-  EXPECT_EQ(assembler.addPose(testing::planarPose(900'000, 1.0, 2.0, 0.0), 1'010'000),
+  EXPECT_EQ(assembler.addPose(test_support::planarPose(900'000, 1.0, 2.0, 0.0), 1'010'000),
             InputVerdict::OutOfOrder);
-  EXPECT_EQ(assembler.addPose(testing::planarPose(9'000'000, 1.0, 2.0, 0.0), 1'010'000),
+  EXPECT_EQ(assembler.addPose(test_support::planarPose(9'000'000, 1.0, 2.0, 0.0), 1'010'000),
             InputVerdict::FromFuture);
   EXPECT_EQ(assembler.rejectedInputs(), 5);
   ASSERT_TRUE(assembler.latestPose().has_value());
@@ -551,12 +551,12 @@ TEST(PlannerFrameAssembler, BadPosesAreRefusedWithAReason)
 
 TEST(PlannerFrameAssembler, BadPacketsAreRefusedAndFlagTheNextFrame)
 {
-  const std::vector<testing::FeedRecord>& records = pushRoomRecords();
+  const std::vector<test_support::FeedRecord>& records = pushRoomRecords();
   FrameAssembler assembler{InputSettings{}};
   std::vector<FrameInput> frames;
   bool injected = false;
-  for (const testing::FeedRecord& record : records) {
-    if (record.kind == testing::FeedRecord::Kind::Pose) {
+  for (const test_support::FeedRecord& record : records) {
+    if (record.kind == test_support::FeedRecord::Kind::Pose) {
       assembler.addPose(record.pose, record.utime);
       continue;
     }
@@ -592,8 +592,8 @@ TEST(PlannerFrameAssembler, BadPacketsAreRefusedAndFlagTheNextFrame)
 TEST(PlannerFrameAssembler, PacketsWithoutPosesGiveAFrameThatCannotBePlaced)
 {
   FrameAssembler assembler{InputSettings{}};
-  for (const testing::FeedRecord& record : pushRoomRecords()) {
-    if (record.kind == testing::FeedRecord::Kind::Packet) {
+  for (const test_support::FeedRecord& record : pushRoomRecords()) {
+    if (record.kind == test_support::FeedRecord::Kind::Packet) {
       assembler.addPacket(common::ByteView(record.payload.data(), record.payload.size()), record.utime,
                           record.utime);
     }

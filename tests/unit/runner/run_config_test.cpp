@@ -1,6 +1,6 @@
 // The runner reads the daemons' config files with their strict loaders.
 
-#include "sim/runner/run_config.hpp"
+#include "system/run_config.hpp"
 
 #include <filesystem>
 #include <fstream>
@@ -24,12 +24,22 @@ TEST(RunnerConfig, ReadsTheShippedConfig)
   EXPECT_DOUBLE_EQ(request.vehicle.mass_kg, vehicle.mass_kg);
   EXPECT_DOUBLE_EQ(request.planner.vehicle.width_m, vehicle.width_m);
   EXPECT_DOUBLE_EQ(request.planner.interaction.pusher.max_push_force_n, vehicle.maxPushForce());
-  EXPECT_DOUBLE_EQ(request.planner_rate_hz, 2.5);
-  EXPECT_GT(request.path_resend_hz, 0.0);
-  EXPECT_DOUBLE_EQ(request.control_rate_hz, 50.0);
-  EXPECT_DOUBLE_EQ(request.simulator.physics.step_seconds, 1.0 / 200.0);
-  EXPECT_TRUE(request.simulator.lidar_enabled);
-  EXPECT_EQ(request.simulator.seed, 1U);
+  EXPECT_DOUBLE_EQ(request.planner_node.rate_hz, 2.5);
+  EXPECT_DOUBLE_EQ(request.planner_node.path_resend_hz, 20.0);
+  EXPECT_EQ(request.planner_node.data_port, 2368);
+  EXPECT_DOUBLE_EQ(request.sim.simulator.physics.step_seconds, 1.0 / 200.0);
+  EXPECT_TRUE(request.sim.simulator.lidar_enabled);
+  EXPECT_EQ(request.sim.simulator.seed, 1U);
+  EXPECT_DOUBLE_EQ(request.sim.pose_rate_hz, 50.0);
+  EXPECT_EQ(request.sim.lidar_port, 2368);
+  EXPECT_EQ(request.velodyne.data_port, 2368);
+  EXPECT_EQ(request.velodyne.data_channel, "VELODYNE_PACKET");
+  EXPECT_EQ(request.force_sensor.channel, "FORCE");
+  EXPECT_EQ(request.force_sensor.monitor.frame_id, 400U);
+  EXPECT_EQ(request.motor.cycle_us, 10'000);
+  EXPECT_EQ(request.motor.drive.left.node_id, 1);
+  EXPECT_DOUBLE_EQ(request.motor.drive.wheel_radius_m, vehicle.wheel_radius_m);
+  EXPECT_EQ(request.can_channel, "CAN_VEHICLE");
   EXPECT_DOUBLE_EQ(request.executive.goal_tolerance_m, 0.3);
   EXPECT_DOUBLE_EQ(request.obstacles.keep_s, 0.15);
 }
@@ -43,7 +53,8 @@ class RunnerConfigCopy : public ::testing::Test {
         ("runner_config_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
     std::filesystem::remove_all(directory_);
     std::filesystem::create_directories(directory_);
-    for (const char* file : {"vehicle.yaml", "planner.yaml", "executive.yaml", "sim.yaml"}) {
+    for (const char* file :
+         {"vehicle.yaml", "planner.yaml", "executive.yaml", "sim.yaml", "can.yaml", "velodyne.yaml"}) {
       std::filesystem::copy_file(std::filesystem::path(kConfigDir) / file, directory_ / file);
     }
   }
@@ -90,6 +101,19 @@ TEST_F(RunnerConfigCopy, BadSimValueNamesKey)
     const std::string message = error.what();
     EXPECT_NE(message.find("sim.yaml"), std::string::npos) << message;
     EXPECT_NE(message.find("seed"), std::string::npos) << message;
+  }
+}
+
+TEST_F(RunnerConfigCopy, BadCanValueNamesFileAndKey)
+{
+  replace("can.yaml", "cycle_ms: 10", "cycle_ms: 0");
+  try {
+    loadRunSettings(directory_.string());
+    FAIL() << "expected a config error";
+  } catch (const common::ConfigError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("can.yaml"), std::string::npos) << message;
+    EXPECT_NE(message.find("cycle_ms"), std::string::npos) << message;
   }
 }
 

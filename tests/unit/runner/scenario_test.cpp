@@ -12,12 +12,12 @@
 
 #include <gtest/gtest.h>
 
-#include "sim/runner/graph_picture.hpp"
-#include "sim/runner/run_config.hpp"
-#include "sim/runner/scenario_runner.hpp"
-#include "sim/runner/summary_json.hpp"
 #include "sim/simulator/builtin_worlds.hpp"
 #include "sim/world/world_file.hpp"
+#include "system/graph_picture.hpp"
+#include "system/run_config.hpp"
+#include "system/scenario_runner.hpp"
+#include "system/summary_json.hpp"
 
 namespace ifar::runner {
 namespace {
@@ -172,9 +172,9 @@ TEST(RunnerScenario, BadRequestsEndAtOnce)
   EXPECT_EQ(summary.sim_time_s, 0.0);
 
   request.goal = geometry::Point(5.0, 5.0);
-  request.control_rate_hz = 0.0;
+  request.planner_node.rate_hz = 0.0;
   summary = runScenario(request, {});
-  EXPECT_EQ(summary.reason, "bad request: control_rate_hz must be a positive number");
+  EXPECT_EQ(summary.reason, "bad request: the planner's rate_hz must be a positive number");
 
   // A world the simulator refuses: an object whose outline is a line.
   request = requestFor(sim::builtinPushRoom(15.0), geometry::Point(8.0, 6.0), 10.0);

@@ -1,6 +1,6 @@
 // The --json summary line: exact text for a known summary, escaping, and no NaN in JSON.
 
-#include "sim/runner/summary_json.hpp"
+#include "system/summary_json.hpp"
 
 #include <cmath>
 #include <limits>

@@ -5,10 +5,10 @@
 
 #include "sim/generators/generators.hpp"
 #include "sim/world/world_geometry.hpp"
-#include "tools/render/canvas.hpp"
-#include "tools/render_command/world_picture.hpp"
+#include "viz/canvas.hpp"
+#include "viz/world_picture.hpp"
 
-namespace ifar::render {
+namespace ifar::viz {
 namespace {
 
 /// Width and height from a PNG's IHDR chunk (big-endian at bytes 16..23), or -1 when not a PNG.
@@ -109,4 +109,4 @@ TEST(RenderWorldPicture, DemoRoomPngHasExpectedSizeAndColoursWhereThingsAre)
 }
 
 }  // namespace
-}  // namespace ifar::render
+}  // namespace ifar::viz

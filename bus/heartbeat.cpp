@@ -1,0 +1,75 @@
+#include "bus/heartbeat.hpp"
+
+#include <unistd.h>
+
+#include "common/time.hpp"
+#include "ifar/heartbeat_t.hpp"
+
+namespace ifar::bus {
+
+namespace {
+
+void nameGrowth(std::string& message, std::int64_t before, std::int64_t after, const char* what)
+{
+  if (after <= before) {
+    return;
+  }
+  if (!message.empty()) {
+    message += ", ";
+  }
+  message += std::to_string(after - before) + " " + what;
+}
+
+}  // namespace
+
+LoopCounters countersOf(const RunLoop& loop)
+{
+  return LoopCounters{loop.badMessages(), loop.handlerErrors(), loop.publishErrors()};
+}
+
+LoopHealth healthBetween(const LoopCounters& previous, const LoopCounters& current)
+{
+  LoopHealth health;
+  nameGrowth(health.message, previous.bad_messages, current.bad_messages, "undecodable messages");
+  nameGrowth(health.message, previous.handler_errors, current.handler_errors, "handler errors");
+  nameGrowth(health.message, previous.publish_errors, current.publish_errors, "failed publishes");
+  if (!health.message.empty()) {
+    health.level = heartbeat_t::HEALTH_DEGRADED;
+    health.message += " since the last beat";
+  } else {
+    health.level = heartbeat_t::HEALTH_OK;
+  }
+  return health;
+}
+
+LoopHealth withDaemonProblem(LoopHealth health, const std::string& problem)
+{
+  if (problem.empty()) {
+    return health;
+  }
+  health.level = heartbeat_t::HEALTH_DEGRADED;
+  health.message = health.message.empty() ? problem : problem + "; " + health.message;
+  return health;
+}
+
+void publishHeartbeats(RunLoop& loop, const std::string& process, double period_s, DaemonProblem problem)
+{
+  heartbeat_t beat{};
+  beat.process = process;
+  beat.pid = static_cast<std::int32_t>(::getpid());
+  beat.sequence = 0;
+  LoopCounters previous = countersOf(loop);
+  loop.every(period_s, [&loop, beat, previous, problem = std::move(problem)]() mutable {
+    const LoopCounters current = countersOf(loop);
+    const LoopHealth health =
+        withDaemonProblem(healthBetween(previous, current), problem ? problem() : std::string());
+    previous = current;
+    beat.utime = common::nowMicroseconds();
+    beat.health = health.level;
+    beat.message = health.message;
+    loop.publish(kHeartbeatChannel, beat);
+    ++beat.sequence;
+  });
+}
+
+}  // namespace ifar::bus

@@ -1,0 +1,34 @@
+#pragma once
+// The executive daemon's wiring: ExecutiveNode's inputs subscribed on the run loop and its control cycle
+// on the loop's 50 Hz timer, outputs published. Apart from main() so a test can run it on an in-process
+// bus with a manual clock (tests/replay/node_identity_test.cpp).
+
+#include <memory>
+
+#include <spdlog/spdlog.h>
+
+#include "bus/run_loop.hpp"
+#include "executive/node/executive_node.hpp"
+
+namespace ifar::executive {
+
+class ExecutiveDaemon {
+ public:
+  /// Subscribes on `loop` (which must outlive this object) and runs a control cycle every kControlPeriodS.
+  ExecutiveDaemon(bus::RunLoop& loop, const ExecutiveSettings& settings, const ObstacleSettings& obstacles,
+                  const common::VehicleSettings& vehicle, std::shared_ptr<spdlog::logger> logger);
+  ExecutiveDaemon(const ExecutiveDaemon&) = delete;
+  ExecutiveDaemon& operator=(const ExecutiveDaemon&) = delete;
+
+  /// Publishes the node's stop outputs (a zero command, the last status again).
+  void publishStop();
+  const ExecutiveNode& node() const { return node_; }
+
+ private:
+  void publish(const ExecutiveOutputs& outputs);
+
+  bus::RunLoop& loop_;
+  ExecutiveNode node_;
+};
+
+}  // namespace ifar::executive

@@ -1,0 +1,19 @@
+#pragma once
+// The runner's settings from the same config files the daemons read (vehicle.yaml, planner.yaml,
+// executive.yaml, sim.yaml, can.yaml and velodyne.yaml in one directory), with the daemons' strict
+// loaders: a typo or a bad value in any file stops the run with the file and key named. The channels are
+// the daemons' (the simulated bus routes by them); the transport keys (CAN interface, UDP host, log level,
+// LCM URL) are read and then unused; vehicle.yaml is always the one in the same directory (the
+// `vehicle_config` paths inside planner.yaml and sim.yaml name it for the daemons).
+
+#include <string>
+
+#include "system/scenario_runner.hpp"
+
+namespace ifar::runner {
+
+/// A request with every setting filled in from `config_directory`; world and goal are left empty.
+/// Throws common::ConfigError naming the file and key.
+RunRequest loadRunSettings(const std::string& config_directory);
+
+}  // namespace ifar::runner

@@ -1,0 +1,273 @@
+// ifar-run WORLD --goal X,Y: the headless runner. The simulator and every daemon's node core in one process
+// on simulated time, deterministic and faster than real time. Progress goes to stderr about once per
+// simulated second; the summary to stdout (with --json as one JSON object on the last line).
+// Exit code 0 when the vehicle arrived, 1 when it did not, 2 on bad input (world, goal, config).
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+#include <string>
+#include <utility>
+
+#include <CLI/CLI.hpp>
+
+#include "common/command_line.hpp"
+#include "common/config.hpp"
+#include "sim/generators/generators.hpp"
+#include "sim/simulator/builtin_worlds.hpp"
+#include "sim/world/world_file.hpp"
+#include "system/graph_picture.hpp"
+#include "system/run_config.hpp"
+#include "system/run_picture.hpp"
+#include "system/scenario_runner.hpp"
+#include "system/summary_json.hpp"
+
+namespace {
+
+constexpr int kExitArrived = 0;
+constexpr int kExitNotArrived = 1;
+constexpr int kExitBadInput = 2;
+
+/// "X,Y" as a point; nullopt when it is not two numbers separated by a comma.
+std::optional<ifar::geometry::Point> parseGoal(const std::string& text)
+{
+  const std::size_t comma = text.find(',');
+  if (comma == std::string::npos) {
+    return std::nullopt;
+  }
+  const std::string x_text = text.substr(0, comma);
+  const std::string y_text = text.substr(comma + 1);
+  char* end = nullptr;
+  const double x = std::strtod(x_text.c_str(), &end);
+  if (x_text.empty() || *end != '\0') {
+    return std::nullopt;
+  }
+  const double y = std::strtod(y_text.c_str(), &end);
+  if (y_text.empty() || *end != '\0') {
+    return std::nullopt;
+  }
+  return ifar::geometry::Point(x, y);
+}
+
+/// A world file, else a builtin world or a generator kind of that name. The error names the input.
+ifar::sim::WorldResult loadWorld(const std::string& name, std::uint64_t seed)
+{
+  if (!std::filesystem::exists(name)) {
+    ifar::sim::World builtin;
+    if (ifar::sim::builtinWorldByName(name, builtin)) {
+      return ifar::sim::WorldResult::success(std::move(builtin));
+    }
+    if (const auto kind = ifar::sim::parseWorldKind(name)) {
+      return ifar::sim::generateWorld(*kind, seed);
+    }
+  }
+  return ifar::sim::loadWorldFile(name);
+}
+
+/// Why a picture cannot be written to `path` (its folder missing, not a folder or not writable), checked
+/// before a run of minutes whose picture would otherwise be lost at its end; empty when it can.
+std::string outputPathProblem(const std::string& path)
+{
+  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  const std::string folder = parent.empty() ? "." : parent.string();
+  std::error_code error;
+  if (!std::filesystem::is_directory(folder, error)) {
+    return "folder '" + folder + "' does not exist or is not a folder";
+  }
+  if (::access(folder.c_str(), W_OK) != 0) {
+    return "folder '" + folder + "' is not writable";
+  }
+  return {};
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+  CLI::App app{
+      "Headless runner: the simulator and the daemons' cores (drivers, planner, executive) in one process on "
+      "simulated time (deterministic, faster than real time).\nExit code 0 when the vehicle arrived, 1 when "
+      "it did not, 2 on bad input."};
+  std::string world_name;
+  std::string goal_text;
+  double max_time_s = 300.0;
+  bool no_interaction = false;
+  bool json = false;
+  std::string png_path;
+  std::string graph_png_path;
+  double graph_at_s = 0.0;
+  std::string config_dir = "config";
+  app.add_option("world", world_name,
+                 "World file (YAML, docs/worlds.md), or a builtin (room, push_light, push_heavy, tunnel) or "
+                 "generated kind (room, room_objects, office, tunnel, demo_room) when no such file exists")
+      ->required();
+  app.add_option("--goal", goal_text, "Goal as X,Y in metres (default: the world's first goal)");
+  app.add_option("--max-time", max_time_s, "Simulated seconds before the run counts as failed")
+      ->capture_default_str();
+  app.add_flag("--no-interaction", no_interaction, "FAR mode: plan without interaction edges (never push)");
+  bool known_map = false;
+  app.add_flag("--known-map", known_map,
+               "The planner knows the world's walls before the run (movable objects are still found by the "
+               "lidar)");
+  app.add_flag("--json", json, "Print the summary as one JSON object on the last line of stdout");
+  app.add_option("--png", png_path, "Write a picture of the world, trajectory and final object poses");
+  app.add_option(
+      "--graph-png", graph_png_path,
+      "Write a picture of the planner's graph, polygons and path at its last frame (or at --graph-at), "
+      "with the trajectory so far");
+  std::string graph_window_text;
+  app.add_option("--graph-window", graph_window_text,
+                 "--graph-png draws only this world rectangle: X0,Y0,X1,Y1 in metres");
+  double graph_resolution_m = 0.05;
+  app.add_option("--graph-resolution", graph_resolution_m, "--graph-png metres per pixel")
+      ->capture_default_str();
+  CLI::Option* graph_at =
+      app.add_option("--graph-at", graph_at_s,
+                     "Simulated seconds: --graph-png draws the first planner frame at or after this time");
+  std::string log_path;
+  app.add_option("--log", log_path,
+                 "Write every message the nodes exchange to this LCM log (ifar replay, ifar spy, log-info)");
+  app.add_option("--config-dir", config_dir,
+                 "Directory with vehicle.yaml, planner.yaml, executive.yaml and sim.yaml")
+      ->capture_default_str();
+  if (const auto exit_code = ifar::common::parseCommandLine(app, argc, argv)) {
+    return *exit_code;
+  }
+
+  ifar::runner::RunRequest request;
+  try {
+    request = ifar::runner::loadRunSettings(config_dir);
+  } catch (const ifar::common::ConfigError& error) {
+    std::cerr << "error: " << error.what() << "\n";
+    return kExitBadInput;
+  }
+  if (!(std::isfinite(max_time_s) && max_time_s > 0.0)) {
+    std::cerr << "error: --max-time: must be a positive number of seconds, got " << max_time_s << "\n";
+    return kExitBadInput;
+  }
+  if ((graph_at->count() > 0 || !graph_window_text.empty()) && graph_png_path.empty()) {
+    std::cerr << "error: --graph-at and --graph-window need --graph-png\n";
+    return kExitBadInput;
+  }
+  if (graph_at->count() > 0 && !(std::isfinite(graph_at_s) && graph_at_s >= 0.0)) {
+    std::cerr << "error: --graph-at: must be a number of seconds >= 0, got " << graph_at_s << "\n";
+    return kExitBadInput;
+  }
+  if (!(std::isfinite(graph_resolution_m) && graph_resolution_m > 0.0)) {
+    std::cerr << "error: --graph-resolution: must be a positive number of metres, got " << graph_resolution_m
+              << "\n";
+    return kExitBadInput;
+  }
+  ifar::viz::RenderOptions graph_options;
+  graph_options.metres_per_pixel = graph_resolution_m;
+  if (!graph_window_text.empty()) {
+    graph_options.window = ifar::viz::parseWindow(graph_window_text);
+    if (!graph_options.window) {
+      std::cerr << "error: --graph-window: expected " << ifar::viz::kWindowFormat << ", got '"
+                << graph_window_text << "'\n";
+      return kExitBadInput;
+    }
+  }
+  for (const auto& [option, path] :
+       {std::pair<const char*, const std::string&>{"--png", png_path},
+        std::pair<const char*, const std::string&>{"--graph-png", graph_png_path}}) {
+    if (!path.empty()) {
+      if (const std::string problem = outputPathProblem(path); !problem.empty()) {
+        std::cerr << "error: " << option << ": cannot write '" << path << "': " << problem << "\n";
+        return kExitBadInput;
+      }
+    }
+  }
+  request.max_sim_time_s = max_time_s;
+  request.planner.interaction_enabled = !no_interaction;
+  request.known_map = known_map;
+  request.log_path = log_path;
+
+  ifar::sim::WorldResult loaded = loadWorld(world_name, request.sim.simulator.seed);
+  if (!loaded.ok()) {
+    std::cerr << "error: world: " << loaded.error() << "\n";
+    return kExitBadInput;
+  }
+  request.world = std::move(loaded.world());
+
+  if (goal_text.empty()) {
+    if (request.world.goals.empty()) {
+      std::cerr << "error: --goal: world '" << request.world.name << "' has no goal; give --goal X,Y\n";
+      return kExitBadInput;
+    }
+    request.goal = request.world.goals.front().position;
+  } else {
+    const auto goal = parseGoal(goal_text);
+    if (!goal) {
+      std::cerr << "error: --goal: expected X,Y in metres, got '" << goal_text << "'\n";
+      return kExitBadInput;
+    }
+    if (!goal->allFinite()) {
+      std::cerr << "error: --goal: coordinates must be finite numbers, got '" << goal_text << "'\n";
+      return kExitBadInput;
+    }
+    request.goal = *goal;
+  }
+
+  std::cerr << "world '" << request.world.name << "' from " << request.world.source << ", goal ("
+            << request.goal.x() << ", " << request.goal.y() << "), "
+            << (request.planner.interaction_enabled ? "interaction on" : "FAR mode (no interaction)")
+            << (request.known_map ? ", walls known beforehand" : "") << "\n";
+  ifar::runner::GraphPicture graph_picture(
+      request.world, graph_at->count() > 0 ? std::optional<double>(graph_at_s) : std::nullopt);
+  ifar::runner::FrameObserver observe_frame;
+  if (!graph_png_path.empty()) {
+    observe_frame = [&graph_picture](const ifar::runner::FrameView& frame) { graph_picture.observe(frame); };
+  }
+  const ifar::runner::RunSummary summary = ifar::runner::runScenario(
+      request, [](const std::string& line) { std::cerr << line << "\n"; }, observe_frame);
+  if (summary.reason.rfind("bad request: ", 0) == 0) {
+    std::cerr << "error: " << summary.reason << "\n";
+    return kExitBadInput;
+  }
+
+  bool pictures_written = true;  // a picture asked for and not written fails the run as bad input
+  if (!png_path.empty()) {
+    const std::string error =
+        ifar::runner::writeRunPicture(request.world, request.vehicle, request.goal, summary, png_path);
+    if (!error.empty()) {
+      std::cerr << "error: --png: " << error << "\n";
+      pictures_written = false;
+    } else {
+      std::cerr << "picture written to " << png_path << "\n";
+    }
+  }
+  if (!graph_png_path.empty()) {
+    const std::string error = graph_picture.writePng(graph_png_path, graph_options);
+    if (!error.empty()) {
+      std::cerr << "error: --graph-png: " << error << "\n";
+      pictures_written = false;
+    } else {
+      std::cerr << "planner graph at " << graph_picture.keptTimeS() << " s written to " << graph_png_path
+                << "\n";
+    }
+  }
+  if (json) {
+    std::cout << ifar::runner::summaryJson(summary) << std::endl;
+  } else {
+    const std::string outcome = summary.arrived ? "arrived" : "not arrived: " + summary.reason;
+    std::printf(
+        "%s\ndistance %.2f m, simulated time %.1f s (wall %.1f s), pushes %d, replans %d, "
+        "affordance updates %d, %.2f m from the goal\n"
+        "planner frames %zu: median %.2f ms, p99 %.2f ms, max %.2f ms\n"
+        "interaction planning (no frame budget here): median %.2f ms, p99 %.2f ms, max %.2f ms\n",
+        outcome.c_str(), summary.distance_m, summary.sim_time_s, summary.wall_time_s, summary.pushes,
+        summary.replans, summary.affordance_updates, summary.goal_distance_m, summary.planner_frame.frames,
+        summary.planner_frame.median_ms, summary.planner_frame.p99_ms, summary.planner_frame.max_ms,
+        summary.interaction.median_ms, summary.interaction.p99_ms, summary.interaction.max_ms);
+  }
+  if (!pictures_written) {
+    return kExitBadInput;
+  }
+  return summary.arrived ? kExitArrived : kExitNotArrived;
+}

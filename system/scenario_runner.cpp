@@ -1,0 +1,273 @@
+#include "system/scenario_runner.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "common/percentile.hpp"
+#include "executive/modes/mode.hpp"
+#include "system/simulated_stack.hpp"
+
+namespace ifar::runner {
+namespace {
+
+// A stop (not an e-stop) that lasts this long in simulated time ends the run: the executive halted and no
+// new plan got it going again.
+constexpr double kTerminalStopS = 3.0;
+constexpr double kDegreesPerRadian = 57.29577951308232;
+constexpr std::int64_t kReportPeriodUs = 1'000'000;
+
+double secondsSince(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+FrameTimes frameTimes(const std::vector<double>& milliseconds)
+{
+  FrameTimes times;
+  times.frames = milliseconds.size();
+  if (!milliseconds.empty()) {
+    times.median_ms = common::nearestRankPercentile(milliseconds, 50.0);
+    times.p99_ms = common::nearestRankPercentile(milliseconds, 99.0);
+    times.max_ms = *std::max_element(milliseconds.begin(), milliseconds.end());
+  }
+  return times;
+}
+
+/// Why the request cannot run, empty when it can.
+std::string requestProblem(const RunRequest& request)
+{
+  if (!request.goal.allFinite()) {
+    return "goal is not finite";
+  }
+  if (!(std::isfinite(request.planner_node.rate_hz) && request.planner_node.rate_hz > 0.0)) {
+    return "the planner's rate_hz must be a positive number";
+  }
+  if (!(std::isfinite(request.planner_node.path_resend_hz) && request.planner_node.path_resend_hz > 0.0)) {
+    return "the planner's path_resend_hz must be a positive number";
+  }
+  if (!(std::isfinite(request.max_sim_time_s) && request.max_sim_time_s > 0.0)) {
+    return "max_sim_time_s must be a positive number";
+  }
+  if (!(std::isfinite(request.sim.simulator.physics.step_seconds) &&
+        request.sim.simulator.physics.step_seconds > 0.0)) {
+    return "the physics step must be a positive number";
+  }
+  if (request.motor.cycle_us <= 0) {
+    return "the motor cycle must be a positive number";
+  }
+  return {};
+}
+
+/// One run: the stack, and what the summary needs from it.
+class Scenario {
+ public:
+  Scenario(const RunRequest& request, const std::function<void(const std::string&)>& progress,
+           const FrameObserver& observe_frame);
+  /// Starts recording to request.log_path; the reason when it cannot.
+  std::string startLog();
+  RunSummary run();
+
+ private:
+  void simulatorStepped(const sim::SimulatorStep& step);
+  void plannerFinished(const planner::PlannerJobResult& finished, bool with_frame, std::int64_t now_us);
+  void executiveCycled(const executive::ExecutiveOutputs& outputs, std::int64_t now_us);
+  void report(std::int64_t now_us) const;
+  double simulatedSeconds(std::int64_t now_us) const;
+
+  const RunRequest& request_;
+  const std::function<void(const std::string&)>& progress_;
+  const FrameObserver& observe_frame_;
+  std::int64_t epoch_us_;
+  SimulatedStack stack_;
+  geometry::Pose2 vehicle_;  // ground truth after the last step
+  std::vector<sim::physics::BodyState> objects_;
+  executive::Status last_status_;
+  std::int64_t stopped_since_us_ = -1;
+  bool ended_ = false;
+  std::vector<double> frame_ms_;        // per planner frame, for summary_.planner_frame
+  std::vector<double> interaction_ms_;  // ... and summary_.interaction
+  RunSummary summary_;
+};
+
+Scenario::Scenario(const RunRequest& request, const std::function<void(const std::string&)>& progress,
+                   const FrameObserver& observe_frame)
+    : request_(request),
+      progress_(progress),
+      observe_frame_(observe_frame),
+      epoch_us_(request.sim.simulator.epoch_utime),
+      stack_(request,
+             StackObservers{[this](const sim::SimulatorStep& step) { simulatorStepped(step); },
+                            [this](const planner::PlannerJobResult& finished, bool with_frame,
+                                   std::int64_t now_us) { plannerFinished(finished, with_frame, now_us); },
+                            [this](const executive::ExecutiveOutputs& outputs, std::int64_t now_us) {
+                              executiveCycled(outputs, now_us);
+                            }}),
+      vehicle_(request.world.start)
+{
+}
+
+std::string Scenario::startLog()
+{
+  return request_.log_path.empty() ? std::string() : stack_.recordTo(request_.log_path);
+}
+
+double Scenario::simulatedSeconds(std::int64_t now_us) const
+{
+  return static_cast<double>(now_us - epoch_us_) * 1e-6;
+}
+
+void Scenario::simulatorStepped(const sim::SimulatorStep& step)
+{
+  summary_.distance_m += (step.output.vehicle.pose.position() - vehicle_.position()).norm();
+  vehicle_ = step.output.vehicle.pose;
+  objects_ = step.output.objects;
+}
+
+void Scenario::plannerFinished(const planner::PlannerJobResult& finished, bool with_frame,
+                               std::int64_t now_us)
+{
+  const planner::FrameResult& result = finished.result;
+  if (!with_frame) {
+    if (progress_ && !result.status.message.empty()) {
+      progress_(fmt::format("t={:.1f}s planner: {}", simulatedSeconds(now_us), result.status.message));
+    }
+    return;
+  }
+  frame_ms_.push_back(result.status.timings.total_ms);
+  interaction_ms_.push_back(result.status.timings.interaction_ms);
+  if (observe_frame_) {
+    observe_frame_(
+        FrameView{simulatedSeconds(now_us), stack_.planner(), result, summary_.trajectory, objects_});
+  }
+}
+
+void Scenario::executiveCycled(const executive::ExecutiveOutputs& outputs, std::int64_t now_us)
+{
+  const executive::Output& result = outputs.output;
+  last_status_ = result.status;
+  summary_.trajectory.push_back(vehicle_);
+  summary_.pushes = result.status.pushes;
+  summary_.replans = result.status.replans;
+  if (result.affordance) {
+    ++summary_.affordance_updates;
+    if (progress_) {
+      progress_(fmt::format("t={:.1f}s affordance: {}", simulatedSeconds(now_us), result.affordance->text));
+    }
+  }
+  if (result.blocked_passage) {
+    ++summary_.blocked_passages;
+    if (progress_) {
+      progress_(fmt::format("t={:.1f}s blocked passage: {}", simulatedSeconds(now_us),
+                            result.blocked_passage->text));
+    }
+  }
+  const double goal_distance = (vehicle_.position() - request_.goal).norm();
+  if (result.status.mode == executive::Mode::Arrived || goal_distance <= request_.planner.arrival_radius_m) {
+    summary_.arrived = true;
+    summary_.reason = "arrived";
+    ended_ = true;
+    return;
+  }
+  if (result.status.mode != executive::Mode::Stop) {
+    stopped_since_us_ = -1;
+  } else if (stopped_since_us_ < 0) {
+    stopped_since_us_ = now_us;
+  } else if (static_cast<double>(now_us - stopped_since_us_) * 1e-6 >= kTerminalStopS) {
+    summary_.reason = "stopped: " + result.status.reason;
+    ended_ = true;
+  }
+}
+
+void Scenario::report(std::int64_t now_us) const
+{
+  if (!progress_) {
+    return;
+  }
+  progress_(fmt::format(
+      "t={:.1f}s pos=({:.2f}, {:.2f}) heading={:.0f}deg mode={} target=({:.2f}, {:.2f}) goal={:.2f}m "
+      "pushes={} replans={} affordance_updates={}: {}",
+      simulatedSeconds(now_us), vehicle_.x, vehicle_.y, vehicle_.heading * kDegreesPerRadian,
+      executive::modeName(last_status_.mode), last_status_.target.x(), last_status_.target.y(),
+      (vehicle_.position() - request_.goal).norm(), last_status_.pushes, last_status_.replans,
+      summary_.affordance_updates, last_status_.reason));
+}
+
+RunSummary Scenario::run()
+{
+  const std::int64_t end_us = epoch_us_ + std::llround(request_.max_sim_time_s * 1e6);
+  std::int64_t next_report_us = epoch_us_ + kReportPeriodUs;
+  std::int64_t now_us = epoch_us_;
+  while (!ended_) {
+    stack_.step();
+    now_us = stack_.nowUtime();
+    if (now_us >= next_report_us) {
+      report(now_us);
+      next_report_us += kReportPeriodUs;
+    }
+    if (!ended_ && now_us >= end_us) {
+      summary_.reason = fmt::format("timeout after {:g} s of simulated time ({})", request_.max_sim_time_s,
+                                    last_status_.reason);
+      ended_ = true;
+    }
+  }
+  stack_.flush();
+  if (!stack_.recordingError().empty() && progress_) {
+    progress_("log: " + stack_.recordingError());
+  }
+  summary_.sim_time_s = simulatedSeconds(now_us);
+  summary_.goal_distance_m = (vehicle_.position() - request_.goal).norm();
+  summary_.planner_frame = frameTimes(frame_ms_);
+  summary_.interaction = frameTimes(interaction_ms_);
+  for (const auto& object : objects_) {
+    summary_.final_objects.push_back(object.pose);
+  }
+  return summary_;
+}
+
+}  // namespace
+
+RunSummary runScenario(const RunRequest& request, const std::function<void(const std::string&)>& progress,
+                       const FrameObserver& observe_frame)
+{
+  const auto started = std::chrono::steady_clock::now();
+  RunSummary summary;
+  std::string problem = requestProblem(request);
+  std::unique_ptr<Scenario> scenario;
+  if (problem.empty()) {
+    try {
+      scenario = std::make_unique<Scenario>(request, progress, observe_frame);
+      problem = scenario->startLog();
+    } catch (const std::invalid_argument& error) {
+      // The simulator or the executive refused the world or the vehicle.
+      problem = error.what();
+    }
+  }
+  if (scenario && problem.empty()) {
+    try {
+      summary = scenario->run();
+    } catch (const std::exception& error) {
+      // A library failure ends the run as not arrived, with the reason, instead of the process.
+      summary = RunSummary{};
+      summary.reason = std::string("failed: ") + error.what();
+      summary.goal_distance_m = (request.world.start.position() - request.goal).norm();
+    }
+  }
+  if (!problem.empty()) {
+    summary = RunSummary{};
+    summary.reason = "bad request: " + problem;
+    summary.goal_distance_m = (request.world.start.position() - request.goal).norm();
+  }
+  summary.wall_time_s = secondsSince(started);
+  return summary;
+}
+
+}  // namespace ifar::runner
