@@ -78,7 +78,8 @@ class Scenario {
 
  private:
   void simulatorStepped(const sim::SimulatorStep& step);
-  void plannerFinished(const planner::PlannerJobResult& finished, bool with_frame, std::int64_t now_us);
+  void plannerFinished(const planner::PlannerJob& job, const planner::PlannerJobResult& finished,
+                       std::int64_t now_us);
   void executiveCycled(const executive::ExecutiveOutputs& outputs, std::int64_t now_us);
   void report(std::int64_t now_us) const;
   double simulatedSeconds(std::int64_t now_us) const;
@@ -91,6 +92,8 @@ class Scenario {
   geometry::Pose2 vehicle_;  // ground truth after the last step
   std::vector<sim::physics::BodyState> objects_;
   executive::Status last_status_;
+  std::vector<std::string>
+      findings_;  // the executive's AFFORDANCE and BLOCKED_PASSAGE texts not yet answered
   std::int64_t stopped_since_us_ = -1;
   bool ended_ = false;
   std::vector<double> frame_ms_;        // per planner frame, for summary_.planner_frame
@@ -106,8 +109,8 @@ Scenario::Scenario(const RunRequest& request, const std::function<void(const std
       epoch_us_(request.sim.simulator.epoch_utime),
       stack_(request,
              StackObservers{[this](const sim::SimulatorStep& step) { simulatorStepped(step); },
-                            [this](const planner::PlannerJobResult& finished, bool with_frame,
-                                   std::int64_t now_us) { plannerFinished(finished, with_frame, now_us); },
+                            [this](const planner::PlannerJob& job, const planner::PlannerJobResult& finished,
+                                   std::int64_t now_us) { plannerFinished(job, finished, now_us); },
                             [this](const executive::ExecutiveOutputs& outputs, std::int64_t now_us) {
                               executiveCycled(outputs, now_us);
                             }}),
@@ -132,14 +135,20 @@ void Scenario::simulatorStepped(const sim::SimulatorStep& step)
   objects_ = step.output.objects;
 }
 
-void Scenario::plannerFinished(const planner::PlannerJobResult& finished, bool with_frame,
+void Scenario::plannerFinished(const planner::PlannerJob& job, const planner::PlannerJobResult& finished,
                                std::int64_t now_us)
 {
   const planner::FrameResult& result = finished.result;
-  if (!with_frame) {
-    if (progress_ && !result.status.message.empty()) {
-      progress_(fmt::format("t={:.1f}s planner: {}", simulatedSeconds(now_us), result.status.message));
+  if (!job.affordances.empty() || !job.blocked_passages.empty()) {
+    // What the executive found and what the planner made of it, on one line.
+    for (const std::string& finding : findings_) {
+      if (progress_) {
+        progress_(finding + "; planner: " + result.status.message);
+      }
     }
+    findings_.clear();
+  }
+  if (!job.frame) {
     return;
   }
   frame_ms_.push_back(result.status.timings.total_ms);
@@ -159,16 +168,11 @@ void Scenario::executiveCycled(const executive::ExecutiveOutputs& outputs, std::
   summary_.replans = result.status.replans;
   if (result.affordance) {
     ++summary_.affordance_updates;
-    if (progress_) {
-      progress_(fmt::format("t={:.1f}s affordance: {}", simulatedSeconds(now_us), result.affordance->text));
-    }
+    findings_.push_back("affordance: " + result.affordance->text);
   }
   if (result.blocked_passage) {
     ++summary_.blocked_passages;
-    if (progress_) {
-      progress_(fmt::format("t={:.1f}s blocked passage: {}", simulatedSeconds(now_us),
-                            result.blocked_passage->text));
-    }
+    findings_.push_back("blocked passage: " + result.blocked_passage->text);
   }
   const double goal_distance = (vehicle_.position() - request_.goal).norm();
   if (result.status.mode == executive::Mode::Arrived || goal_distance <= request_.planner.arrival_radius_m) {

@@ -200,10 +200,9 @@ void SimulatedStack::runPlannerJob(std::optional<planner::PlannerJob> job, std::
   if (!job) {
     return;
   }
-  const bool with_frame = job->frame.has_value();
   const planner::PlannerJobResult finished = planner::runPlannerJob(planner_, *job);
   if (observers_.planner_finished) {
-    observers_.planner_finished(finished, with_frame, now_us);
+    observers_.planner_finished(*job, finished, now_us);
   }
   planner::PlannerOutputs outputs = planner::toOutputs(planner_, finished, now_us, false);
   planner_node_.finish(outputs);

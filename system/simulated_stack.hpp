@@ -37,7 +37,8 @@ struct StackObservers {
   /// The simulator stepped (before what it sent is delivered and before the timers run).
   std::function<void(const sim::SimulatorStep& step)> simulator_stepped;
   /// A planner job finished at `now_us` (with a frame or a replan), before its outputs are published.
-  std::function<void(const planner::PlannerJobResult& finished, bool with_frame, std::int64_t now_us)>
+  std::function<void(const planner::PlannerJob& job, const planner::PlannerJobResult& finished,
+                     std::int64_t now_us)>
       planner_finished;
   /// An executive control cycle ran at `now_us`.
   std::function<void(const executive::ExecutiveOutputs& outputs, std::int64_t now_us)> executive_cycled;
