@@ -3,6 +3,7 @@
 // (velocity commands arrive as RPDO1 frames), POSE at 50 Hz and SIM_GROUND_TRUTH for evaluation.
 // With `commands: source: lcm` it follows velocity_cmd_t on VELOCITY_CMD instead of the drives.
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <memory>
@@ -164,8 +165,21 @@ int runSimulator(ifar::common::DaemonContext& context, const CommandLine& comman
 
   loop.every(settings.simulator.physics.step_seconds, [&] {
     const std::int64_t now_monotonic = ifar::common::monotonicMicroseconds();
+    // Catch up with the wall clock (whole physics steps; the remainder carries over).
+    std::int64_t behind_ns = (now_monotonic - start_monotonic) * 1000 - simulator.timeNanoseconds();
+    if (behind_ns > kMaxCatchUpNs) {
+      // The process was stalled (suspended, overloaded): skip the gap instead of bursting packets.
+      start_monotonic += (behind_ns - kMaxCatchUpNs) / 1000;
+      behind_ns = kMaxCatchUpNs;
+      if (warn_limiter.allow(now_monotonic)) {
+        logger.warn("running behind real time; skipped ahead");
+      }
+    }
+    // Frames from the bus to the emulated drives, stamped with when they arrive on the simulated clock
+    // (the wall clock's simulated equivalent, not the time the simulation has reached): after a stall of
+    // this process, the drives must not take frames that waited in its queue for a silent motor driver.
     const std::int64_t sim_now_us = settings.simulator.epoch_utime + simulator.timeNanoseconds() / 1000;
-    // Frames from the bus to the emulated drives.
+    const std::int64_t arrival_us = sim_now_us + std::max<std::int64_t>(behind_ns / 1000, 0);
     while (true) {
       const auto received = bus.receive(std::chrono::microseconds(0));
       if (received.status != ifar::can::IoStatus::kOk) {
@@ -175,7 +189,7 @@ int runSimulator(ifar::common::DaemonContext& context, const CommandLine& comman
         break;
       }
       if (!received.frame.error()) {
-        nodes.onFrame(received.frame, sim_now_us);
+        nodes.onFrame(received.frame, arrival_us);
         ++frames_in;
       }
     }
@@ -187,18 +201,8 @@ int runSimulator(ifar::common::DaemonContext& context, const CommandLine& comman
     } else {
       simulator.setVelocityCommand(0.0, 0.0);  // no or stale command: stop, as the drives would
     }
-    // Catch up with the wall clock (whole physics steps; the remainder carries over).
-    std::int64_t behind_ns = (now_monotonic - start_monotonic) * 1000 - simulator.timeNanoseconds();
     if (behind_ns <= 0) {
       return;
-    }
-    if (behind_ns > kMaxCatchUpNs) {
-      // The process was stalled (suspended, overloaded): skip the gap instead of bursting packets.
-      start_monotonic += (behind_ns - kMaxCatchUpNs) / 1000;
-      behind_ns = kMaxCatchUpNs;
-      if (warn_limiter.allow(now_monotonic)) {
-        logger.warn("running behind real time; skipped ahead");
-      }
     }
     const StepOutput output = simulator.step(static_cast<double>(behind_ns) * 1e-9);
     for (const auto& packet : output.packets) {
