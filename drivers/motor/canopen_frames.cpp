@@ -1,5 +1,7 @@
 #include "drivers/motor/canopen_frames.hpp"
 
+#include "drivers/motor/sdo.hpp"
+
 namespace ifar::motor {
 namespace {
 
@@ -208,7 +210,7 @@ bool isFromNode(const can::Frame& frame, std::uint8_t node_id)
 {
   return validNode(node_id) && isStandardData(frame) &&
          (frame.id == kEmergencyBase + node_id || frame.id == kTpdo1Base + node_id ||
-          frame.id == kHeartbeatBase + node_id);
+          frame.id == kSdoAnswerBase + node_id || frame.id == kHeartbeatBase + node_id);
 }
 
 }  // namespace ifar::motor

@@ -16,6 +16,15 @@ constexpr std::uint32_t kTpdo1Base = 0x180;
 constexpr std::uint32_t kRpdo1Base = 0x200;
 constexpr std::uint32_t kHeartbeatBase = 0x700;
 
+/// EMCY error codes (CiA 301) of a drive that lost its master: it stopped the wheel by itself.
+constexpr std::uint16_t kEmergencyHeartbeatError = 0x8130;  // no heartbeat within the consumer time
+constexpr std::uint16_t kEmergencyRpdoTimeout = 0x8250;     // no RPDO within its event timer (deadline)
+/// True for communication (0x81xx) and protocol (0x82xx) errors: trouble on the link, not in the drive.
+constexpr bool isCommunicationError(std::uint16_t error_code)
+{
+  return (error_code & 0xFF00) == 0x8100 || (error_code & 0xFF00) == 0x8200;
+}
+
 /// NMT command specifiers (byte 0 of an NMT frame).
 enum class NmtCommand : std::uint8_t {
   kStart = 0x01,
@@ -90,7 +99,8 @@ std::optional<Emergency> decodeEmergency(const can::Frame& frame, std::uint8_t n
 std::optional<VelocityCommand> decodeRpdo1(const can::Frame& frame, std::uint8_t node_id);
 std::optional<VelocityFeedback> decodeTpdo1(const can::Frame& frame, std::uint8_t node_id);
 
-/// True when `frame` is a standard data frame on one of `node_id`'s COB-IDs (EMCY, TPDO1, heartbeat).
+/// True when `frame` is a standard data frame on one of `node_id`'s COB-IDs (EMCY, TPDO1, SDO answer,
+/// heartbeat).
 bool isFromNode(const can::Frame& frame, std::uint8_t node_id);
 
 }  // namespace ifar::motor

@@ -1,5 +1,6 @@
 #include "drivers/motor/motor_client.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -11,6 +12,8 @@ const char* toString(ClientPhase phase)
   switch (phase) {
     case ClientPhase::kWaitingForDrive:
       return "waiting for drive";
+    case ClientPhase::kConfiguring:
+      return "configuring";
     case ClientPhase::kEnabling:
       return "enabling";
     case ClientPhase::kRunning:
@@ -36,11 +39,28 @@ const char* toString(StopReason reason)
       return "heartbeat lost";
     case StopReason::kDriveFault:
       return "drive fault";
+    case StopReason::kConfiguring:
+      return "configuring drive";
+    case StopReason::kConfigurationFailed:
+      return "drive configuration failed";
   }
   return "unknown";
 }
 
-MotorClient::MotorClient(const MotorClientSettings& settings) : settings_(settings) {}
+namespace {
+
+DriveConfiguratorSettings configuratorSettings(const MotorClientSettings& settings)
+{
+  return DriveConfiguratorSettings{settings.node_id, settings.configuration, settings.sdo_timeout_us,
+                                   settings.sdo_attempts, settings.configuration_retry_us};
+}
+
+}  // namespace
+
+MotorClient::MotorClient(const MotorClientSettings& settings)
+    : settings_(settings), configurator_(configuratorSettings(settings))
+{
+}
 
 void MotorClient::latchFault(std::uint16_t code)
 {
@@ -67,7 +87,8 @@ void MotorClient::onFrame(const can::Frame& frame, std::int64_t now_us)
     nmt_state_ = *state;
     last_heartbeat_us_ = now_us;
     if (*state == NmtState::kBootUp) {
-      statusword_.reset();  // the drive restarted: what it said before no longer holds
+      statusword_.reset();  // the drive restarted: what it said before, or was told, no longer holds
+      configurator_.restart();
     }
   } else if (base == kTpdo1Base) {
     const auto feedback = decodeTpdo1(frame, settings_.node_id);
@@ -91,11 +112,27 @@ void MotorClient::onFrame(const can::Frame& frame, std::int64_t now_us)
       ++bad_frames_;
       return;
     }
-    if (emergency->error_code == 0) {
-      emergency_code_ = 0;  // "error reset or no error"
-    } else {
-      latchFault(emergency->error_code);
+    onEmergency(*emergency);
+  } else if (base == kSdoAnswerBase) {
+    const auto answer = decodeSdoAnswer(frame, settings_.node_id);
+    if (!answer) {
+      ++bad_frames_;
+      return;
     }
+    configurator_.onAnswer(*answer, now_us);
+  }
+}
+
+void MotorClient::onEmergency(const Emergency& emergency)
+{
+  if (emergency.error_code == 0) {
+    emergency_code_ = 0;  // "error reset or no error"
+  } else if (isCommunicationError(emergency.error_code)) {
+    // The drive stopped itself for a lost link (its statusword says where it is now); nothing in the
+    // drive is broken, so this clears the way a stale command does.
+    emergency_code_ = emergency.error_code;
+  } else {
+    latchFault(emergency.error_code);
   }
 }
 
@@ -127,6 +164,8 @@ StopReason MotorClient::stopReason(std::int64_t now_us) const
     return StopReason::kDriveFault;
   if (!heartbeatOk(now_us))
     return StopReason::kHeartbeatLost;
+  if (!configurator_.done())
+    return configurator_.failed() ? StopReason::kConfigurationFailed : StopReason::kConfiguring;
   if (!enabled_)
     return StopReason::kNotEnabled;
   if (!commandFresh(now_us))
@@ -136,6 +175,8 @@ StopReason MotorClient::stopReason(std::int64_t now_us) const
 
 can::Frame MotorClient::rpdo(std::uint16_t controlword, std::int32_t velocity)
 {
+  const std::int32_t limit = std::max(settings_.max_velocity, std::int32_t{0});
+  velocity = std::clamp(velocity, -limit, limit);
   sent_controlword_ = controlword;
   sent_velocity_ = velocity;
   return encodeRpdo1(settings_.node_id, VelocityCommand{controlword, velocity});
@@ -144,36 +185,56 @@ can::Frame MotorClient::rpdo(std::uint16_t controlword, std::int32_t velocity)
 std::vector<can::Frame> MotorClient::update(std::int64_t now_us)
 {
   std::vector<can::Frame> frames;
+  // The configuration is written as soon as the drive is there, commands or not, so the drive watches
+  // this driver before anything enables it.
+  if (heartbeatOk(now_us)) {
+    frames = configurator_.update(now_us);
+  }
   const StopReason reason = stopReason(now_us);
   const DriveState drive_state =
       statusword_ ? driveStateFromStatusword(*statusword_) : DriveState::kNotReadyToSwitchOn;
+  const std::vector<can::Frame> more =
+      reason != StopReason::kNone ? stopFrames(reason, drive_state, now_us) : runFrames(drive_state, now_us);
+  frames.insert(frames.end(), more.begin(), more.end());
+  return frames;
+}
 
-  if (reason != StopReason::kNone) {
-    // A drive found enabled that this client did not enable (say, the motor driver restarted while the
-    // drive kept its last target) is stopped too.
-    const bool found_enabled =
-        phase_ == ClientPhase::kWaitingForDrive && drive_state == DriveState::kOperationEnabled;
-    if (phase_ == ClientPhase::kRunning || phase_ == ClientPhase::kEnabling || found_enabled) {
-      phase_ = ClientPhase::kStopping;
-      stop_started_us_ = now_us;
-    }
-    reason_ = reason;
-    if (phase_ == ClientPhase::kStopping) {
-      const bool standstill = std::abs(actual_velocity_) <= settings_.standstill_velocity;
-      const bool still_enabled = drive_state == DriveState::kOperationEnabled;
-      if (!still_enabled || standstill || now_us - stop_started_us_ >= settings_.stop_timeout_us) {
-        phase_ = ClientPhase::kStopped;
-      }
-    }
-    if (phase_ == ClientPhase::kStopping) {
-      frames.push_back(rpdo(kControlEnableOperation, 0));  // brake under control to zero velocity
-    } else if (phase_ == ClientPhase::kStopped) {
-      frames.push_back(rpdo(kControlShutdown, 0));  // power stage off
-    }
-    // kWaitingForDrive: nothing was ever enabled, nothing to stop.
-    return frames;
+std::vector<can::Frame> MotorClient::stopFrames(StopReason reason, DriveState drive_state,
+                                                std::int64_t now_us)
+{
+  std::vector<can::Frame> frames;
+  // A drive found enabled that this client did not enable (say, the motor driver restarted while the
+  // drive kept its last target) is stopped too.
+  const bool not_started = phase_ == ClientPhase::kWaitingForDrive || phase_ == ClientPhase::kConfiguring;
+  const bool found_enabled = not_started && drive_state == DriveState::kOperationEnabled;
+  if (phase_ == ClientPhase::kRunning || phase_ == ClientPhase::kEnabling || found_enabled) {
+    phase_ = ClientPhase::kStopping;
+    stop_started_us_ = now_us;
   }
+  const bool configuring = reason == StopReason::kConfiguring || reason == StopReason::kConfigurationFailed;
+  if (phase_ == ClientPhase::kWaitingForDrive && configuring) {
+    phase_ = ClientPhase::kConfiguring;
+  }
+  reason_ = reason;
+  if (phase_ == ClientPhase::kStopping) {
+    const bool standstill = std::abs(actual_velocity_) <= settings_.standstill_velocity;
+    const bool still_enabled = drive_state == DriveState::kOperationEnabled;
+    if (!still_enabled || standstill || now_us - stop_started_us_ >= settings_.stop_timeout_us) {
+      phase_ = ClientPhase::kStopped;
+    }
+  }
+  if (phase_ == ClientPhase::kStopping) {
+    frames.push_back(rpdo(kControlEnableOperation, 0));  // brake under control to zero velocity
+  } else if (phase_ == ClientPhase::kStopped) {
+    frames.push_back(rpdo(kControlShutdown, 0));  // power stage off
+  }
+  // kWaitingForDrive, kConfiguring: nothing was ever enabled, nothing to stop.
+  return frames;
+}
 
+std::vector<can::Frame> MotorClient::runFrames(DriveState drive_state, std::int64_t now_us)
+{
+  std::vector<can::Frame> frames;
   reason_ = StopReason::kNone;
   if (!nmt_state_ || *nmt_state_ != NmtState::kOperational) {
     phase_ = ClientPhase::kWaitingForDrive;
@@ -233,8 +294,11 @@ MotorStatus MotorClient::status(std::int64_t now_us) const
   result.fault_latched = fault_latched_;
   result.phase = phase_;
   result.reason = stopReason(now_us);  // as of now_us, even before update() acts on it
+  result.configured = configurator_.done();
+  result.configuration_error = configurator_.error();
   result.bad_frames = bad_frames_;
   result.ignored_frames = ignored_frames_;
+  result.sdo_timeouts = configurator_.timeouts();
   return result;
 }
 

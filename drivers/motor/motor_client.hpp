@@ -3,24 +3,32 @@
 // machine fed with received frames, velocity commands and time; update() returns the frames to send.
 //
 // Each cycle (call update() every 10-20 ms) the client:
+//  - once the drive's heartbeat is seen, writes its start-up configuration by SDO (limits, watchdogs;
+//    drive_configuration.hpp), one object at a time, and enables nothing until every write is confirmed;
+//    a drive that reboots is configured again,
 //  - starts the node (NMT start) when its heartbeat shows it is not operational (retried at a rate),
 //  - walks the enable sequence from the statusword of TPDO1: shutdown 0x06 -> ready to switch on,
 //    switch on 0x07 -> switched on, enable operation 0x0F -> operation enabled,
-//  - sends RPDO1 (controlword, target velocity) cyclically,
+//  - sends RPDO1 (controlword, target velocity) cyclically, the velocity never beyond max_velocity,
 //  - and performs a safe stop (zero velocity until standstill or stop_timeout, then shutdown 0x06) on a
 //    drive fault (statusword or EMCY), a lost heartbeat, a stale command, or setEnabled(false); a drive
 //    found enabled while no fresh command has arrived (a restarted motor driver) is stopped the same way.
 // Faults latch until requestFaultReset(); the client then sends the fault-reset edge (0x80) and
 // re-enables. A lost heartbeat or stale command clears by itself once heartbeats and fresh commands
-// are back: the client runs only while commands keep arriving.
+// are back: the client runs only while commands keep arriving. An EMCY for a communication error
+// (0x81xx, 0x82xx: the drive's own watchdog stopped it) does not latch: the drive is back in switch on
+// disabled, and the client walks the enable sequence again once commands are fresh.
 
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "drivers/can/frame.hpp"
 #include "drivers/motor/canopen_frames.hpp"
+#include "drivers/motor/drive_configurator.hpp"
+#include "drivers/motor/sdo.hpp"
 
 namespace ifar::motor {
 
@@ -31,10 +39,18 @@ struct MotorClientSettings {
   std::int64_t stop_timeout_us = 1'000'000;     // zero velocity at most this long before disabling
   std::int32_t standstill_velocity = 20;        // |actual| at or below this (0.001 rad/s) is standstill
   std::int64_t nmt_retry_us = 500'000;          // NMT start is repeated at most this often
+  /// |RPDO1 target velocity| never exceeds this (0.001 rad/s), whatever command() was given.
+  std::int32_t max_velocity = std::numeric_limits<std::int32_t>::max();
+  /// Written by SDO before the drive is enabled (drive_configuration.hpp); empty = nothing to write.
+  std::vector<SdoWrite> configuration;
+  std::int64_t sdo_timeout_us = 50'000;             // an SDO answer later than this is a timeout
+  int sdo_attempts = 3;                             // tries per object
+  std::int64_t configuration_retry_us = 1'000'000;  // a failed configuration starts over after this
 };
 
 enum class ClientPhase {
   kWaitingForDrive,  // no heartbeat yet, or starting the node
+  kConfiguring,      // writing the start-up configuration by SDO
   kEnabling,         // walking the enable sequence
   kRunning,          // operation enabled, the commanded velocity is sent
   kStopping,         // safe stop: zero velocity until standstill
@@ -42,7 +58,15 @@ enum class ClientPhase {
 };
 const char* toString(ClientPhase phase);
 
-enum class StopReason { kNone, kNotEnabled, kStaleCommand, kHeartbeatLost, kDriveFault };
+enum class StopReason {
+  kNone,
+  kNotEnabled,
+  kStaleCommand,
+  kHeartbeatLost,
+  kDriveFault,
+  kConfiguring,          // the start-up configuration is not confirmed yet
+  kConfigurationFailed,  // the drive refused or did not answer it (MotorStatus::configuration_error)
+};
 const char* toString(StopReason reason);
 
 struct MotorStatus {
@@ -57,8 +81,11 @@ struct MotorStatus {
   bool fault_latched = false;
   ClientPhase phase = ClientPhase::kWaitingForDrive;
   StopReason reason = StopReason::kNone;  // why the client stops or would stop now; kNone = healthy
+  bool configured = false;                // every start-up SDO write confirmed
+  std::string configuration_error;        // why the last configuration failed; empty when none did
   std::int64_t bad_frames = 0;            // frames on this node's COB-IDs with a wrong length or content
   std::int64_t ignored_frames = 0;        // frames of other ids (other nodes, unknown ids), skipped
+  std::int64_t sdo_timeouts = 0;          // SDO transfers repeated after a timeout
 };
 
 class MotorClient {
@@ -84,9 +111,13 @@ class MotorClient {
   bool commandFresh(std::int64_t now_us) const;
   StopReason stopReason(std::int64_t now_us) const;
   void latchFault(std::uint16_t code);
+  void onEmergency(const Emergency& emergency);
   can::Frame rpdo(std::uint16_t controlword, std::int32_t velocity);
+  std::vector<can::Frame> stopFrames(StopReason reason, DriveState drive_state, std::int64_t now_us);
+  std::vector<can::Frame> runFrames(DriveState drive_state, std::int64_t now_us);
 
   MotorClientSettings settings_;
+  DriveConfigurator configurator_;
   bool enabled_ = true;
   std::optional<NmtState> nmt_state_;
   std::int64_t last_heartbeat_us_ = 0;

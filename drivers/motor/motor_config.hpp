@@ -1,14 +1,23 @@
 #pragma once
-// The `motor` section of config/can.yaml as DifferentialDrive settings, for the executive (library
-// ifar_motor_config; ifar_motor itself stays free of the YAML stack).
+// The `motor` section of config/can.yaml as DifferentialDrive settings and the motor driver's own
+// timing, for ifar-motor-driver (library ifar_motor_config; ifar_motor itself stays free of the YAML
+// stack).
 //
 //   motor:
 //     left_node_id: 1
 //     right_node_id: 2
+//     master_node_id: 127          # the driver's own node id: its heartbeat is 0x700 + 127
+//     master_heartbeat_ms: 50
 //     cycle_ms: 10
 //     heartbeat_timeout_ms: 300
-//     command_timeout_ms: 200
+//     command_timeout_ms: 150
+//     command_future_ms: 50
 //     stop_timeout_ms: 1000
+//     sdo_timeout_ms: 50
+//     sdo_attempts: 3
+//     drive_watchdog:
+//       heartbeat_timeout_ms: 150
+//       rpdo_timeout_ms: 100
 //     status_channel: MOTOR_STATUS
 
 #include <cstdint>
@@ -24,6 +33,11 @@ struct MotorConfig {
   DifferentialDriveSettings drive;
   std::int64_t cycle_us = 10'000;
   std::string status_channel = "MOTOR_STATUS";
+  std::uint8_t master_node_id = 127;                  // this driver's CANopen node id
+  std::int64_t master_heartbeat_period_us = 50'000;   // the driver's heartbeat, 0x700 + master_node_id
+  std::uint16_t drive_heartbeat_timeout_ms = 150;     // 0x1016 in each drive; 0 = not watched
+  std::uint16_t drive_rpdo_timeout_ms = 100;          // 0x1400:05 in each drive; 0 = not watched
+  std::int64_t command_future_tolerance_us = 50'000;  // a command stamped further ahead is refused
 };
 
 /// Reads root.motor alone, without the wheel geometry. Throws as loadMotorConfig does; ifar-force-driver
@@ -31,7 +45,8 @@ struct MotorConfig {
 MotorConfig loadMotorSection(const common::ConfigNode& root);
 
 /// Reads root.motor; wheel geometry comes from the vehicle. Throws common::ConfigError naming the key
-/// for node ids outside 1..127, equal node ids, or non-positive periods.
+/// for node ids outside 1..127, equal node ids, non-positive periods, or drive watchdog times that
+/// cannot work (not longer than the period of what they watch).
 MotorConfig loadMotorConfig(const common::ConfigNode& root, const common::VehicleSettings& vehicle);
 
 }  // namespace ifar::motor

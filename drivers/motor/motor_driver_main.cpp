@@ -1,9 +1,11 @@
-// ifar-motor-driver: the vehicle's two wheel drives over CANopen CiA 402. Takes the executive's
-// VELOCITY_CMD (v, omega), runs one motor client per drive on the configured CAN bus (SocketCAN on a
-// vehicle, the LCM bridge beside the simulator), and reports each drive on MOTOR_STATUS at 10 Hz. The
-// clients stop the drives by themselves on a fault, a lost heartbeat or a command older than the
-// timeout (config/can.yaml motor:), so a dead executive stops the vehicle; on exit the drives are
-// commanded to zero and disabled.
+// ifar-motor-driver: the vehicle's two wheel drives over CANopen CiA 402. A thin adapter around
+// ifar::motor::MotorDriverNode (drivers/motor/motor_driver_node.hpp), which holds the logic: the
+// executive's VELOCITY_CMD in (refused when stale by its own utime, from the future or not a number;
+// limited to the vehicle's speeds and accelerations), the drives configured by SDO at start-up (their
+// own limits and a watchdog on this driver), this driver's CANopen heartbeat, RPDO1 every cycle on the
+// configured CAN bus (SocketCAN on a vehicle, the LCM bridge beside the simulator), and each drive on
+// MOTOR_STATUS at 10 Hz. Everything runs on the wall clock (the clock of velocity_cmd_t.utime). On exit
+// the drives are commanded to zero and disabled.
 
 #include <chrono>
 #include <filesystem>
@@ -17,9 +19,8 @@
 #include "common/vehicle.hpp"
 #include "drivers/can/open_bus.hpp"
 #include "drivers/force_sensor/force_sensor_config.hpp"
-#include "drivers/motor/differential_drive.hpp"
 #include "drivers/motor/motor_config.hpp"
-#include "drivers/motor/motor_status_message.hpp"
+#include "drivers/motor/motor_driver_node.hpp"
 #include "ifar/velocity_cmd_t.hpp"
 
 namespace {
@@ -47,46 +48,51 @@ int run(ifar::common::DaemonContext& context, const std::string& vehicle_path,
     // Checked before the vehicle file is read, so a bad can.yaml is reported as such.
     context.config.child("motor");
   }
-  const auto motor = ifar::motor::loadMotorConfig(
-      context.config, ifar::common::loadVehicleSettings(ifar::common::ConfigNode::loadFile(vehicle_file)));
+  const auto vehicle = ifar::common::loadVehicleSettings(ifar::common::ConfigNode::loadFile(vehicle_file));
+  const auto motor = ifar::motor::loadMotorConfig(context.config, vehicle);
   context.config.rejectUnknownKeys();
   auto& logger = *context.logger;
+  ifar::motor::MotorDriverNode node(motor, vehicle);
 
   ifar::bus::RunLoop loop(context.lcm_url, context.logger);
-  ifar::bus::publishHeartbeats(loop, context.logger->name());
+  const auto now = [] { return ifar::common::nowMicroseconds(); };
+  ifar::bus::publishHeartbeats(loop, context.logger->name(), 1.0,
+                               [&] { return node.takeHealthProblem(now()); });
   auto opened = ifar::can::openBus(bus_settings, loop.lcm());
   if (!opened.bus) {
     logger.error("{}", opened.error);
     return 1;
   }
   ifar::can::CanBus& bus = *opened.bus;
-  ifar::motor::DifferentialDrive drive(motor.drive);
-  logger.info("drives: left node {}, right node {} on {}; commands from {}", motor.drive.left.node_id,
-              motor.drive.right.node_id, bus.name(), command_channel);
+  const auto& setup = node.driveSetup();
+  logger.info(
+      "drives: left node {}, right node {} on {}; this driver is node {} (heartbeat every {} ms); "
+      "wheel limit {} (0.001 rad/s); drive watchdog: heartbeat {} ms, RPDO {} ms; commands from {}",
+      motor.drive.left.node_id, motor.drive.right.node_id, bus.name(), motor.master_node_id,
+      motor.master_heartbeat_period_us / 1000, node.wheelVelocityLimit(), setup.master_heartbeat_timeout_ms,
+      setup.rpdo_timeout_ms, command_channel);
+
+  loop.subscribe<ifar::velocity_cmd_t>(command_channel,
+                                       [&](const ifar::velocity_cmd_t& command, std::int64_t /*receive*/) {
+                                         node.onVelocityCommand(command, now());
+                                       });
 
   ifar::common::RateLimiter error_log(ifar::common::kMicrosecondsPerSecond);
-  std::int64_t commands = 0;
-  loop.subscribe<ifar::velocity_cmd_t>(command_channel, [&](const ifar::velocity_cmd_t& command,
-                                                            std::int64_t /*receive*/) {
-    drive.command(command.linear_velocity, command.angular_velocity, ifar::common::monotonicMicroseconds());
-    ++commands;
-  });
-
   const auto cycle = [&] {
-    const std::int64_t now = ifar::common::monotonicMicroseconds();
+    const std::int64_t time = now();
     for (int budget = 0; budget < 1000; ++budget) {
       const auto received = bus.receive(std::chrono::microseconds(0));
-      if (received.status == ifar::can::IoStatus::kError && error_log.allow(now)) {
+      if (received.status == ifar::can::IoStatus::kError && error_log.allow(time)) {
         logger.error("{}: {}", bus.name(), received.error);
       }
       if (received.status != ifar::can::IoStatus::kOk) {
         break;
       }
-      drive.onFrame(received.frame, now);
+      node.onFrame(received.frame, time);
     }
-    for (const auto& frame : drive.update(now)) {
+    for (const auto& frame : node.cycle(time)) {
       const auto sent = bus.send(frame);
-      if (sent.status != ifar::can::IoStatus::kOk && error_log.allow(now)) {
+      if (sent.status != ifar::can::IoStatus::kOk && error_log.allow(time)) {
         logger.error("{}: cannot send 0x{:03X}: {}", bus.name(), frame.id, sent.error);
       }
     }
@@ -95,23 +101,24 @@ int run(ifar::common::DaemonContext& context, const std::string& vehicle_path,
 
   bool was_running = false;
   loop.every(kStatusPeriodS, [&] {
-    const std::int64_t now = ifar::common::monotonicMicroseconds();
-    const std::int64_t utime = ifar::common::nowMicroseconds();
-    const auto left = drive.leftStatus(now);
-    const auto right = drive.rightStatus(now);
-    loop.publish(motor.status_channel, ifar::motor::toMessage(left, utime));
-    loop.publish(motor.status_channel, ifar::motor::toMessage(right, utime));
-    const bool running = drive.running(now);
+    const std::int64_t time = now();
+    for (const auto& message : node.statusMessages(time)) {
+      loop.publish(motor.status_channel, message);
+    }
+    if (const auto report = node.takeRefusalReport(time)) {
+      logger.warn("{}", *report);
+    }
+    const bool running = node.running(time);
     if (running != was_running) {
-      logger.info("drives {} ({} commands so far)", running ? "running" : "stopped", commands);
+      logger.info("drives {} ({} commands taken, {} refused so far)", running ? "running" : "stopped",
+                  node.commandCounters().accepted, node.commandCounters().refused());
       was_running = running;
     }
   });
 
   const int result = loop.run();
   // Leave the drives standing and disabled, not coasting on the last command.
-  drive.command(0.0, 0.0, ifar::common::monotonicMicroseconds());
-  drive.setEnabled(false);
+  node.stopAndDisable();
   for (int index = 0; index < kShutdownCycles; ++index) {
     cycle();
     loop.spinOnce(static_cast<int>(motor.cycle_us / 1000));

@@ -43,6 +43,9 @@ ifar::motor_status_t toMessage(const MotorStatus& status, std::int64_t utime)
   message.actual_velocity = status.actual_velocity;
   message.emergency_code = static_cast<std::int16_t>(status.emergency_code);
   message.reason = toString(status.reason);
+  if (status.reason == StopReason::kConfigurationFailed && !status.configuration_error.empty()) {
+    message.reason += ": " + status.configuration_error;
+  }
   return message;
 }
 

@@ -9,9 +9,9 @@ namespace {
 
 constexpr double kDriveUnitsPerRadianPerSecond = 1000.0;  // drive velocity unit: 0.001 rad/s
 
-motor::DriveEmulatorSettings driveSettings(std::uint8_t node_id)
+DriveEmulatorSettings driveSettings(std::uint8_t node_id)
 {
-  motor::DriveEmulatorSettings settings;
+  DriveEmulatorSettings settings;
   settings.node_id = node_id;
   settings.model_velocity = false;  // the physics models the wheel
   return settings;
@@ -67,7 +67,7 @@ std::vector<can::Frame> VehicleCanNodes::update(std::int64_t now_us, double bump
 physics::WheelSpeeds VehicleCanNodes::commandedWheelSpeeds() const
 {
   const double scale = settings_.wheel_radius_m / kDriveUnitsPerRadianPerSecond;
-  return {left_.commandedVelocity() * scale, right_.commandedVelocity() * scale};
+  return {left_.velocityDemand() * scale, right_.velocityDemand() * scale};
 }
 
 bool VehicleCanNodes::drivesEnabled() const

@@ -1,14 +1,15 @@
 #pragma once
 // The vehicle's CAN nodes as the simulator plays them: the bumper force sensor (a frame every 10 ms) and
-// the two CiA 402 wheel drives (left and right node), built on the drivers' own emulators so the frames
-// are exactly what docs/can_frames.md specifies. Pure: frames and time in, frames out; no bus, no LCM.
+// the two CiA 402 wheel drives (left and right node, DriveEmulator: configured by the motor client over
+// SDO, with their own limits and watchdogs), so the frames are exactly what docs/can_frames.md
+// specifies. Pure: frames and time in, frames out; no bus, no LCM.
 
 #include <cstdint>
 #include <vector>
 
 #include "drivers/can/frame.hpp"
 #include "drivers/force_sensor/force_frame.hpp"
-#include "drivers/motor/drive_emulator.hpp"
+#include "sim/can_nodes/drive_emulator.hpp"
 #include "sim/physics/physics_world.hpp"
 
 namespace ifar::sim {
@@ -34,20 +35,21 @@ class VehicleCanNodes {
   std::vector<can::Frame> update(std::int64_t now_us, double bumper_force_n,
                                  const physics::WheelSpeeds& actual_wheels);
 
-  /// What the drives are asked for (zero unless operation is enabled), as wheel rim speeds in m/s.
+  /// What the drives' power stages are asked for (their velocity demand: zero unless operation is
+  /// enabled or a quick stop is ramping down), as wheel rim speeds in m/s.
   physics::WheelSpeeds commandedWheelSpeeds() const;
   /// True when both drives are operation enabled.
   bool drivesEnabled() const;
 
-  motor::DriveEmulator& leftDrive() { return left_; }
-  motor::DriveEmulator& rightDrive() { return right_; }
+  DriveEmulator& leftDrive() { return left_; }
+  DriveEmulator& rightDrive() { return right_; }
   force_sensor::ForceSensorEmulator& forceSensor() { return force_sensor_; }
 
  private:
   CanNodeSettings settings_;
   force_sensor::ForceSensorEmulator force_sensor_;
-  motor::DriveEmulator left_;
-  motor::DriveEmulator right_;
+  DriveEmulator left_;
+  DriveEmulator right_;
   std::int64_t next_force_us_ = -1;
 };
 

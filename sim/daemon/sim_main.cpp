@@ -4,6 +4,7 @@
 // With `commands: source: lcm` it follows velocity_cmd_t on VELOCITY_CMD instead of the drives. The
 // simulation itself is the simulator node (sim/node), which the headless runner steps as well.
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <memory>
@@ -108,7 +109,20 @@ int runSimulator(ifar::common::DaemonContext& context, const CommandLine& comman
 
   loop.every(settings.simulator.physics.step_seconds, [&] {
     const std::int64_t now_monotonic = ifar::common::monotonicMicroseconds();
-    // Frames from the bus to the emulated drives.
+    // Catch up with the wall clock (whole physics steps; the remainder carries over).
+    std::int64_t behind_ns = (now_monotonic - start_monotonic) * 1000 - node.simulator().timeNanoseconds();
+    if (behind_ns > kMaxCatchUpNs) {
+      // The process was stalled (suspended, overloaded): skip the gap instead of bursting packets.
+      start_monotonic += (behind_ns - kMaxCatchUpNs) / 1000;
+      behind_ns = kMaxCatchUpNs;
+      if (warn_limiter.allow(now_monotonic)) {
+        logger.warn("running behind real time; skipped ahead");
+      }
+    }
+    // Frames from the bus to the emulated drives, stamped with when they arrive on the simulated clock
+    // (the wall clock's simulated equivalent, not the time the simulation has reached): after a stall of
+    // this process, the drives must not take frames that waited in its queue for a silent motor driver.
+    const std::int64_t arrival_us = node.nowUtime() + std::max<std::int64_t>(behind_ns / 1000, 0);
     while (true) {
       const auto received = bus.receive(std::chrono::microseconds(0));
       if (received.status != ifar::can::IoStatus::kOk) {
@@ -118,22 +132,12 @@ int runSimulator(ifar::common::DaemonContext& context, const CommandLine& comman
         break;
       }
       if (!received.frame.error()) {
-        node.onFrame(received.frame);
+        node.onFrame(received.frame, arrival_us);
         ++frames_in;
       }
     }
-    // Catch up with the wall clock (whole physics steps; the remainder carries over).
-    std::int64_t behind_ns = (now_monotonic - start_monotonic) * 1000 - node.simulator().timeNanoseconds();
     if (behind_ns <= 0) {
       return;
-    }
-    if (behind_ns > kMaxCatchUpNs) {
-      // The process was stalled (suspended, overloaded): skip the gap instead of bursting packets.
-      start_monotonic += (behind_ns - kMaxCatchUpNs) / 1000;
-      behind_ns = kMaxCatchUpNs;
-      if (warn_limiter.allow(now_monotonic)) {
-        logger.warn("running behind real time; skipped ahead");
-      }
     }
     const ifar::sim::SimulatorStep step = node.step(static_cast<double>(behind_ns) * 1e-9);
     const ifar::sim::StepOutput& output = step.output;

@@ -84,10 +84,10 @@ std::int64_t SimulatorNode::nowUtime() const
   return settings_.simulator.epoch_utime + simulator_.timeNanoseconds() / 1000;
 }
 
-void SimulatorNode::onFrame(const can::Frame& frame)
+void SimulatorNode::onFrame(const can::Frame& frame, std::int64_t arrival_us)
 {
   if (!frame.error()) {
-    nodes_.onFrame(frame, nowUtime());
+    nodes_.onFrame(frame, arrival_us);
   }
 }
 

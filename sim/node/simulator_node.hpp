@@ -35,8 +35,10 @@ class SimulatorNode {
   /// the object when the world cannot be simulated.
   SimulatorNode(World world, const common::VehicleSettings& vehicle, const SimNodeSettings& settings);
 
-  /// A frame from the bus (NMT, RPDO1 for the drives; others are ignored), at the simulator's time.
-  void onFrame(const can::Frame& frame);
+  /// A frame from the bus (NMT, SDO, RPDO1 and heartbeats for the drives; others are ignored), arriving at
+  /// `arrival_us` on the simulated clock (the simulator's own time when it keeps up with the bus).
+  void onFrame(const can::Frame& frame, std::int64_t arrival_us);
+  void onFrame(const can::Frame& frame) { onFrame(frame, nowUtime()); }
   /// A velocity command (used only with `commands: source: lcm`).
   void onVelocityCommand(const ifar::velocity_cmd_t& command);
 

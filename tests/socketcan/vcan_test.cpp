@@ -17,8 +17,9 @@
 #include "drivers/can/error_frame.hpp"
 #include "drivers/can/socketcan_bus.hpp"
 #include "drivers/force_sensor/force_monitor.hpp"
-#include "drivers/motor/drive_emulator.hpp"
+#include "drivers/motor/drive_configuration.hpp"
 #include "drivers/motor/motor_client.hpp"
+#include "sim/can_nodes/drive_emulator.hpp"
 
 namespace ifar::can {
 namespace {
@@ -192,7 +193,7 @@ TEST(Vcan, ForceSensorAndMotorExchange)
   drive_side->setFilters({Filter{0x000, 0x7FF, false}, Filter{0x201, 0x7FF, false}});
 
   motor::MotorClient client;
-  motor::DriveEmulator drive;
+  sim::DriveEmulator drive;
   force_sensor::ForceSensorEmulator sensor;
   force_sensor::ForceMonitor monitor;
 
@@ -250,6 +251,82 @@ TEST(Vcan, ForceSensorAndMotorExchange)
   EXPECT_TRUE(faulted.fault_latched);
   EXPECT_EQ(faulted.emergency_code, 0x2310);
   EXPECT_EQ(drive.commandedVelocity(), 0);
+}
+
+// The start-up SDO configuration and the drive's watchdog over a real kernel: the client writes the
+// limits and the RPDO deadline (100 ms), enables the drive, then falls silent; the drive stops itself
+// and says so with EMCY 0x8250.
+TEST(Vcan, SdoConfigurationAndTheDrivesWatchdog)
+{
+  auto vehicle_side = openOrFail("vcan0");
+  auto drive_side = openOrFail("vcan0");
+  ASSERT_TRUE(vehicle_side && drive_side);
+  drive_side->setFilters(
+      {Filter{0x000, 0x7FF, false}, Filter{0x201, 0x7FF, false}, Filter{0x601, 0x7FF, false}});
+
+  motor::MotorClientSettings settings;
+  motor::DriveSetup setup;
+  setup.max_velocity = 9066;
+  setup.acceleration = 10666;
+  setup.deceleration = 10666;
+  setup.quick_stop_deceleration = 10666;
+  setup.rpdo_timeout_ms = 100;
+  settings.configuration = motor::driveConfigurationWrites(setup);
+  motor::MotorClient client(settings);
+  sim::DriveEmulator drive;
+  std::vector<std::uint16_t> emergencies;
+
+  const auto cycle = [&](bool client_alive) {
+    const std::int64_t now = steadyMicroseconds();
+    for (const Frame& frame : drive.update(now)) {
+      ASSERT_EQ(drive_side->send(frame).status, IoStatus::kOk);
+    }
+    if (client_alive) {
+      client.command(20'000, now);
+      for (const Frame& frame : client.update(now)) {
+        ASSERT_EQ(vehicle_side->send(frame).status, IoStatus::kOk);
+      }
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    const std::int64_t after = steadyMicroseconds();
+    for (auto received = drive_side->receive(microseconds(0)); received.status == IoStatus::kOk;
+         received = drive_side->receive(microseconds(0))) {
+      drive.onFrame(received.frame, after);
+    }
+    for (auto received = vehicle_side->receive(microseconds(0)); received.status == IoStatus::kOk;
+         received = vehicle_side->receive(microseconds(0))) {
+      client.onFrame(received.frame, after);
+      if (const auto emergency = motor::decodeEmergency(received.frame, 1)) {
+        emergencies.push_back(emergency->error_code);
+      }
+    }
+  };
+
+  for (int index = 0; index < 60 && client.status(steadyMicroseconds()).phase != motor::ClientPhase::kRunning;
+       ++index) {
+    cycle(true);
+  }
+  const auto status = client.status(steadyMicroseconds());
+  ASSERT_EQ(status.phase, motor::ClientPhase::kRunning) << motor::toString(status.reason);
+  EXPECT_TRUE(status.configured);
+  EXPECT_EQ(drive.objects().rpdo_event_timer_ms, 100);
+  EXPECT_EQ(drive.commandedVelocity(), 9066);  // 20000 asked, the limit written by SDO
+
+  const std::int64_t silent_from = steadyMicroseconds();
+  std::int64_t stopped_after = -1;
+  for (int index = 0; index < 50 && stopped_after < 0; ++index) {
+    cycle(false);
+    if (drive.commandedVelocity() == 0) {
+      stopped_after = steadyMicroseconds() - silent_from;
+    }
+  }
+  EXPECT_EQ(drive.driveState(), motor::DriveState::kQuickStopActive);
+  EXPECT_GE(stopped_after, 100'000);  // not before the deadline
+  cycle(false);
+  ASSERT_FALSE(emergencies.empty());
+  EXPECT_EQ(emergencies.back(), motor::kEmergencyRpdoTimeout);
+  std::printf("vcan: drive stopped itself %.1f ms after the client fell silent (EMCY 0x%04X)\n",
+              static_cast<double>(stopped_after) * 1e-3, emergencies.back());
 }
 
 }  // namespace

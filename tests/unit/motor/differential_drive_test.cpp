@@ -2,10 +2,13 @@
 
 #include <gtest/gtest.h>
 
-#include "drivers/motor/drive_emulator.hpp"
+#include "sim/can_nodes/drive_emulator.hpp"
 
 namespace ifar::motor {
 namespace {
+
+using sim::DriveEmulator;
+using sim::DriveEmulatorSettings;
 
 class DifferentialDriveTest : public ::testing::Test {
  protected:

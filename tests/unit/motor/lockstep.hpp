@@ -3,10 +3,13 @@
 
 #include <vector>
 
-#include "drivers/motor/drive_emulator.hpp"
 #include "drivers/motor/motor_client.hpp"
+#include "sim/can_nodes/drive_emulator.hpp"
 
 namespace ifar::motor {
+
+using sim::DriveEmulator;
+using sim::DriveEmulatorSettings;
 
 struct Lockstep {
   Lockstep(MotorClient& client_under_test, DriveEmulator& drive_under_test)

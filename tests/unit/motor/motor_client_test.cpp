@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+
+#include "drivers/motor/drive_configuration.hpp"
+
 #include "tests/unit/motor/lockstep.hpp"
 
 namespace ifar::motor {
@@ -206,6 +210,98 @@ TEST_F(MotorClientTest, ANewClientStopsADriveLeftRunning)
   EXPECT_EQ(drive.actualVelocity(), 0);
   EXPECT_EQ(drive.driveState(), DriveState::kReadyToSwitchOn);
   EXPECT_EQ(restarted.status(after_restart.now_us).reason, StopReason::kStaleCommand);
+}
+
+TEST_F(MotorClientTest, NeverSendsMoreThanItsMaximumVelocity)
+{
+  MotorClientSettings settings;
+  settings.max_velocity = 9066;
+  MotorClient limited(settings);
+  DriveEmulator limited_drive{DriveEmulatorSettings{}};
+  Lockstep link(limited, limited_drive);
+  link.run(10, true, 2'000'000'000);
+  link.run(3, true, -2'000'000'000);
+  ASSERT_EQ(limited.status(link.now_us).phase, ClientPhase::kRunning);
+  for (const can::Frame& frame : link.client_frames) {
+    if (const auto rpdo = decodeRpdo1(frame, 1)) {
+      EXPECT_LE(std::abs(rpdo->target_velocity), 9066);
+    }
+  }
+  EXPECT_EQ(decodeRpdo1(link.client_frames.back(), 1)->target_velocity, -9066);
+}
+
+// A client with a start-up configuration (the drive's limits and watchdogs, drive_configuration.hpp).
+MotorClientSettings configuringSettings()
+{
+  MotorClientSettings settings;
+  DriveSetup setup;
+  setup.max_velocity = 9066;
+  setup.acceleration = 10666;
+  setup.deceleration = 10666;
+  setup.quick_stop_deceleration = 10666;
+  setup.master_node_id = 127;
+  setup.master_heartbeat_timeout_ms = 0;  // no driver heartbeat in this test: not watched
+  setup.rpdo_timeout_ms = 100;
+  settings.configuration = driveConfigurationWrites(setup);
+  return settings;
+}
+
+TEST(MotorClientConfiguration, EnablesOnlyAfterEveryWriteIsConfirmed)
+{
+  MotorClient client(configuringSettings());
+  DriveEmulator drive{DriveEmulatorSettings{}};
+  Lockstep link(client, drive);
+  link.run(5, true, 1000);
+  EXPECT_EQ(client.status(link.now_us).phase, ClientPhase::kConfiguring);
+  EXPECT_EQ(client.status(link.now_us).reason, StopReason::kConfiguring);
+  link.run(10, true, 1000);
+  // Ten SDO downloads, one per cycle as each answer arrives, then NMT start and the enable sequence.
+  std::vector<std::uint32_t> ids;
+  for (const can::Frame& frame : link.client_frames) {
+    ids.push_back(frame.id);
+  }
+  ASSERT_GE(ids.size(), 12u);
+  EXPECT_EQ(std::vector<std::uint32_t>(ids.begin(), ids.begin() + 10),
+            (std::vector<std::uint32_t>(10, 0x601)))
+      << "not ten SDO requests before anything else";
+  EXPECT_EQ(ids[10], 0x000u);  // NMT start, only now
+  link.run(10, true, 20'000);
+  const MotorStatus status = client.status(link.now_us);
+  EXPECT_TRUE(status.configured);
+  EXPECT_EQ(status.phase, ClientPhase::kRunning);
+  EXPECT_EQ(drive.objects().max_profile_velocity, 9066u);
+  EXPECT_EQ(drive.objects().rpdo_event_timer_ms, 100);
+  EXPECT_EQ(drive.commandedVelocity(), 9066);  // the client's own clamp, and the drive's
+}
+
+TEST(MotorClientConfiguration, ARefusedWriteKeepsTheDriveDisabledWithTheReason)
+{
+  MotorClientSettings settings;
+  settings.configuration = {{0x6060, 0, 9, 1}};  // cyclic synchronous velocity: not what this drive does
+  MotorClient client(settings);
+  DriveEmulator drive{DriveEmulatorSettings{}};
+  Lockstep link(client, drive);
+  link.run(30, true, 1000);
+  const MotorStatus status = client.status(link.now_us);
+  EXPECT_EQ(status.reason, StopReason::kConfigurationFailed);
+  EXPECT_FALSE(status.configured);
+  EXPECT_EQ(status.configuration_error,
+            "drive 1 object 0x6060:00 = 9 (0x09) refused: SDO abort 0x06090030 (invalid value for parameter "
+            "(value range exceeded))");
+  EXPECT_EQ(drive.driveState(), DriveState::kSwitchOnDisabled);
+  EXPECT_EQ(drive.nmtState(), NmtState::kPreOperational);  // not even started
+}
+
+TEST_F(MotorClientTest, ACommunicationErrorEmergencyDoesNotLatch)
+{
+  enable(600);
+  client.onFrame(encodeEmergency({kEmergencyRpdoTimeout, 0x11, 1}), lockstep.now_us);
+  const MotorStatus status = client.status(lockstep.now_us);
+  EXPECT_FALSE(status.fault_latched);
+  EXPECT_EQ(status.emergency_code, 0x8250);
+  EXPECT_EQ(status.reason, StopReason::kNone);
+  lockstep.run(3, true, 600);
+  EXPECT_EQ(client.status(lockstep.now_us).phase, ClientPhase::kRunning);
 }
 
 TEST(WheelVelocities, DifferentialDriveKinematics)

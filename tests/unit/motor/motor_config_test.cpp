@@ -14,8 +14,15 @@ TEST(MotorConfig, ReadsTheProjectConfig)
   EXPECT_EQ(config.drive.left.node_id, 1);
   EXPECT_EQ(config.drive.right.node_id, 2);
   EXPECT_EQ(config.drive.left.heartbeat_timeout_us, 300'000);
-  EXPECT_EQ(config.drive.right.command_timeout_us, 200'000);
+  EXPECT_EQ(config.drive.right.command_timeout_us, 150'000);
+  EXPECT_EQ(config.drive.left.sdo_timeout_us, 50'000);
+  EXPECT_EQ(config.drive.left.sdo_attempts, 3);
   EXPECT_EQ(config.cycle_us, 10'000);
+  EXPECT_EQ(config.master_node_id, 127);
+  EXPECT_EQ(config.master_heartbeat_period_us, 50'000);
+  EXPECT_EQ(config.command_future_tolerance_us, 50'000);
+  EXPECT_EQ(config.drive_heartbeat_timeout_ms, 150);
+  EXPECT_EQ(config.drive_rpdo_timeout_ms, 100);
   EXPECT_DOUBLE_EQ(config.drive.wheel_radius_m, 0.2);
   EXPECT_EQ(config.status_channel, "MOTOR_STATUS");
 }
@@ -37,6 +44,44 @@ TEST(MotorConfig, RejectsNodeIdOutOfRange)
   const auto root =
       common::ConfigNode::loadString("motor:\n  left_node_id: 0\n  right_node_id: 2\n", "test.yaml");
   EXPECT_THROW(loadMotorConfig(root, common::VehicleSettings{}), common::ConfigError);
+}
+
+void expectRejected(const std::string& text, const std::string& key, const std::string& problem)
+{
+  const auto root = common::ConfigNode::loadString(text, "test.yaml");
+  try {
+    loadMotorConfig(root, common::VehicleSettings{});
+    FAIL() << "accepted: " << text;
+  } catch (const common::ConfigError& error) {
+    EXPECT_NE(std::string(error.what()).find(key), std::string::npos) << error.what();
+    EXPECT_NE(std::string(error.what()).find(problem), std::string::npos) << error.what();
+  }
+}
+
+TEST(MotorConfig, RejectsADriveWatchdogThatWouldStopAHealthyDriver)
+{
+  expectRejected(
+      "motor:\n  left_node_id: 1\n  right_node_id: 2\n  drive_watchdog:\n    rpdo_timeout_ms: 10\n",
+      "rpdo_timeout_ms", "10 ms is not longer than cycle_ms (10 ms)");
+  expectRejected(
+      "motor:\n  left_node_id: 1\n  right_node_id: 2\n  master_heartbeat_ms: 100\n"
+      "  drive_watchdog:\n    heartbeat_timeout_ms: 100\n",
+      "heartbeat_timeout_ms", "not longer than master_heartbeat_ms");
+  expectRejected(
+      "motor:\n  left_node_id: 1\n  right_node_id: 2\n  drive_watchdog:\n    rpdo_timeout_ms: 70000\n",
+      "rpdo_timeout_ms", "must be 0 (off) or 1..65535");
+  expectRejected("motor:\n  left_node_id: 1\n  right_node_id: 2\n  master_node_id: 2\n", "master_node_id",
+                 "equals a drive's node id");
+  expectRejected("motor:\n  left_node_id: 1\n  right_node_id: 2\n  sdo_attempts: 0\n", "sdo_attempts",
+                 "must be 1..100");
+}
+
+TEST(MotorConfig, AZeroWatchdogTimeIsOff)
+{
+  const auto root = common::ConfigNode::loadString(
+      "motor:\n  left_node_id: 1\n  right_node_id: 2\n  drive_watchdog:\n    heartbeat_timeout_ms: 0\n",
+      "test.yaml");
+  EXPECT_EQ(loadMotorConfig(root, common::VehicleSettings{}).drive_heartbeat_timeout_ms, 0);
 }
 
 }  // namespace

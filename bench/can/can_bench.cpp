@@ -1,13 +1,12 @@
 // Throughput of the CAN codecs the drivers run per frame: candump parsing and formatting (log replay
-// and recording), the force frame decoder, and one motor client + drive emulator cycle.
+// and recording) and the force frame decoder. (One motor client + simulated drive cycle:
+// sim/can_nodes/bench.)
 #include <benchmark/benchmark.h>
 
 #include <string>
 
 #include "drivers/can/candump_log.hpp"
 #include "drivers/force_sensor/force_frame.hpp"
-#include "drivers/motor/drive_emulator.hpp"
-#include "drivers/motor/motor_client.hpp"
 
 namespace {
 
@@ -41,23 +40,5 @@ void BM_ForceFrameDecode(benchmark::State& state)
   state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(BM_ForceFrameDecode);
-
-// One 10 ms cycle of a running link: client update, drive update, frames exchanged both ways.
-void BM_MotorCycle(benchmark::State& state)
-{
-  ifar::motor::MotorClient client;
-  ifar::motor::DriveEmulator drive;
-  std::int64_t now = 0;
-  for ([[maybe_unused]] auto _ : state) {
-    now += 10'000;
-    client.command(1000, now);
-    for (const auto& frame : client.update(now))
-      drive.onFrame(frame, now);
-    for (const auto& frame : drive.update(now))
-      client.onFrame(frame, now);
-  }
-  state.SetItemsProcessed(state.iterations());
-}
-BENCHMARK(BM_MotorCycle);
 
 }  // namespace
