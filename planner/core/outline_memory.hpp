@@ -1,7 +1,7 @@
 #pragma once
 // A movable object seen in part (a face hidden behind a wall, a side seen edge-on) looks smaller than it
 // is, and which part shows changes with the view: a lane beside a box that plugs a corridor opens and
-// closes as the vehicle moves, and the path flips with it (Willow t5 circled its last 100 s so). Each
+// closes as the vehicle moves, and the path flips with it, so the vehicle circles in front of it. Each
 // object keeps the convex hull of its outlines since the vehicle was last at it, so a lane once seen
 // closed stays closed. Near the object (where the vehicle pushes it) the hull restarts from the outline
 // of the frame: a pushed object moves, and its old outlines would smear along the push.

@@ -48,14 +48,15 @@ std::optional<PassageSeal> sealPassage(const graph::ObstacleSet& obstacles, cons
   // Across the free width and on into the inflation up to a cell short of the obstacle itself: the
   // obstacles here are the planner's picture (a box seen from one side is modelled thin, a raster edge
   // is a cell off), and a seal as wide as the picture's gap alone left the real lane open a little to one
-  // side; the next path went through there and stalled again (office: up to 7 seals beside one box).
+  // side; the next path went through there and stalled again.
   const double deepest_m = std::max(0.0, inflation_m - cell_size_m);
   const auto sealable = [&](const geometry::Point& point) {
     return !obstacles.isBlocked(point) || obstacles.distanceToBoundary(point) <= deepest_m + 1e-9;
   };
   // At least the vehicle's width (twice the inflation) each side: the nearest obstacle may lie along the
   // segment, not across it (a segment that crosses a pushed bar seals just past the bar's inflation, 2 cm
-  // from it, and a row of 3 cells left the gap beside the bar's end open: tunnel-1 t2 sealed 72 times).
+  // from it, and a row of 3 cells would leave the gap beside the bar's end open, to be sealed again and
+  // again).
   const double reach_m = std::max(seal.half_width_m, inflation) + inflation;
   const auto most_cells = static_cast<int>(std::ceil(reach_m / cell_size_m));
   const auto cellsToward = [&](double side) {

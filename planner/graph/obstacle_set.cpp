@@ -5,6 +5,8 @@
 #include <limits>
 #include <utility>
 
+#include "common/geometry/segment.hpp"
+
 namespace ifar::graph {
 namespace {
 
@@ -408,11 +410,7 @@ double ObstacleSet::distanceToBoundary(const Point& point) const
 {
   double best = std::numeric_limits<double>::infinity();
   for (const auto& edge : edges_) {
-    const Vector along = edge.end - edge.start;
-    const double length_squared = along.squaredNorm();
-    const double parameter =
-        length_squared > 0.0 ? std::clamp((point - edge.start).dot(along) / length_squared, 0.0, 1.0) : 0.0;
-    best = std::min(best, (edge.start + parameter * along - point).norm());
+    best = std::min(best, geometry::distanceToSegment(point, geometry::Segment{edge.start, edge.end}));
   }
   return best;
 }
@@ -436,11 +434,7 @@ bool ObstacleSet::isBlocked(const Point& point) const
   const int row = static_cast<int>(row_position);
   const double tolerance = kRelativeTolerance * (1.0 + point.cwiseAbs().maxCoeff());
   const auto distanceTo = [&](const Edge& edge) {
-    const Vector along = edge.end - edge.start;
-    const double length_squared = along.squaredNorm();
-    const double parameter =
-        length_squared > 0.0 ? std::clamp((point - edge.start).dot(along) / length_squared, 0.0, 1.0) : 0.0;
-    return (edge.start + parameter * along - point).norm();
+    return geometry::distanceToSegment(point, geometry::Segment{edge.start, edge.end});
   };
   // Winding number along a ray to +x through the bucket row. An edge lies in every bucket its box
   // touches, so it is counted only in the bucket holding its crossing point.
@@ -488,11 +482,7 @@ SnapResult ObstacleSet::snapToFree(const Point& point) const
   }
   double best = std::numeric_limits<double>::infinity();
   for (const auto& edge : edges_) {
-    const Vector along = edge.end - edge.start;
-    const double length_squared = along.squaredNorm();
-    const double parameter =
-        length_squared > 0.0 ? std::clamp((point - edge.start).dot(along) / length_squared, 0.0, 1.0) : 0.0;
-    const Point candidate = edge.start + parameter * along;
+    const Point candidate = geometry::closestPointOnSegment(point, geometry::Segment{edge.start, edge.end});
     if (bounds_ && !bounds_->contains(candidate)) {
       continue;
     }

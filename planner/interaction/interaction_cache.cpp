@@ -105,10 +105,9 @@ bool InteractionCache::keepsPlans(const Entry& entry, const LocalScene& scene, s
 {
   // The surroundings are compared in the window the kept plans were found in: the view's own window
   // grows and shrinks with the object's outline and takes in more or less wall with it. Only the static
-  // ones: a neighbouring object's outline changes with the view as this one's does (office2x-5+6 t2 with
-  // the walls known: a box beside the door lost 0.5 m2 of outline whenever the vehicle came up to the
-  // door's light box, the surroundings "changed", and the route swung between the push through the door
-  // and a 24 m way round from 150 to 260 s).
+  // ones: a neighbouring object's outline changes with the view as this one's does (a box beside a door
+  // loses part of its outline whenever the vehicle comes up to the door's light box; were that a change
+  // of surroundings, the route would swing between the push through the door and the way round).
   return entry.valid && foundCount(fresh) < foundCount(entry.interactions) &&
          (signature.object_centroid - entry.planned.object_centroid).norm() <= keep_radius_m_ &&
          sameSurroundings(entry.planned, signatureOf(scene, movable_index, signature.physics,
