@@ -85,7 +85,8 @@ class Executive {
   std::int32_t staleBits(std::int64_t now_us, const Inputs& inputs) const;
   /// Takes in a new plan from the inputs (a resend of the same plan only keeps it fresh).
   void absorbPath(const Inputs& inputs);
-  /// Whether the task in hand goes on along `incoming` (a new plan for it) instead of adopting it.
+  /// True when `incoming` (a new plan) is not adopted: the task in hand goes on along it (a push under
+  /// way, a doorway run, arrived), or, waiting for a replan, it is not the replan.
   bool keepsTaskFor(const Path& incoming, const Inputs& inputs);
   void adoptPath(const Path& path);
   void startGoal(std::int64_t goal_id);
