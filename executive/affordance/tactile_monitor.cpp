@@ -84,71 +84,85 @@ std::optional<AffordanceEvent> TactileMonitor::update(std::int64_t now_us, doubl
   const bool at_maximum = in_contact_expected && force_n >= settings.max_force_fraction * max_push_force_;
   if (!at_maximum) {
     saturated_ = false;
-  } else {
-    if (!saturated_) {
-      saturated_ = true;
-      saturated_since_us_ = now_us;
-      saturated_vehicle_travel_ = 0.0;
-      saturated_object_start_ = object_position.value_or(geometry::Point::Zero());
-    } else {
-      saturated_vehicle_travel_ += forward_step;
-    }
-    // In contact the object moves no farther than the vehicle follows it. The observed centroid alone
-    // is not enough: while the bumper hides the near face it wanders by up to ~8 cm (seen in the
-    // office world), which restarted the window for a minute against a box that never moved.
-    const double moved = object_position ? std::min((*object_position - saturated_object_start_).norm(),
-                                                    saturated_vehicle_travel_)
-                                         : saturated_vehicle_travel_;
-    if (moved > settings.motion_threshold_m) {
-      // It moves: start a new window here.
-      saturated_since_us_ = now_us;
-      saturated_vehicle_travel_ = 0.0;
-      saturated_object_start_ = object_position.value_or(geometry::Point::Zero());
-    } else if (!reported_no_motion_ &&
-               static_cast<double>(now_us - saturated_since_us_) >= settings.no_motion_time_s * 1e6) {
-      reported_no_motion_ = true;
-      // An object that slid at least min_measured_distance_m below the maximum force and then stopped
-      // has met something (a wall, a corner, another object): it is light enough, only blocked where it
-      // stands. Calling it unpushable made bench Willow t0 give up a box it had pushed 3.9 m at 91 N
-      // along a corridor when it caught the corridor's end, and drive back round. A second jam of the
-      // same object is taken as unpushable, so a push planned into the same corner is not tried forever.
-      const double sliding_force = meanForce();
-      if (!jammed_before_ && pushed_distance_ >= settings.min_measured_distance_m &&
-          sliding_force < settings.max_force_fraction * max_push_force_) {
-        AffordanceEvent event = makeEvent(AffordanceReason::Jammed, sliding_force, extrapolatedCost());
-        event.text = fmt::format(
-            "object {} jammed: slid {:.2f} m at mean {:.0f} N, then did not move ({:.3f} m) for {:.1f} s "
-            "at {:.0f} N: pushable, blocked where it stands",
-            plan_.object_id, pushed_distance_, sliding_force, moved, settings.no_motion_time_s, force_n);
-        return event;
-      }
-      AffordanceEvent event = makeEvent(AffordanceReason::NoMotion, force_n, extrapolatedCost());
-      event.text = fmt::format(
-          "object {} did not move ({:.3f} m) for {:.1f} s at {:.0f} N (maximum {:.0f} N): "
-          "unpushable",
-          plan_.object_id, moved, settings.no_motion_time_s, force_n, max_push_force_);
-      return event;
-    }
+  } else if (std::optional<AffordanceEvent> event =
+                 watchSaturated(now_us, force_n, forward_step, object_position, settings)) {
+    return event;
   }
-
   // Principle 2: the measured cost differs from the planned J by more than the threshold.
-  if (!reported_cost_ && pushed_distance_ >= settings.min_measured_distance_m) {
-    const double measured = extrapolatedCost();
-    const double difference = measured - plan_.expected_cost;
-    if (std::abs(difference) > settings.cost_threshold) {
-      reported_cost_ = true;
-      const AffordanceReason reason =
-          difference > 0.0 ? AffordanceReason::CostHigher : AffordanceReason::CostLower;
-      AffordanceEvent event = makeEvent(reason, meanForce(), measured);
-      event.text = fmt::format(
-          "object {}: measured cost {:.2f} vs planned {:.2f} after {:.2f} m at mean {:.0f} N "
-          "(planned {:.0f} N)",
-          plan_.object_id, measured, plan_.expected_cost, pushed_distance_, meanForce(),
-          plan_.expected_force_n);
-      return event;
-    }
+  return checkCost(settings);
+}
+
+std::optional<AffordanceEvent> TactileMonitor::watchSaturated(
+    std::int64_t now_us, double force_n, double forward_step,
+    const std::optional<geometry::Point>& object_position, const TactileSettings& settings)
+{
+  if (!saturated_) {
+    saturated_ = true;
+    saturated_since_us_ = now_us;
+    saturated_vehicle_travel_ = 0.0;
+    saturated_object_start_ = object_position.value_or(geometry::Point::Zero());
+  } else {
+    saturated_vehicle_travel_ += forward_step;
   }
-  return std::nullopt;
+  // In contact the object moves no farther than the vehicle follows it. The observed centroid alone
+  // is not enough: while the bumper hides the near face it wanders by up to ~8 cm, which restarted the
+  // window for a minute against a box that never moved.
+  const double moved = object_position ? std::min((*object_position - saturated_object_start_).norm(),
+                                                  saturated_vehicle_travel_)
+                                       : saturated_vehicle_travel_;
+  if (moved > settings.motion_threshold_m) {
+    // It moves: start a new window here.
+    saturated_since_us_ = now_us;
+    saturated_vehicle_travel_ = 0.0;
+    saturated_object_start_ = object_position.value_or(geometry::Point::Zero());
+    return std::nullopt;
+  }
+  if (reported_no_motion_ ||
+      !(static_cast<double>(now_us - saturated_since_us_) >= settings.no_motion_time_s * 1e6)) {
+    return std::nullopt;
+  }
+  reported_no_motion_ = true;
+  // An object that slid at least min_measured_distance_m below the maximum force and then stopped has
+  // met something (a wall, a corner, another object): it is light enough, only blocked where it stands,
+  // and calling it unpushable would send the vehicle round a box it can push. A second jam of the same
+  // object is taken as unpushable, so a push planned into the same corner is not tried forever.
+  const double sliding_force = meanForce();
+  if (!jammed_before_ && pushed_distance_ >= settings.min_measured_distance_m &&
+      sliding_force < settings.max_force_fraction * max_push_force_) {
+    AffordanceEvent event = makeEvent(AffordanceReason::Jammed, sliding_force, extrapolatedCost());
+    event.text = fmt::format(
+        "object {} jammed: slid {:.2f} m at mean {:.0f} N, then did not move ({:.3f} m) for {:.1f} s "
+        "at {:.0f} N: pushable, blocked where it stands",
+        plan_.object_id, pushed_distance_, sliding_force, moved, settings.no_motion_time_s, force_n);
+    return event;
+  }
+  AffordanceEvent event = makeEvent(AffordanceReason::NoMotion, force_n, extrapolatedCost());
+  event.text = fmt::format(
+      "object {} did not move ({:.3f} m) for {:.1f} s at {:.0f} N (maximum {:.0f} N): "
+      "unpushable",
+      plan_.object_id, moved, settings.no_motion_time_s, force_n, max_push_force_);
+  return event;
+}
+
+std::optional<AffordanceEvent> TactileMonitor::checkCost(const TactileSettings& settings)
+{
+  if (reported_cost_ || !(pushed_distance_ >= settings.min_measured_distance_m)) {
+    return std::nullopt;
+  }
+  const double measured = extrapolatedCost();
+  const double difference = measured - plan_.expected_cost;
+  if (!(std::abs(difference) > settings.cost_threshold)) {
+    return std::nullopt;
+  }
+  reported_cost_ = true;
+  const AffordanceReason reason =
+      difference > 0.0 ? AffordanceReason::CostHigher : AffordanceReason::CostLower;
+  AffordanceEvent event = makeEvent(reason, meanForce(), measured);
+  event.text = fmt::format(
+      "object {}: measured cost {:.2f} vs planned {:.2f} after {:.2f} m at mean {:.0f} N "
+      "(planned {:.0f} N)",
+      plan_.object_id, measured, plan_.expected_cost, pushed_distance_, meanForce(), plan_.expected_force_n);
+  return event;
 }
 
 }  // namespace ifar::executive

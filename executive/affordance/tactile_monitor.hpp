@@ -51,6 +51,13 @@ class TactileMonitor {
 
  private:
   AffordanceEvent makeEvent(AffordanceReason reason, double force_n, double measured_cost) const;
+  /// Principle 1 while the force is at maximum: the event once the object has not moved for
+  /// no_motion_time_s (jammed after sliding, or unpushable).
+  std::optional<AffordanceEvent> watchSaturated(std::int64_t now_us, double force_n, double forward_step,
+                                                const std::optional<geometry::Point>& object_position,
+                                                const TactileSettings& settings);
+  /// Principle 2: the event once the measured cost differs from the plan's by more than the threshold.
+  std::optional<AffordanceEvent> checkCost(const TactileSettings& settings);
 
   PushPlan plan_;
   double max_push_force_ = 0.0;

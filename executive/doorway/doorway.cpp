@@ -8,11 +8,10 @@
 namespace ifar::executive {
 namespace {
 
+// The search's resolution: path samples, run skews and run offsets.
 constexpr double kSampleStepM = 0.05;
 constexpr double kSkewStepRad = 0.02;
 constexpr double kOffsetStepM = 0.01;
-/// A gap line within this angle of the path's direction is one the path runs along, not through.
-constexpr double kMinCrossingSine = 0.34;  // 20 degrees
 
 geometry::Point leftOf(const geometry::Point& direction)
 {
@@ -71,9 +70,10 @@ struct Gap {
 };
 
 /// The gap the path crosses at `sample`: the nearest point, and the nearest point on the far side of the
-/// sample from it. None when there is no point on the far side or the path runs along the gap's line.
+/// sample from it. None when there is no point on the far side or the path runs along the gap's line
+/// (crosses it at a sine below `min_crossing_sine`).
 std::optional<Gap> gapAt(const PathSample& sample, const std::vector<geometry::Point>& points,
-                         double max_width)
+                         double max_width, double min_crossing_sine)
 {
   const geometry::Point* nearest = nullptr;
   double nearest_distance = std::numeric_limits<double>::infinity();
@@ -113,7 +113,7 @@ std::optional<Gap> gapAt(const PathSample& sample, const std::vector<geometry::P
   const geometry::Point across = (gap.second_post - gap.first_post) / gap.width_m;
   const double crossing_sine =
       std::abs(across.x() * sample.direction.y() - across.y() * sample.direction.x());
-  if (crossing_sine < kMinCrossingSine) {
+  if (crossing_sine < min_crossing_sine) {
     return std::nullopt;
   }
   return gap;
@@ -221,7 +221,7 @@ std::optional<ImpassableGap> findImpassableGap(common::Span<const geometry::Poin
   // A gap narrower than the vehicle by more than the clearance is one the planner's inflation by the half
   // width closes once its scans show it: a path through it runs where the planner has not seen (two
   // points of one wall a few centimetres apart) and changes by itself. Reported, its seal closed the way
-  // round the wall's end as well (willow: 11 reports in one run, the goal not reached).
+  // round the wall's end as well.
   const double narrowest_m = 2.0 * (footprint.half_width_m - settings.min_clearance_m);
   const std::vector<geometry::Point> near =
       pointsNear(obstacles, path[0], settings.look_ahead_m + passable_m);
@@ -229,7 +229,7 @@ std::optional<ImpassableGap> findImpassableGap(common::Span<const geometry::Poin
     return std::nullopt;
   }
   for (const PathSample& sample : samplePath(path, footprint.front_m, settings.look_ahead_m)) {
-    const std::optional<Gap> gap = gapAt(sample, near, passable_m);
+    const std::optional<Gap> gap = gapAt(sample, near, passable_m, settings.min_crossing_sine);
     if (gap && gap->width_m < passable_m && gap->width_m >= narrowest_m &&
         between(sample.position, *gap, footprint.half_width_m)) {
       return ImpassableGap{gap->first_post, gap->second_post, gap->width_m, sample.along_m};
@@ -254,7 +254,7 @@ std::optional<Doorway> findDoorway(common::Span<const geometry::Point> path,
   // The narrowest sample of the first stretch of narrow samples along the path.
   std::optional<Gap> narrowest;
   for (const PathSample& sample : samplePath(path, settings.min_ahead_m, settings.look_ahead_m)) {
-    const std::optional<Gap> gap = gapAt(sample, near, settings.max_width_m);
+    const std::optional<Gap> gap = gapAt(sample, near, settings.max_width_m, settings.min_crossing_sine);
     if (!gap || gap->width_m >= settings.max_width_m) {
       if (narrowest) {
         break;

@@ -2,7 +2,7 @@
 // Doorways: gaps across the path only a little wider than the vehicle. The follower's arcs keep a
 // clearance that a 1.0 m door leaves to a 0.7 m vehicle only when it is centred and square to the door,
 // and the global path crosses a door at a slant (it bends at the posts' inflated corners), so the vehicle
-// wedged its corners on the posts and lost 10-35 s at each door of the office. The executive instead
+// wedged its corners on the posts and lost 10-35 s at each such door. The executive instead
 // drives such a door as a straight run: to a point before the door on the best straight line through it,
 // turn on the spot to the line's heading, then along the line to a point beyond the door.
 //
@@ -29,6 +29,18 @@ struct DoorwaySettings {
   double speed = 0.6;             ///< m/s along the run
   double timeout_s = 20.0;        ///< a run not done by then is given up and the door left to the follower
   double retry_after_s = 30.0;    ///< ... and not run again for this long
+  double retry_radius_m = 0.5;    ///< ... a doorway found within this of its centre being the same door
+  /// Arriving at the run's start at speed and within this of its heading, the lane tracker turns the rest
+  /// while moving (a stop and a turn on the spot cost 2-4 s a door) ...
+  double run_heading_tolerance_rad = 0.3;
+  double run_start_tolerance_m = 0.15;  ///< ... and within this of the start (or the approach's tolerance)
+  double run_end_tolerance_m = 0.1;     ///< the run is done this close (along it) to its end
+  /// Through the door, the waypoints up to exit_m + waypoint_tolerance_m beyond it and within approach_m +
+  /// exit_m + this of its centre are behind (the posts' and the run's own).
+  double passed_margin_m = 0.5;
+  /// A gap line within asin(this) (20 degrees) of the path's direction is one the path runs along, not
+  /// through.
+  double min_crossing_sine = 0.34;
 };
 
 struct Doorway {

@@ -17,7 +17,6 @@ namespace ifar::executive {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-constexpr double kDescentRadius = 0.5;  ///< metres: where the cost-to-go is sampled for the way to face
 
 /// Smallest distance from the footprint at `pose` to a point near it (capped at `search_radius`).
 double clearanceAt(const geometry::Pose2& pose, const ObstacleGrid& grid, const Footprint& footprint,
@@ -85,6 +84,113 @@ NavigationField navigationField(const geometry::Pose2& pose, const geometry::Poi
   return NavigationField(obstacles, pose.position(), target, shape);
 }
 
+/// What one follow() cycle scores every arc against.
+struct ArcScoring {
+  const geometry::Pose2& pose;
+  const geometry::Point& target;
+  const ObstacleGrid& grid;
+  const NavigationField& field;
+  const FollowerSettings& settings;
+  double start_distance;  ///< straight-line distance to the target
+  double start_cost;      ///< cost-to-go at the pose
+  double search_radius;   ///< clearances are measured up to this
+  double margin;          ///< an arc closer than this to a point is not free
+  double reach;           ///< the longest arc's length
+  int steps;              ///< footprint checks along an arc
+};
+
+/// A free arc's worth.
+struct ScoredArc {
+  double score = 0.0;
+  double clearance_m = 0.0;
+  double gain_m = 0.0;  ///< how much it lowers the cost-to-go
+};
+
+/// How well the heading at `end` faces the way the cost-to-go falls (through the door, round the box), not
+/// the straight line to the target: turning on the spot gains no progress, so this is what tells the good
+/// turn apart. Within the sampling radius of the target the circle reaches past it: face the target itself.
+double facingScore(const geometry::Pose2& end, bool reached, const ArcScoring& scoring)
+{
+  const geometry::Point& target = scoring.target;
+  const double radius = scoring.settings.descent_radius_m;
+  double facing = 1.0;
+  if (!reached && (target - end.position()).norm() <= radius) {
+    facing = 1.0 - headingError(end, target) / kPi;
+  } else if (!reached) {
+    const std::optional<double> descent = scoring.field.descentDirection(end.position(), radius);
+    facing = 1.0 - (descent ? std::abs(wrapToPi(*descent - end.heading)) : headingError(end, target)) / kPi;
+  }
+  return facing;
+}
+
+/// The arc's score, or none when its footprint comes closer than the margin to a point.
+std::optional<ScoredArc> scoreArc(const ArcScoring& scoring, const VelocityCommand& arc)
+{
+  const FollowerSettings& settings = scoring.settings;
+  const geometry::Point& target = scoring.target;
+  double arc_clearance = scoring.search_radius;
+  geometry::Pose2 end = scoring.pose;
+  bool reached = false;
+  for (int step = 1; step <= scoring.steps && !reached; ++step) {
+    const geometry::Pose2 sample =
+        integrateArc(scoring.pose, arc.linear, arc.angular, step * settings.time_step_s);
+    const double clearance = clearanceAt(sample, scoring.grid, settings.footprint, scoring.search_radius);
+    if (clearance < scoring.margin || clearance <= 0.0) {
+      return std::nullopt;
+    }
+    arc_clearance = std::min(arc_clearance, clearance);
+    end = sample;
+    reached = (target - sample.position()).norm() <= settings.goal_tolerance_m;
+  }
+  // Progress: how much the arc lowers the cost-to-go (straight-line distance where the field has none).
+  const double end_cost = scoring.field.value(end.position());
+  double gain = scoring.start_distance - (target - end.position()).norm();
+  if (std::isfinite(scoring.start_cost)) {
+    gain = std::isfinite(end_cost) ? scoring.start_cost - end_cost : gain - 1.0;
+  }
+  const double progress = gain / std::max(scoring.reach, 1e-3);
+  const double facing = facingScore(end, reached, scoring);
+  ScoredArc scored;
+  scored.score = settings.progress_weight * progress + settings.heading_weight * facing +
+                 settings.clearance_weight * std::min(arc_clearance, settings.clearance_cap_m) /
+                     std::max(settings.clearance_cap_m, 1e-3);
+  scored.clearance_m = arc_clearance;
+  scored.gain_m = gain;
+  return scored;
+}
+
+/// Samples the fan of arcs (forward speeds up to `top_speed`, plus turning on the spot, times the turn
+/// rates) and sets `result`'s command, clearance and progress to the best free one; counts the arcs.
+void pickArc(const ArcScoring& scoring, double top_speed, const DifferentialDrive& drive,
+             FollowerResult& result)
+{
+  const int linear_samples = std::max(1, scoring.settings.linear_samples);
+  const int angular_samples = std::max(2, scoring.settings.angular_samples);
+  double best_score = -kInfinity;
+  for (int linear_index = 0; linear_index <= linear_samples; ++linear_index) {
+    for (int angular_index = 0; angular_index < angular_samples; ++angular_index) {
+      const double fraction = -1.0 + 2.0 * angular_index / (angular_samples - 1);
+      VelocityCommand arc{top_speed * linear_index / linear_samples, drive.maxAngularVelocity() * fraction};
+      if (arc.linear == 0.0 && std::abs(arc.angular) < 1e-9) {
+        continue;
+      }
+      arc = drive.limitSpeed(arc);
+      ++result.arcs;
+      const std::optional<ScoredArc> scored = scoreArc(scoring, arc);
+      if (!scored) {
+        continue;
+      }
+      ++result.free_arcs;
+      if (scored->score > best_score) {
+        best_score = scored->score;
+        result.command = arc;
+        result.clearance_m = scored->clearance_m;
+        result.progress_m = scored->gain_m;
+      }
+    }
+  }
+}
+
 }  // namespace
 
 const char* followerStatusName(FollowerStatus status)
@@ -136,69 +242,9 @@ FollowerResult follow(const geometry::Pose2& pose, const geometry::Point& target
   const double start_clearance = clearanceAt(pose, grid, settings.footprint, search_radius);
   const double margin = std::min(settings.clearance_m, start_clearance);
   const int steps = std::max(1, static_cast<int>(std::ceil(settings.horizon_s / settings.time_step_s)));
-  const int linear_samples = std::max(1, settings.linear_samples);
-  const int angular_samples = std::max(2, settings.angular_samples);
-
-  double best_score = -kInfinity;
-  for (int linear_index = 0; linear_index <= linear_samples; ++linear_index) {
-    for (int angular_index = 0; angular_index < angular_samples; ++angular_index) {
-      const double fraction = -1.0 + 2.0 * angular_index / (angular_samples - 1);
-      VelocityCommand arc{top_speed * linear_index / linear_samples, drive.maxAngularVelocity() * fraction};
-      if (arc.linear == 0.0 && std::abs(arc.angular) < 1e-9) {
-        continue;
-      }
-      arc = drive.limitSpeed(arc);
-      ++result.arcs;
-
-      bool free = true;
-      double arc_clearance = search_radius;
-      geometry::Pose2 end = pose;
-      bool reached = false;
-      for (int step = 1; step <= steps && !reached; ++step) {
-        const geometry::Pose2 sample =
-            integrateArc(pose, arc.linear, arc.angular, step * settings.time_step_s);
-        const double clearance = clearanceAt(sample, grid, settings.footprint, search_radius);
-        if (clearance < margin || clearance <= 0.0) {
-          free = false;
-          break;
-        }
-        arc_clearance = std::min(arc_clearance, clearance);
-        end = sample;
-        reached = (target - sample.position()).norm() <= settings.goal_tolerance_m;
-      }
-      if (!free) {
-        continue;
-      }
-      ++result.free_arcs;
-      // Progress: how much the arc lowers the cost-to-go (straight-line distance where the field has none).
-      const double end_cost = field.value(end.position());
-      double gain = start_distance - (target - end.position()).norm();
-      if (std::isfinite(start_cost)) {
-        gain = std::isfinite(end_cost) ? start_cost - end_cost : gain - 1.0;
-      }
-      const double progress = gain / std::max(reach, 1e-3);
-      // Facing the way the cost-to-go falls (through the door, round the box), not the straight line to
-      // the target: turning on the spot gains no progress, so this is what tells the good turn apart.
-      // Within the sampling radius of the target the circle reaches past it: face the target itself.
-      double facing = 1.0;
-      if (!reached && (target - end.position()).norm() <= kDescentRadius) {
-        facing = 1.0 - headingError(end, target) / kPi;
-      } else if (!reached) {
-        const std::optional<double> descent = field.descentDirection(end.position(), kDescentRadius);
-        facing =
-            1.0 - (descent ? std::abs(wrapToPi(*descent - end.heading)) : headingError(end, target)) / kPi;
-      }
-      const double score = settings.progress_weight * progress + settings.heading_weight * facing +
-                           settings.clearance_weight * std::min(arc_clearance, settings.clearance_cap_m) /
-                               std::max(settings.clearance_cap_m, 1e-3);
-      if (score > best_score) {
-        best_score = score;
-        result.command = arc;
-        result.clearance_m = arc_clearance;
-        result.progress_m = gain;
-      }
-    }
-  }
+  const ArcScoring scoring{pose,       target,        grid,   field, settings, start_distance,
+                           start_cost, search_radius, margin, reach, steps};
+  pickArc(scoring, top_speed, drive, result);
 
   if (result.free_arcs == 0) {
     result.status = FollowerStatus::Blocked;
@@ -262,12 +308,12 @@ std::optional<double> facingDirection(const geometry::Pose2& pose, const geometr
   if (!std::isfinite(pose.x) || !std::isfinite(pose.y) || !target.allFinite()) {
     return std::nullopt;
   }
-  if ((target - pose.position()).norm() <= kDescentRadius) {
+  if ((target - pose.position()).norm() <= settings.descent_radius_m) {
     return std::atan2(target.y() - pose.y, target.x() - pose.x);
   }
   const double reach = topSpeed(pose, target, stop_at_target, settings, drive) * settings.horizon_s;
   return navigationField(pose, target, stop_at_target, obstacles, settings, reach)
-      .descentDirection(pose.position(), kDescentRadius);
+      .descentDirection(pose.position(), settings.descent_radius_m);
 }
 
 }  // namespace ifar::executive

@@ -39,6 +39,9 @@ struct FollowerSettings {
   /// Cost-to-go cells within half width + clearance_cap_m of an obstacle cost up to (1 + this) x their
   /// length, so the vehicle keeps to the middle of doors and corridors rather than the wall-hugging path.
   double navigation_proximity_weight = 3.0;
+  /// The cost-to-go is sampled on a circle this wide around a point for the way it falls (the way to
+  /// face); a target closer than this is faced itself, since the circle reaches past it.
+  double descent_radius_m = 0.5;
   Footprint footprint;
 };
 

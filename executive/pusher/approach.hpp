@@ -32,6 +32,14 @@ struct ApproachSettings {
   bool stop_at_standoff = true;
   /// The collision-free leg squeezes down to this clearance when stuck at the follower's (followSqueezing).
   double squeeze_clearance_m = 0.05;
+  /// Aligning at the stand-off point turns on the spot; when the guard would stop that turn, the executive
+  /// backs straight up at most this far per approach until it is free: a wall square ahead needs 0.2 m at
+  /// most (the front corners sweep the footprint's 0.57 m circumradius, the bumper is 0.45 m ahead), a
+  /// slanted one or a corner more.
+  double align_backup_m = 0.5;
+  /// ... until the turn keeps this much more than the guard clearance: the guard steps the turn otherwise
+  /// than the free-turn test and would stop one that only just clears.
+  double align_turn_margin_m = 0.03;
   PoseControllerSettings control;
 };
 
