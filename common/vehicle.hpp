@@ -3,6 +3,7 @@
 // planner and executive so they agree on what the vehicle is.
 
 #include "common/config.hpp"
+#include "common/vehicle_model.hpp"
 
 namespace ifar::common {
 
@@ -24,7 +25,7 @@ struct VehicleSettings {
   double force_sensor_range_n = 800.0;
 
   /// The largest force the wheels can push with before slipping: traction x mass x g.
-  double maxPushForce() const { return traction_coefficient * mass_kg * 9.81; }
+  double maxPushForce() const { return traction_coefficient * mass_kg * kGravity; }
 };
 
 /// Reads every key of vehicle.yaml (all required, all positive) and rejects unknown ones.

@@ -5,6 +5,8 @@
 #include <cstdlib>
 #include <limits>
 
+#include "common/vehicle_model.hpp"
+
 namespace ifar::motor {
 
 const char* toString(ClientPhase phase)
@@ -313,9 +315,8 @@ WheelVelocities wheelVelocities(double linear_m_per_s, double angular_rad_per_s,
     }
     return static_cast<std::int32_t>(std::lround(std::fmax(-limit, std::fmin(limit, units))));
   };
-  const double half_track = wheel_track_m / 2.0;
-  return WheelVelocities{toUnits(linear_m_per_s - angular_rad_per_s * half_track),
-                         toUnits(linear_m_per_s + angular_rad_per_s * half_track)};
+  const common::RimSpeeds rims = common::rimSpeeds(linear_m_per_s, angular_rad_per_s, wheel_track_m);
+  return WheelVelocities{toUnits(rims.left), toUnits(rims.right)};
 }
 
 }  // namespace ifar::motor

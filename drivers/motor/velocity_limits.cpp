@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "common/vehicle_model.hpp"
+
 namespace ifar::motor {
 namespace {
 
@@ -53,13 +55,16 @@ BodyVelocity towardWithinAcceleration(BodyVelocity current, BodyVelocity target,
 
 std::int32_t wheelVelocityLimit(const VelocityLimits& limits, double wheel_track_m, double wheel_radius_m)
 {
-  return wheelUnitsRoundedDown(limits.max_linear + limits.max_angular * wheel_track_m / 2.0, wheel_radius_m);
+  return wheelUnitsRoundedDown(common::rimSpeeds(limits.max_linear, limits.max_angular, wheel_track_m).right,
+                               wheel_radius_m);
 }
 
 std::int32_t wheelAccelerationLimit(const VelocityLimits& limits, double wheel_track_m, double wheel_radius_m)
 {
+  // Rim accelerations follow the body's as rim speeds follow its velocity.
   return wheelUnitsRoundedDown(
-      limits.max_linear_acceleration + limits.max_angular_acceleration * wheel_track_m / 2.0, wheel_radius_m);
+      common::rimSpeeds(limits.max_linear_acceleration, limits.max_angular_acceleration, wheel_track_m).right,
+      wheel_radius_m);
 }
 
 }  // namespace ifar::motor

@@ -39,14 +39,15 @@ DifferentialDrive::DifferentialDrive(const common::VehicleSettings& vehicle)
 
 WheelSpeeds DifferentialDrive::toWheelSpeeds(const VelocityCommand& command) const
 {
-  return {(command.linear - command.angular * half_track_) / wheel_radius_,
-          (command.linear + command.angular * half_track_) / wheel_radius_};
+  const common::RimSpeeds rims = common::rimSpeeds(command.linear, command.angular, 2.0 * half_track_);
+  return {rims.left / wheel_radius_, rims.right / wheel_radius_};
 }
 
 VelocityCommand DifferentialDrive::fromWheelSpeeds(const WheelSpeeds& wheels) const
 {
-  return {wheel_radius_ * (wheels.right + wheels.left) / 2.0,
-          wheel_radius_ * (wheels.right - wheels.left) / (2.0 * half_track_)};
+  const common::BodyVelocity body =
+      common::bodyVelocity(wheels.left, wheels.right, wheel_radius_, 2.0 * half_track_);
+  return {body.linear, body.angular};
 }
 
 VelocityCommand DifferentialDrive::limitSpeed(const VelocityCommand& command) const

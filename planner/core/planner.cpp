@@ -74,7 +74,6 @@ TrackerSettings trackerSettings(const PlannerSettings& settings)
   return tracker;
 }
 
-constexpr double kGravity = 9.81;
 // How near the line from the vehicle to the point it could not reach a movable object must come to bound
 // the blocked passage: the inflation is in its outline already, so touching.
 constexpr double kObjectBesidePassageM = 0.15;
@@ -529,7 +528,7 @@ FrameResult Planner::applyAffordance(const AffordanceUpdate& update)
     if (update.affordance > 0.0) {
       physics.ground_friction = update.affordance;
     } else if (update.push_force_n > 0.0 && physics.mass_kg > 0.0) {
-      physics.ground_friction = update.push_force_n / (physics.mass_kg * kGravity);
+      physics.ground_friction = update.push_force_n / (physics.mass_kg * common::kGravity);
     }
     outcome =
         interaction_.applyAffordance(update.object_id, tracker_.contains(update.object_id), update.pushable,

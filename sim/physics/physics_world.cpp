@@ -245,8 +245,9 @@ void PhysicsWorld::Implementation::applyWheelForces()
   reference_angular =
       moveToward(reference_angular, command_angular, vehicle_settings.max_angular_acceleration * step);
   const double half_track = 0.5 * vehicle_settings.wheel_track_m;
-  const double wheel_targets[2] = {reference_linear - reference_angular * half_track,
-                                   reference_linear + reference_angular * half_track};
+  const common::RimSpeeds targets =
+      common::rimSpeeds(reference_linear, reference_angular, vehicle_settings.wheel_track_m);
+  const double wheel_targets[2] = {targets.left, targets.right};
   const double wheel_offsets[2] = {half_track, -half_track};  // left wheel at +y in the body frame
   const double normal_load = 0.5 * vehicle_settings.mass_kg * settings.gravity;
   const double traction_limit = vehicle_settings.traction_coefficient * normal_load;
@@ -305,8 +306,9 @@ void PhysicsWorld::setVelocityCommand(double linear, double angular)
 
 void PhysicsWorld::setWheelSpeedCommand(const WheelSpeeds& wheels)
 {
-  const double track = implementation_->vehicle_settings.wheel_track_m;
-  setVelocityCommand(0.5 * (wheels.left + wheels.right), (wheels.right - wheels.left) / track);
+  const common::BodyVelocity body =
+      common::bodyVelocity(wheels.left, wheels.right, 1.0, implementation_->vehicle_settings.wheel_track_m);
+  setVelocityCommand(body.linear, body.angular);
 }
 
 void PhysicsWorld::step()
@@ -369,9 +371,10 @@ double PhysicsWorld::bumperForce() const
 
 WheelSpeeds PhysicsWorld::wheelSpeeds() const
 {
-  const double half_track = 0.5 * implementation_->vehicle_settings.wheel_track_m;
-  return {implementation_->reference_linear - implementation_->reference_angular * half_track,
-          implementation_->reference_linear + implementation_->reference_angular * half_track};
+  const common::RimSpeeds rims =
+      common::rimSpeeds(implementation_->reference_linear, implementation_->reference_angular,
+                        implementation_->vehicle_settings.wheel_track_m);
+  return {rims.left, rims.right};
 }
 
 }  // namespace ifar::sim::physics

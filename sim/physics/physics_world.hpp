@@ -18,9 +18,9 @@ struct PhysicsSettings {
   double step_seconds = 1.0 / 200.0;  // fixed physics step
   int velocity_iterations = 8;
   int position_iterations = 3;
-  double gravity = 9.81;          // m/s^2, for normal loads (the world itself is top-down)
-  double bumper_depth_m = 0.05;   // thickness of the bumper plate at the vehicle's front
-  double surface_friction = 0.5;  // object-object and object-wall Coulomb coefficient
+  double gravity = common::kGravity;  // m/s^2, for normal loads (the world itself is top-down)
+  double bumper_depth_m = 0.05;       // thickness of the bumper plate at the vehicle's front
+  double surface_friction = 0.5;      // object-object and object-wall Coulomb coefficient
   /// Fraction of a wheel's slip velocity the (stiff) motor controller removes per step, before the
   /// traction cap; 0.5 keeps the two coupled wheels stable.
   double wheel_response = 0.5;

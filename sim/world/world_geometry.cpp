@@ -21,7 +21,7 @@ geometry::Polygon placedOutline(const MovableObject& object, const geometry::Pos
 
 double slidingForce(const MovableObject& object)
 {
-  return object.ground_friction * object.mass_kg * kGravity;
+  return object.ground_friction * object.mass_kg * common::kGravity;
 }
 
 bool isPushable(const MovableObject& object, const common::VehicleSettings& vehicle)

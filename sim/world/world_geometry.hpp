@@ -7,9 +7,6 @@
 
 namespace ifar::sim {
 
-/// Standard gravity, m/s^2.
-constexpr double kGravity = 9.81;
-
 /// The object's outline placed at its pose, in world coordinates.
 geometry::Polygon placedOutline(const MovableObject& object);
 /// The object's outline placed at `pose` (where the physics or a run has moved it), in world coordinates.
