@@ -11,7 +11,7 @@
 
 #include "common/percentile.hpp"
 #include "planner/interaction/interaction_planner.hpp"
-#include "tests/unit/interaction/scenes.hpp"
+#include "testing/interaction_scenes.hpp"
 
 namespace {
 

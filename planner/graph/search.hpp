@@ -143,6 +143,10 @@ class AStarSearch {
   static SearchResult run(const SearchGraph& graph, const ObstacleSet& obstacles,
                           const geometry::Point& start, const geometry::Point& goal, SearchScratch& scratch,
                           const RoutePreference& preference = {}, const WaySurcharge& surcharge = {});
+
+ private:
+  class Query;  // one query's roles: validity, heuristic, arc costs, robot links, expansion
+                // (a_star_query.hpp)
 };
 
 /// Convenience wrapper around AStarSearch::run.

@@ -5,6 +5,8 @@
 #include <limits>
 #include <utility>
 
+#include "common/geometry/segment.hpp"
+
 namespace ifar::interaction {
 
 using geometry::Point;
@@ -69,11 +71,9 @@ double distanceOutside(const Polygon& polygon, const Point& point)
     const Point& a = polygon[previous];
     const Point& b = polygon[index];
     const geometry::Vector direction = b - a;
-    const double squared_length = direction.squaredNorm();
-    const double along = squared_length <= geometry::kEpsilon * geometry::kEpsilon
-                             ? 0.0
-                             : std::clamp((point - a).dot(direction) / squared_length, 0.0, 1.0);
-    nearest_squared = std::min(nearest_squared, (point - (a + along * direction)).squaredNorm());
+    nearest_squared =
+        std::min(nearest_squared,
+                 (point - geometry::closestPointOnSegment(point, geometry::Segment{a, b})).squaredNorm());
     if ((a.y() > point.y()) != (b.y() > point.y()) &&
         point.x() < a.x() + (point.y() - a.y()) * direction.x() / direction.y()) {
       inside = !inside;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/vehicle_model.hpp"
+
 namespace ifar::interaction {
 
 using geometry::Point;
@@ -11,7 +13,6 @@ using geometry::Vector;
 
 namespace {
 
-constexpr double kGravity = 9.81;
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 /// Arcs tighter than this are never offered: the vehicle would pivot on the object.
 constexpr double kSmallestRadius = 0.1;
@@ -111,7 +112,7 @@ PlanStatus checkPhysics(const ObjectPhysics& physics, const PusherSettings& push
 LimitSurface ellipsoidalLimitSurface(const Polygon& footprint, const ObjectPhysics& physics)
 {
   LimitSurface surface;
-  surface.max_force_n = physics.ground_friction * physics.mass_kg * kGravity;
+  surface.max_force_n = physics.ground_friction * physics.mass_kg * common::kGravity;
   surface.characteristic_length_m = meanRadius(footprint);
   surface.max_moment_nm = surface.max_force_n * surface.characteristic_length_m;
   return surface;

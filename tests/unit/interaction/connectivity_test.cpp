@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "tests/unit/interaction/scenes.hpp"
+#include "testing/interaction_scenes.hpp"
 
 namespace ifar::interaction {
 namespace {

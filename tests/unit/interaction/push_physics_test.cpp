@@ -8,7 +8,7 @@
 #include "planner/interaction/interaction_settings.hpp"
 #include "planner/interaction/stable_push.hpp"
 #include "sim/physics/physics_world.hpp"
-#include "tests/unit/interaction/scenes.hpp"
+#include "testing/interaction_scenes.hpp"
 
 namespace ifar::interaction {
 namespace {

@@ -10,7 +10,7 @@
 
 #include "planner/interaction/convex_polygon.hpp"
 #include "planner/interaction/interaction_planner.hpp"
-#include "tests/unit/interaction/scenes.hpp"
+#include "testing/interaction_scenes.hpp"
 
 namespace ifar::interaction {
 namespace {

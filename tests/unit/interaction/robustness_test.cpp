@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "planner/interaction/interaction_planner.hpp"
-#include "tests/unit/interaction/scenes.hpp"
+#include "testing/interaction_scenes.hpp"
 
 namespace ifar::interaction {
 namespace {

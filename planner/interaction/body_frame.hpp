@@ -1,0 +1,42 @@
+#pragma once
+// Body-frame geometry of a pushed object carried to a world pose: polygons, directions, and the pose
+// itself turned about a centre. Inline: the push search calls these for every pose it checks.
+
+#include <cmath>
+
+#include "common/geometry/angle.hpp"
+#include "common/geometry/polygon.hpp"
+#include "common/geometry/pose2.hpp"
+
+namespace ifar::interaction {
+
+/// `body` (body frame) as it lies in the world at `pose`.
+inline geometry::Polygon transformed(const geometry::Polygon& body, const geometry::Pose2& pose)
+{
+  geometry::Polygon world;
+  world.reserve(body.size());
+  for (const geometry::Point& vertex : body) {
+    world.push_back(pose.transform(vertex));
+  }
+  return world;
+}
+
+/// `vector` turned counter-clockwise by `angle` (radians).
+inline geometry::Vector rotate(const geometry::Vector& vector, double angle)
+{
+  return geometry::Vector(std::cos(angle) * vector.x() - std::sin(angle) * vector.y(),
+                          std::sin(angle) * vector.x() + std::cos(angle) * vector.y());
+}
+
+/// `pose` turned counter-clockwise by `angle` (radians) about the world point `centre`.
+inline geometry::Pose2 rotateAbout(const geometry::Pose2& pose, const geometry::Point& centre, double angle)
+{
+  const double cosine = std::cos(angle);
+  const double sine = std::sin(angle);
+  const geometry::Vector offset = pose.position() - centre;
+  return geometry::Pose2{centre.x() + cosine * offset.x() - sine * offset.y(),
+                         centre.y() + sine * offset.x() + cosine * offset.y(),
+                         geometry::wrapAngle(pose.heading + angle)};
+}
+
+}  // namespace ifar::interaction
