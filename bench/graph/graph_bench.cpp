@@ -1,5 +1,6 @@
 // Graph benchmarks: the AcrosstheCape prior map (build, queries, memory), global search on a tunnel-size
-// and a room-size graph, and search time against graph size. Numbers go to docs/benchmarks.md ("Graph").
+// and a room-size graph, and search time against graph size. How to run it: docs/benchmarks.md ("Micro
+// benchmarks").
 
 #include <sys/resource.h>
 

@@ -57,11 +57,11 @@ struct SearchSettings {
   double search_radius_m = 4.0;        ///< object centroid never leaves this disc around its start
   /// A waypoint pair the search within search_radius_m proves impossible (exhausted) is searched again
   /// within this radius; 0 = never. An object plugging a passage longer than search_radius_m can only be
-  /// pushed out of its far end (Willow's east-wing box, 6 m along a 1.3 m passage).
+  /// pushed out of its far end: inside the passage it closes the way on wherever it stands.
   double extended_search_radius_m = 0.0;
   /// A pair the searches above prove impossible (exhausted) is tried once more with one straight push per
-  /// reachable contact edge, up to this far (0 = never): an object filling a corridor can only be pushed
-  /// along it, out past the next junction (the tunnel's 3.6 m bars across 4 m tunnels, 40 m from it).
+  /// reachable contact edge, up to this far (0 = never): an object filling a corridor (a bar nearly as long
+  /// as the corridor is wide) can only be pushed along it, out past the next junction, tens of metres on.
   double corridor_push_length_m = 0.0;
   /// Set by corridorSearch() only: plan() pushes straight, and the way on counts as open where the vehicle
   /// behind the pushed object can leave the object's surroundings by a second way (the object may close

@@ -116,9 +116,9 @@ World generateOffice(std::uint64_t seed)
   builder.addGoal(goal);
 
   // Boxes that close doors: the fire door's is heavy for odd seeds and light for even ones, so any two
-  // consecutive seeds hold both cases (a coin left seeds 1-6 all heavy: no office of the bench suite had a
-  // corridor worth pushing through); room doors' alternate. The coin is still drawn so every seed's
-  // other boxes stay where they were.
+  // consecutive seeds hold both cases (a coin can leave a run of seeds all heavy, and then none of those
+  // offices has a corridor worth pushing through); room doors' alternate. The coin is still drawn so every
+  // seed's other boxes stay where they were.
   static_cast<void>(random.chance(0.5));
   builder.addObject(geometry::Point(fire_x, corridor_mid), 0.5, kFireDoor - 0.1, 0.0,
                     seed % 2 == 1 ? ObjectWeight::Heavy : ObjectWeight::Light, random);
