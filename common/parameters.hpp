@@ -218,6 +218,14 @@ class ParameterTable {
     return *this;
   }
 
+  /// Makes the key added last required, in a table whose keys are otherwise optional (a key with no
+  /// default that could be right, such as a drive's node id).
+  ParameterTable& required()
+  {
+    entries_.back().info.required = true;
+    return *this;
+  }
+
   /// Reads every key into `settings` (absent optional keys keep what `settings` holds); leaves the
   /// unknown-key check to the caller.
   void read(const ConfigNode& node, Settings& settings) const

@@ -42,7 +42,7 @@ class DaemonMain : public ::testing::Test {
       argv.push_back(argument.data());
     }
     return ifar::common::runDaemon(static_cast<int>(argv.size()), argv.data(),
-                                   {"daemon-main-test", "test daemon", ""},
+                                   {"daemon-main-test", "test daemon", "", {}},
                                    [this](ifar::common::DaemonContext& context) {
                                      context.config.rejectUnknownKeys();
                                      url_ = context.lcm_url;

@@ -223,19 +223,22 @@ TEST(ShippedConfig, Velodyne)
   EXPECT_EQ(velodyne.bad_packet_log_interval_s, 1.0);
 }
 
-// The lidar point filter, read by the planner's perception and the executive's obstacle points alike.
+// The lidar point filter, one home (vehicle.yaml lidar:), read by the planner's perception (as the Planner
+// completes its settings from its vehicle) and the executive's obstacle points (LocalObstacles takes the
+// vehicle) alike.
 TEST(ShippedConfig, LidarPointFilter)
 {
-  const auto& perception = shipped().planner.perception;
+  const common::LidarFilterSettings& lidar = shipped().vehicle.lidar;
+  EXPECT_EQ(lidar.ground_clearance_m, 0.15);
+  EXPECT_EQ(lidar.max_height_m, 1.2);
+  EXPECT_EQ(lidar.min_range_m, 0.4);
+  EXPECT_EQ(lidar.movable_reflectivity_threshold, 101);
+  const auto perception =
+      perception::withLidarFilter(shipped().planner.perception, shipped().planner.vehicle.lidar);
   EXPECT_EQ(perception.ground_clearance_m, 0.15);
   EXPECT_EQ(perception.vehicle_height_m, 1.2);
   EXPECT_EQ(perception.min_range_m, 0.4);
   EXPECT_EQ(perception.movable_reflectivity_threshold, 101.0F);
-  const auto& obstacles = shipped().obstacles;
-  EXPECT_EQ(obstacles.ground_clearance_m, 0.15);
-  EXPECT_EQ(obstacles.max_height_m, 1.2);
-  EXPECT_EQ(obstacles.min_range_m, 0.4);
-  EXPECT_EQ(obstacles.movable_reflectivity_threshold, 101);
 }
 
 }  // namespace
