@@ -39,7 +39,10 @@ std::string joinNames(const std::vector<std::string>& names, const std::string& 
 {
   std::string out;
   for (std::size_t index = 0; index < names.size(); ++index) {
-    out += (index == 0 ? "" : ", ") + before + names[index] + after;
+    out += index == 0 ? "" : ", ";
+    out += before;
+    out += names[index];
+    out += after;
   }
   return out;
 }
@@ -77,7 +80,7 @@ std::string rangeCell(const ParameterInfo& info)
   return info.range.describe();
 }
 
-std::string escapeCell(std::string text)
+std::string escapeCell(const std::string& text)
 {
   std::string out;
   for (const char character : text) {

@@ -33,6 +33,18 @@ constexpr int kExitArrived = 0;
 constexpr int kExitNotArrived = 1;
 constexpr int kExitBadInput = 2;
 
+/// --print-config: every file's effective settings on stdout.
+int printConfig(const std::string& config_dir)
+{
+  try {
+    std::cout << ifar::runner::runConfigYaml(config_dir) << std::flush;
+    return 0;
+  } catch (const ifar::common::ConfigError& error) {
+    std::cerr << "error: " << error.what() << "\n";
+    return kExitBadInput;
+  }
+}
+
 /// "X,Y" as a point; nullopt when it is not two numbers separated by a comma.
 std::optional<ifar::geometry::Point> parseGoal(const std::string& text)
 {
@@ -143,13 +155,7 @@ int main(int argc, char** argv)
     return *exit_code;
   }
   if (print_config) {
-    try {
-      std::cout << ifar::runner::runConfigYaml(config_dir) << std::flush;
-      return 0;
-    } catch (const ifar::common::ConfigError& error) {
-      std::cerr << "error: " << error.what() << "\n";
-      return kExitBadInput;
-    }
+    return printConfig(config_dir);
   }
   if (world_name.empty()) {
     std::cerr << "error: WORLD is required: a world file, a builtin or a generated kind\n";

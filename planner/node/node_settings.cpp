@@ -44,8 +44,8 @@ common::ParameterTable<NodeSettings> makeNodeParameters()
           .add("daemon.detector_max_age_s", &S::detector_max_age_s, "s", Range::positive(),
                "older DETECTED_OBJECTS outlines fall back to reflectivity")
           .add("daemon.arrival_radius_m", &S::arrival_radius_m, "m", Range::positive(),
-               "the vehicle this close to the goal has arrived and the planner stops routing; wider than the "
-               "executive's goal_tolerance_m, which decides where the vehicle stops")
+               "the vehicle this close to the goal has arrived: PLANNER_STATUS says so (the path is still "
+               "published); the executive's goal_tolerance_m decides where the vehicle stops")
           .add("daemon.prior_graph", &S::prior_graph, "", Range::any(),
                "a saved global graph (graph_file.hpp) to start from; \"\" = none")
           .add(

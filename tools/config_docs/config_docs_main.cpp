@@ -86,8 +86,9 @@ const char* const kSeparateOnPurpose = R"(## One home per fact
 - The CAN bus, the drives' node ids and the force sensor's frame id: can.yaml, read by both drivers and
   by the simulator (sim.yaml `can_config`; the headless runner reads can.yaml from its config directory).
 - Kept apart on purpose:
-  - planner.yaml `daemon.arrival_radius_m` (0.5) and executive.yaml `goal_tolerance_m` (0.3): the planner
-    stops routing a little before the executive stops the vehicle, so the last path is never empty.
+  - planner.yaml `daemon.arrival_radius_m` (0.5) and executive.yaml `goal_tolerance_m` (0.3): the first
+    is what PLANNER_STATUS reports as arrived (the planner keeps publishing the path), the second where
+    the executive stops the vehicle; the planner's report comes a little before the stop.
   - executive.yaml `obstacles.max_range_m` (15 m) and the lidar's range (sim.yaml `lidar.max_range_m`,
     100 m): the follower only looks a few metres round the vehicle; the planner uses the whole range.
   - planner.yaml `perception.inflation_radius_m` is half of vehicle.yaml `width_m`, and
