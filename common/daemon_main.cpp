@@ -24,11 +24,38 @@ std::string logLevelProblem(const std::string& level)
   return {};
 }
 
+/// --print-config: the common keys and the daemon's own, as YAML on stdout.
+int printConfig(const DaemonDescription& description, const ConfigNode& config)
+{
+  const DaemonKeys keys = readDaemonKeys(config);
+  std::string text =
+      "# ifar-" + description.name + ": effective configuration from " + config.sourceName() + "\n";
+  text += daemonKeyParameters().yaml(keys);
+  if (description.print_config) {
+    text += description.print_config(config);
+  }
+  config.rejectUnknownKeys();
+  std::cout << text << std::flush;
+  return 0;
+}
+
 }  // namespace
+
+const ParameterTable<DaemonKeys>& daemonKeyParameters()
+{
+  static const auto table =
+      ParameterTable<DaemonKeys>()
+          .add("log_level", &DaemonKeys::log_level, "", ParameterRange::any(),
+               "trace, debug, info, warn, error, critical or off (\"\": SPDLOG_LEVEL or info)")
+          .add("lcm_url", &DaemonKeys::lcm_url, "", ParameterRange::any(),
+               "LCM URL (\"\": LCM_DEFAULT_URL or LCM's default)");
+  return table;
+}
 
 DaemonKeys readDaemonKeys(const ConfigNode& config)
 {
-  DaemonKeys keys{config.optional<std::string>("log_level", ""), config.optional<std::string>("lcm_url", "")};
+  DaemonKeys keys;
+  daemonKeyParameters().read(config, keys);
   if (!keys.log_level.empty()) {
     if (const std::string problem = logLevelProblem(keys.log_level); !problem.empty()) {
       config.fail("log_level", problem);
@@ -46,7 +73,10 @@ int runDaemon(int argc, char** argv, const DaemonDescription& description,
   std::string log_level;
   std::string log_directory = "logs";
   std::string lcm_url;
+  bool print_config = false;
   app.add_option("--config", config_path, "YAML configuration file")->capture_default_str();
+  app.add_flag("--print-config", print_config,
+               "print the effective configuration (YAML, each key's meaning as a comment) and exit");
   app.add_option("--log-level", log_level,
                  "trace, debug, info, warn, error, critical or off (overrides SPDLOG_LEVEL and the config)");
   app.add_option("--log-dir", log_directory, "folder for the rotating log file (\"\" = console only)")
@@ -63,6 +93,9 @@ int runDaemon(int argc, char** argv, const DaemonDescription& description,
   try {
     ConfigNode config = config_path.empty() ? ConfigNode::loadString("", "(no configuration file)")
                                             : ConfigNode::loadFile(config_path);
+    if (print_config) {
+      return printConfig(description, config);
+    }
     // Each source of a level checked on its own, so the message names where a bad one came from (the
     // config's even when another source overrides it: the file stays wrong). The config's lcm_url is read
     // even when --lcm-url overrides it, so the daemon's unknown-key check accepts the key.

@@ -1,5 +1,6 @@
 #pragma once
-// The start-up every daemon shares: --help, --config FILE, --log-level LEVEL, --lcm-url URL; the config
+// The start-up every daemon shares: --help, --config FILE, --log-level LEVEL, --lcm-url URL,
+// --print-config (the effective configuration as YAML with each key's meaning, then exit 0); the config
 // loaded strictly; the named logger made; bad config reported as "error: <file>: key '<k>': ..." and
 // exit code 2; any escaping exception logged and exit code 1.
 //
@@ -22,6 +23,7 @@
 #include <CLI/CLI.hpp>
 
 #include "common/config.hpp"
+#include "common/parameters.hpp"
 
 namespace ifar::common {
 
@@ -29,6 +31,10 @@ struct DaemonDescription {
   std::string name;            // logger and process name, e.g. "planner"
   std::string summary;         // one line for --help
   std::string default_config;  // path relative to the working directory; "" = config optional
+  /// For --print-config: loads the daemon's settings from its config (with every check the daemon makes)
+  /// and returns them as YAML (ParameterTable::dump); log_level and lcm_url are added before it. Empty:
+  /// only those two.
+  std::function<std::string(const ConfigNode& config)> print_config;
 };
 
 struct DaemonContext {
@@ -42,6 +48,9 @@ struct DaemonKeys {
   std::string log_level;
   std::string lcm_url;
 };
+
+/// The keys every daemon's config may hold at its top level.
+const ParameterTable<DaemonKeys>& daemonKeyParameters();
 
 /// Reads log_level and lcm_url (so the daemon's unknown-key check accepts them); throws ConfigError naming
 /// the file and the key for a log level that is not one. The headless runner reads the daemons' files

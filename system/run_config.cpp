@@ -44,8 +44,6 @@ void loadSimulator(const std::string& config_directory, RunRequest& request)
   const common::ConfigNode root = loadFrom(config_directory, "sim.yaml");
   common::readDaemonKeys(root);
   request.sim = sim::loadSimNodeSettings(root);
-  root.child("bus");           // required, as by ifar-sim ...
-  root.acceptAllUnder("bus");  // ... but the simulated bus is in process
   root.rejectUnknownKeys();
 }
 
@@ -54,10 +52,13 @@ void loadCan(const std::string& config_directory, RunRequest& request)
   const common::ConfigNode root = loadFrom(config_directory, "can.yaml");
   common::readDaemonKeys(root);
   request.can_channel = can::loadBusSettings(root).lcm_channel;
-  root.optional<std::string>("raw_channel", "");
-  root.optional<std::string>("status_channel", "");
+  can::BusChannels channels;  // read and unused: the simulated bus is in process
+  can::busChannelParameters().read(root, channels);
   request.force_sensor = force_sensor::loadForceSensorConfig(root);
   request.motor = motor::loadMotorConfig(root, request.vehicle);
+  // The simulator's emulated drives and force sensor answer to the ids the drivers use: one home, can.yaml
+  // (the `can_config` path inside sim.yaml names it for the daemon).
+  request.sim.can_nodes = sim::loadCanNodes(root, request.sim.can_nodes);
   root.rejectUnknownKeys();
 }
 
@@ -69,7 +70,46 @@ void loadVelodyne(const std::string& config_directory, RunRequest& request)
   root.rejectUnknownKeys();
 }
 
+/// One file's document of the dump: its daemon keys and `body`.
+std::string document(const std::string& directory, const std::string& file, const std::string& body)
+{
+  const common::ConfigNode root = loadFrom(directory, file);
+  return "--- # " + root.sourceName() + "\n" +
+         common::daemonKeyParameters().yaml(common::readDaemonKeys(root)) + body;
+}
+
+std::string canYaml(const std::string& directory, const RunRequest& request)
+{
+  const common::ConfigNode root = loadFrom(directory, "can.yaml");
+  common::ConfigDump dump;
+  can::busParameters().dump(can::loadBusSettings(root), "bus", dump);
+  can::BusChannels channels;
+  can::busChannelParameters().read(root, channels);
+  can::busChannelParameters().dump(channels, "", dump);
+  force_sensor::forceSensorParameters().dump(request.force_sensor, "force_sensor", dump);
+  motor::motorParameters().dump(motor::readMotorSection(root), "motor", dump);
+  return dump.yaml();
+}
+
 }  // namespace
+
+std::string runConfigYaml(const std::string& config_directory)
+{
+  const RunRequest request = loadRunSettings(config_directory);
+  std::string text = "# ifar run: effective configuration from " + config_directory + "\n";
+  text += "--- # " + (std::filesystem::path(config_directory) / "vehicle.yaml").string() + "\n" +
+          common::vehicleParameters().yaml(request.vehicle);
+  planner::PlannerConfig planner{request.planner, request.planner_node};
+  text += document(config_directory, "planner.yaml", planner::plannerConfigYaml(planner));
+  common::ConfigDump executive;
+  executive::executiveParameters().dump(request.executive, "", executive);
+  executive::obstacleParameters().dump(request.obstacles, "obstacles", executive);
+  text += document(config_directory, "executive.yaml", executive.yaml());
+  text += document(config_directory, "sim.yaml", sim::simNodeParameters().yaml(request.sim));
+  text += document(config_directory, "can.yaml", canYaml(config_directory, request));
+  text += document(config_directory, "velodyne.yaml", velodyne::driverParameters().yaml(request.velodyne));
+  return text;
+}
 
 RunRequest loadRunSettings(const std::string& config_directory)
 {

@@ -16,4 +16,8 @@ namespace ifar::runner {
 /// Throws common::ConfigError naming the file and key.
 RunRequest loadRunSettings(const std::string& config_directory);
 
+/// The effective settings of every file in `config_directory` as a YAML stream, one document per file,
+/// each key's meaning as a comment (ifar run --print-config). Throws as loadRunSettings does.
+std::string runConfigYaml(const std::string& config_directory);
+
 }  // namespace ifar::runner

@@ -33,6 +33,18 @@ constexpr int kExitArrived = 0;
 constexpr int kExitNotArrived = 1;
 constexpr int kExitBadInput = 2;
 
+/// --print-config: every file's effective settings on stdout.
+int printConfig(const std::string& config_dir)
+{
+  try {
+    std::cout << ifar::runner::runConfigYaml(config_dir) << std::flush;
+    return 0;
+  } catch (const ifar::common::ConfigError& error) {
+    std::cerr << "error: " << error.what() << "\n";
+    return kExitBadInput;
+  }
+}
+
 /// "X,Y" as a point; nullopt when it is not two numbers separated by a comma.
 std::optional<ifar::geometry::Point> parseGoal(const std::string& text)
 {
@@ -104,8 +116,7 @@ int main(int argc, char** argv)
   std::string config_dir = "config";
   app.add_option("world", world_name,
                  "World file (YAML, docs/worlds.md), or a builtin (room, push_light, push_heavy, tunnel) or "
-                 "generated kind (room, room_objects, office, tunnel, demo_room) when no such file exists")
-      ->required();
+                 "generated kind (room, room_objects, office, tunnel, demo_room) when no such file exists");
   app.add_option("--goal", goal_text, "Goal as X,Y in metres (default: the world's first goal)");
   app.add_option("--max-time", max_time_s, "Simulated seconds before the run counts as failed")
       ->capture_default_str();
@@ -135,8 +146,20 @@ int main(int argc, char** argv)
   app.add_option("--config-dir", config_dir,
                  "Directory with vehicle.yaml, planner.yaml, executive.yaml and sim.yaml")
       ->capture_default_str();
+  bool print_config = false;
+  app.add_flag(
+      "--print-config", print_config,
+      "Print the effective configuration of every file in --config-dir (YAML, each key's meaning as a "
+      "comment) and exit");
   if (const auto exit_code = ifar::common::parseCommandLine(app, argc, argv)) {
     return *exit_code;
+  }
+  if (print_config) {
+    return printConfig(config_dir);
+  }
+  if (world_name.empty()) {
+    std::cerr << "error: WORLD is required: a world file, a builtin or a generated kind\n";
+    return kExitBadInput;
   }
 
   ifar::runner::RunRequest request;

@@ -19,24 +19,45 @@ const char* toString(BusKind kind)
   return "unknown";
 }
 
+const common::ParameterTable<BusSettings>& busParameters()
+{
+  using S = BusSettings;
+  using Range = common::ParameterRange;
+  static const auto table =
+      common::ParameterTable<S>()
+          .choice(
+              "kind", &S::kind,
+              {{"socketcan", BusKind::kSocketCan}, {"lcm", BusKind::kLcm}, {"candump", BusKind::kCandump}},
+              "socketcan: a vehicle's bus; lcm: the bridge (can_frame_t on lcm_channel); candump: replay a "
+              "log")
+          .required()
+          .add("interface", &S::interface, "", Range::any(), "socketcan: the interface")
+          .add("lcm_channel", &S::lcm_channel, "", Range::any(),
+               "lcm: channel carrying the bus as can_frame_t")
+          .add("candump_input", &S::candump_input, "", Range::any(),
+               "candump: log to replay (candump -l format)")
+          .add("candump_output", &S::candump_output, "", Range::any(),
+               "candump: log to append sent frames to");
+  return table;
+}
+
+const common::ParameterTable<BusChannels>& busChannelParameters()
+{
+  using S = BusChannels;
+  using Range = common::ParameterRange;
+  static const auto table =
+      common::ParameterTable<S>()
+          .add("raw_channel", &S::raw_channel, "", Range::any(),
+               "where a socketcan/candump daemon republishes received frames (can_frame_t)")
+          .add("status_channel", &S::status_channel, "", Range::any(), "can_bus_status_t, once a second");
+  return table;
+}
+
 BusSettings loadBusSettings(const common::ConfigNode& root)
 {
   const common::ConfigNode node = root.child("bus");
   BusSettings settings;
-  const auto kind = node.required<std::string>("kind");
-  if (kind == "socketcan") {
-    settings.kind = BusKind::kSocketCan;
-  } else if (kind == "lcm") {
-    settings.kind = BusKind::kLcm;
-  } else if (kind == "candump") {
-    settings.kind = BusKind::kCandump;
-  } else {
-    node.fail("kind", "'" + kind + "' is not one of socketcan, lcm, candump");
-  }
-  settings.interface = node.optional<std::string>("interface", settings.interface);
-  settings.lcm_channel = node.optional<std::string>("lcm_channel", settings.lcm_channel);
-  settings.candump_input = node.optional<std::string>("candump_input", "");
-  settings.candump_output = node.optional<std::string>("candump_output", "");
+  busParameters().read(node, settings);
   if (settings.kind == BusKind::kCandump && settings.candump_input.empty() &&
       settings.candump_output.empty()) {
     node.fail("candump_input", "kind candump needs candump_input or candump_output");

@@ -14,6 +14,7 @@
 #include <lcm/lcm-cpp.hpp>
 
 #include "common/config.hpp"
+#include "common/parameters.hpp"
 #include "drivers/can/can_bus.hpp"
 
 namespace ifar::can {
@@ -29,8 +30,18 @@ struct BusSettings {
   std::string candump_output;
 };
 
+/// can.yaml `bus:` keys: the kind required, the rest optional.
+const common::ParameterTable<BusSettings>& busParameters();
+
 /// Reads the `bus` child of `root`. Throws common::ConfigError naming the key for a bad kind.
 BusSettings loadBusSettings(const common::ConfigNode& root);
+
+/// can.yaml's top-level channels: where a socketcan or candump daemon republishes the bus.
+struct BusChannels {
+  std::string raw_channel = "CAN_VEHICLE";
+  std::string status_channel = "CAN_STATUS";
+};
+const common::ParameterTable<BusChannels>& busChannelParameters();
 
 struct OpenBusResult {
   std::unique_ptr<CanBus> bus;  // null on failure

@@ -34,8 +34,10 @@ DriverSettings loadSettings(const ifar::common::ConfigNode& root)
 {
   DriverSettings settings;
   settings.bus = ifar::can::loadBusSettings(root);
-  settings.raw_channel = root.optional<std::string>("raw_channel", "CAN_VEHICLE");
-  settings.status_channel = root.optional<std::string>("status_channel", "CAN_STATUS");
+  ifar::can::BusChannels channels;
+  ifar::can::busChannelParameters().read(root, channels);
+  settings.raw_channel = channels.raw_channel;
+  settings.status_channel = channels.status_channel;
   const ifar::force_sensor::ForceSensorConfig sensor = ifar::force_sensor::loadForceSensorConfig(root);
   settings.monitor = sensor.monitor;
   settings.force_channel = sensor.channel;
@@ -45,6 +47,24 @@ DriverSettings loadSettings(const ifar::common::ConfigNode& root)
     ifar::motor::loadMotorSection(root);
   }
   return settings;
+}
+
+/// --print-config: the whole can.yaml this driver checks, as loaded.
+std::string printedConfig(const ifar::common::ConfigNode& root)
+{
+  const DriverSettings settings = loadSettings(root);
+  ifar::common::ConfigDump dump;
+  ifar::can::busParameters().dump(settings.bus, "bus", dump);
+  ifar::can::BusChannels channels;
+  channels.raw_channel = settings.raw_channel;
+  channels.status_channel = settings.status_channel;
+  ifar::can::busChannelParameters().dump(channels, "", dump);
+  ifar::force_sensor::forceSensorParameters().dump(ifar::force_sensor::loadForceSensorConfig(root),
+                                                   "force_sensor", dump);
+  if (root.has("motor")) {
+    ifar::motor::motorParameters().dump(ifar::motor::readMotorSection(root), "motor", dump);
+  }
+  return dump.yaml();
 }
 
 std::int8_t toLcmState(ifar::can::BusState state)
@@ -181,6 +201,7 @@ int run(ifar::common::DaemonContext& context)
 int main(int argc, char** argv)
 {
   return ifar::common::runDaemon(
-      argc, argv, {"force-driver", "Bumper force sensor driver: CAN frames to force_t", "config/can.yaml"},
+      argc, argv,
+      {"force-driver", "Bumper force sensor driver: CAN frames to force_t", "config/can.yaml", printedConfig},
       run);
 }

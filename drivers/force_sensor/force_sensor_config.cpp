@@ -4,25 +4,34 @@
 
 namespace ifar::force_sensor {
 
+const common::ParameterTable<ForceSensorConfig>& forceSensorParameters()
+{
+  using S = ForceSensorConfig;
+  using Range = common::ParameterRange;
+  constexpr std::int64_t kMicrosecondsPerMillisecond = 1000;
+  static const auto table =
+      common::ParameterTable<S>()
+          .add(
+              "frame_id", [](auto& s) -> auto& { return s.monitor.frame_id; }, "", Range::between(0, 0x7FF),
+              "standard CAN id of the sensor's frames (0x190 = 400)")
+          .required()
+          .converted<std::int64_t>(
+              "silence_timeout_ms", "ms", Range::atLeast(1), "no valid frame for this long = silent sensor",
+              [](const S& s) { return s.monitor.silence_timeout_us / kMicrosecondsPerMillisecond; },
+              [](S& s, std::int64_t milliseconds) {
+                s.monitor.silence_timeout_us = milliseconds * kMicrosecondsPerMillisecond;
+              })
+          .add(
+              "stuck_counter_frames", [](auto& s) -> auto& { return s.monitor.stuck_counter_frames; }, "",
+              Range::atLeast(2), "this many frames with one counter value = hung sensor")
+          .add("channel", &S::channel, "", Range::nonEmpty(), "force_t");
+  return table;
+}
+
 ForceSensorConfig loadForceSensorConfig(const common::ConfigNode& root)
 {
   ForceSensorConfig config;
-  const auto sensor = root.child("force_sensor");
-  const int frame_id = sensor.required<int>("frame_id");
-  if (frame_id < 0 || frame_id > 0x7FF) {
-    sensor.fail("frame_id", "must be a standard id, 0..2047 (0x7FF)");
-  }
-  config.monitor.frame_id = static_cast<std::uint32_t>(frame_id);
-  const int silence_ms = sensor.optional<int>("silence_timeout_ms", 50);
-  if (silence_ms <= 0) {
-    sensor.fail("silence_timeout_ms", "must be positive");
-  }
-  config.monitor.silence_timeout_us = silence_ms * 1000LL;
-  config.monitor.stuck_counter_frames = sensor.optional<int>("stuck_counter_frames", 3);
-  if (config.monitor.stuck_counter_frames < 2) {
-    sensor.fail("stuck_counter_frames", "must be at least 2");
-  }
-  config.channel = sensor.optional<std::string>("channel", config.channel);
+  forceSensorParameters().read(root.child("force_sensor"), config);
   return config;
 }
 

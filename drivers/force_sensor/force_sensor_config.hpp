@@ -12,6 +12,7 @@
 #include <string>
 
 #include "common/config.hpp"
+#include "common/parameters.hpp"
 #include "drivers/force_sensor/force_monitor.hpp"
 
 namespace ifar::force_sensor {
@@ -20,6 +21,9 @@ struct ForceSensorConfig {
   ForceMonitorSettings monitor;
   std::string channel = "FORCE";  // force_t
 };
+
+/// can.yaml `force_sensor:` keys: the frame id required, the rest optional.
+const common::ParameterTable<ForceSensorConfig>& forceSensorParameters();
 
 /// Reads root.force_sensor. Throws common::ConfigError naming the key for a frame id outside 0..0x7FF, a
 /// non-positive silence timeout or fewer than 2 stuck-counter frames.

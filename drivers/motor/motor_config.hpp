@@ -24,6 +24,7 @@
 #include <string>
 
 #include "common/config.hpp"
+#include "common/parameters.hpp"
 #include "common/vehicle.hpp"
 #include "drivers/motor/differential_drive.hpp"
 
@@ -39,6 +40,31 @@ struct MotorConfig {
   std::uint16_t drive_rpdo_timeout_ms = 100;          // 0x1400:05 in each drive; 0 = not watched
   std::int64_t command_future_tolerance_us = 50'000;  // a command stamped further ahead is refused
 };
+
+/// can.yaml `motor:` as the file writes it (node ids, milliseconds); loadMotorSection makes a MotorConfig
+/// of it.
+struct MotorSection {
+  int left_node_id = 1;
+  int right_node_id = 2;
+  int master_node_id = 127;
+  int master_heartbeat_ms = 50;
+  int cycle_ms = 10;
+  int heartbeat_timeout_ms = 300;
+  int command_timeout_ms = 150;
+  int command_future_ms = 50;
+  int stop_timeout_ms = 1000;
+  int sdo_timeout_ms = 50;
+  int sdo_attempts = 3;
+  int drive_heartbeat_timeout_ms = 150;
+  int drive_rpdo_timeout_ms = 100;
+  std::string status_channel = "MOTOR_STATUS";
+};
+
+/// can.yaml `motor:` keys: the node ids required, the rest optional.
+const common::ParameterTable<MotorSection>& motorParameters();
+
+/// root.motor's keys as written, unchecked beyond their ranges (for --print-config, after a load).
+MotorSection readMotorSection(const common::ConfigNode& root);
 
 /// Reads root.motor alone, without the wheel geometry. Throws as loadMotorConfig does; ifar-force-driver
 /// checks the motor section of the shared can.yaml with it, so a bad file stops both daemons alike.

@@ -28,6 +28,23 @@ namespace {
 constexpr double kStatusPeriodS = 0.1;
 constexpr int kShutdownCycles = 20;  // cycles of zero velocity and disable frames sent on exit
 
+/// --print-config: the whole can.yaml this driver checks, as loaded (the wheel geometry is the vehicle's).
+std::string printedConfig(const ifar::common::ConfigNode& root)
+{
+  ifar::common::ConfigDump dump;
+  ifar::can::busParameters().dump(ifar::can::loadBusSettings(root), "bus", dump);
+  ifar::can::BusChannels channels;
+  ifar::can::busChannelParameters().read(root, channels);
+  ifar::can::busChannelParameters().dump(channels, "", dump);
+  if (root.has("force_sensor")) {
+    ifar::force_sensor::forceSensorParameters().dump(ifar::force_sensor::loadForceSensorConfig(root),
+                                                     "force_sensor", dump);
+  }
+  ifar::motor::loadMotorSection(root);
+  ifar::motor::motorParameters().dump(ifar::motor::readMotorSection(root), "motor", dump);
+  return dump.yaml();
+}
+
 int run(ifar::common::DaemonContext& context, const std::string& vehicle_path,
         const std::string& command_channel)
 {
@@ -42,8 +59,8 @@ int run(ifar::common::DaemonContext& context, const std::string& vehicle_path,
   if (context.config.has("force_sensor")) {
     ifar::force_sensor::loadForceSensorConfig(context.config);
   }
-  context.config.optional<std::string>("raw_channel", "");
-  context.config.optional<std::string>("status_channel", "");
+  ifar::can::BusChannels channels;  // the force driver's
+  ifar::can::busChannelParameters().read(context.config, channels);
   if (context.config.has("motor")) {
     // Checked before the vehicle file is read, so a bad can.yaml is reported as such.
     context.config.child("motor");
@@ -136,7 +153,7 @@ int main(int argc, char** argv)
   return ifar::common::runDaemon(
       argc, argv,
       {"motor-driver", "Wheel drives over CANopen CiA 402: VELOCITY_CMD in, MOTOR_STATUS out",
-       "config/can.yaml"},
+       "config/can.yaml", printedConfig},
       [&](ifar::common::DaemonContext& context) { return run(context, vehicle_path, command_channel); },
       [&](CLI::App& app) {
         app.add_option("--vehicle", vehicle_path,

@@ -185,7 +185,10 @@ int main(int argc, char** argv)
   return common::runDaemon(
       argc, argv,
       {"velodyne-driver", "VLP-16 driver: data packets from UDP or a pcap file onto LCM (VELODYNE_PACKET)",
-       "config/velodyne.yaml"},
+       "config/velodyne.yaml",
+       [](const common::ConfigNode& config) {
+         return velodyne::driverParameters().yaml(velodyne::loadDriverSettings(config));
+       }},
       [&replay](common::DaemonContext& context) {
         const velodyne::DriverSettings settings = velodyne::loadDriverSettings(context.config);
         context.config.rejectUnknownKeys();

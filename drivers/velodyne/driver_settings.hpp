@@ -5,6 +5,7 @@
 #include <string>
 
 #include "common/config.hpp"
+#include "common/parameters.hpp"
 
 namespace ifar::velodyne {
 
@@ -20,6 +21,9 @@ struct DriverSettings {
   double status_period_s = 1.0;
   double bad_packet_log_interval_s = 1.0;  // at most one warning per interval; the rest are counted
 };
+
+/// velodyne.yaml's keys, every one optional.
+const common::ParameterTable<DriverSettings>& driverParameters();
 
 /// Reads every key of the driver's section (all optional, defaults above). Throws ConfigError naming the
 /// key for a wrong type or a value out of range (ports 1..65535, positive periods).

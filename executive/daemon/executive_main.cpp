@@ -69,7 +69,15 @@ int main(int argc, char** argv)
   return ifar::common::runDaemon(
       argc, argv,
       {"executive", "Executes GLOBAL_PATH: follows, pushes, adapts from touch, stops on stale input",
-       "config/executive.yaml"},
+       "config/executive.yaml",
+       [](const ifar::common::ConfigNode& config) {
+         const auto obstacles = ifar::executive::loadObstacleSettings(config.child("obstacles"));
+         ifar::common::ConfigDump dump;
+         ifar::executive::executiveParameters().dump(ifar::executive::loadExecutiveSettings(config), "",
+                                                     dump);
+         ifar::executive::obstacleParameters().dump(obstacles, "obstacles", dump);
+         return dump.yaml();
+       }},
       [&vehicle_path](ifar::common::DaemonContext& context) { return runExecutive(context, vehicle_path); },
       [&vehicle_path](CLI::App& app) {
         app.add_option("--vehicle", vehicle_path,

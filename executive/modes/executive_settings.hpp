@@ -2,6 +2,7 @@
 // Everything the executive is tuned by, from config/executive.yaml, plus the vehicle's outline.
 
 #include "common/config.hpp"
+#include "common/parameters.hpp"
 #include "common/vehicle.hpp"
 #include "executive/affordance/tactile_monitor.hpp"
 #include "executive/doorway/doorway.hpp"
@@ -118,6 +119,9 @@ struct ExecutiveSettings {
   TactileSettings tactile;
   PushedObjectSettings pushed_object;
 };
+
+/// executive.yaml's keys but the `obstacles:` section's, every one required.
+const common::ParameterTable<ExecutiveSettings>& executiveParameters();
 
 /// Reads every key of executive.yaml (all required; numbers must be positive unless noted) and rejects
 /// unknown ones. Throws common::ConfigError naming the key. The `obstacles:` section belongs to

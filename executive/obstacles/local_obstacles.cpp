@@ -24,6 +24,7 @@ LocalObstacles::LocalObstacles(const ObstacleSettings& settings, const common::V
     : settings_(settings),
       lidar_x_m_(vehicle.lidar_x_m),
       lidar_height_m_(vehicle.lidar_height_m),
+      filter_(vehicle.lidar),
       slots_(static_cast<std::size_t>(std::ceil(std::max(settings.keep_s, 0.0) * kMaxPacketsPerSecond)) +
              kExtraSlots)
 {
@@ -68,7 +69,7 @@ bool LocalObstacles::addPacket(common::ByteView payload, std::int64_t receive_ut
                              pose_->heading + pose_rate_.heading * ahead_s};
   const double cos_heading = std::cos(pose.heading);
   const double sin_heading = std::sin(pose.heading);
-  const auto min_range = static_cast<float>(settings_.min_range_m);
+  const auto min_range = static_cast<float>(filter_.min_range_m);
   const auto max_range = static_cast<float>(settings_.max_range_m);
   for (const velodyne::Point& point : decoded_) {
     if (point.distance < min_range || point.distance > max_range) {
@@ -76,7 +77,7 @@ bool LocalObstacles::addPacket(common::ByteView payload, std::int64_t receive_ut
     }
     // The lidar's axes are the vehicle's (lidarMount): only its offset ahead and its height differ.
     const double height = point.z + lidar_height_m_;
-    if (height < settings_.ground_clearance_m || height > settings_.max_height_m) {
+    if (height < filter_.ground_clearance_m || height > filter_.max_height_m) {
       continue;
     }
     const double forward = point.x + lidar_x_m_;
@@ -84,7 +85,7 @@ bool LocalObstacles::addPacket(common::ByteView payload, std::int64_t receive_ut
     StoredPoint stored;
     stored.position = geometry::Point(pose.x + cos_heading * forward - sin_heading * left,
                                       pose.y + sin_heading * forward + cos_heading * left);
-    stored.movable = point.reflectivity >= settings_.movable_reflectivity_threshold;
+    stored.movable = point.reflectivity >= filter_.movable_reflectivity_threshold;
     slot.points.push_back(stored);
   }
   newest_packet_utime_ = std::max(newest_packet_utime_, receive_utime);

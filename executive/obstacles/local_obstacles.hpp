@@ -13,20 +13,18 @@
 #include "common/config.hpp"
 #include "common/geometry/point.hpp"
 #include "common/geometry/pose2.hpp"
+#include "common/parameters.hpp"
 #include "common/span.hpp"
 #include "common/vehicle.hpp"
 #include "drivers/velodyne/point.hpp"
 
 namespace ifar::executive {
 
-/// From executive.yaml `obstacles:` section (loadObstacleSettings).
+/// From executive.yaml `obstacles:` section (loadObstacleSettings). Which returns are obstacles (heights,
+/// least range, movable reflectivity) is the vehicle's lidar filter (vehicle.yaml `lidar:`).
 struct ObstacleSettings {
-  double ground_clearance_m = 0.15;  // world z below this is ground (flat ground assumed)
-  double max_height_m = 1.2;         // world z above this is overhang the vehicle passes under
-  double min_range_m = 0.4;          // closer returns hit the vehicle itself
-  double max_range_m = 15.0;         // farther returns are ignored (sparse, irrelevant for the follower)
-  double keep_s = 0.15;              // points older than this are dropped
-  int movable_reflectivity_threshold = 101;  // reflectivity >= this marks a movable (retro-tagged) return
+  double max_range_m = 15.0;  // farther returns are ignored (sparse, irrelevant for the follower)
+  double keep_s = 0.15;       // points older than this are dropped
   /// points() gives one point (the newest) per square cell of this size: the follower's clearance
   /// checks do not need the ~20,000 returns of 0.15 s, most of them on the same wall columns. 0: all.
   double cell_m = 0.05;
@@ -36,6 +34,9 @@ struct ObstacleSettings {
 /// Reads the `obstacles:` section (pass root.child("obstacles")): every key required, ranges checked,
 /// unknown keys under it rejected.
 ObstacleSettings loadObstacleSettings(const common::ConfigNode& node);
+
+/// executive.yaml `obstacles:` keys, every one required.
+const common::ParameterTable<ObstacleSettings>& obstacleParameters();
 
 class LocalObstacles {
  public:
@@ -87,6 +88,7 @@ class LocalObstacles {
   ObstacleSettings settings_;
   double lidar_x_m_ = 0.0;
   double lidar_height_m_ = 0.0;
+  common::LidarFilterSettings filter_;
   std::optional<geometry::Pose2> pose_;
   std::int64_t pose_utime_ = 0;
   geometry::Pose2 pose_rate_;  // per second: x, y and heading change between the last two poses

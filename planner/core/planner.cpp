@@ -62,6 +62,8 @@ PlannerSettings completed(PlannerSettings settings)
 {
   // The pusher is the vehicle: always derived from it, whatever the caller left in the struct.
   settings.interaction.pusher = interaction::PusherSettings::fromVehicle(settings.vehicle);
+  // So is the lidar: which returns are obstacles is the sensor's and its mount's (vehicle.yaml lidar:).
+  settings.perception = perception::withLidarFilter(settings.perception, settings.vehicle.lidar);
   return settings;
 }
 

@@ -37,7 +37,7 @@ namespace ifar::planner {
 struct PlannerSettings {
   perception::PerceptionSettings perception;
   graph::GraphSettings graph;
-  common::VehicleSettings vehicle;               // the lidar mount comes from here
+  common::VehicleSettings vehicle;               // the lidar mount and point filter come from here
   double arrival_radius_m = 0.5;                 // the vehicle this close to the goal has arrived
   interaction::InteractionSettings interaction;  // from planner.yaml `interaction:` section
   bool interaction_enabled = true;               // false = "FAR mode": no interaction edges at all

@@ -57,10 +57,14 @@ int runPlanner(common::DaemonContext& context)
 
 int main(int argc, char** argv)
 {
-  return ifar::common::runDaemon(argc, argv,
-                                 {"planner",
-                                  "DV-graph planner: VELODYNE_PACKET, POSE, GOAL in; DV_GRAPH, "
-                                  "GLOBAL_PATH, PLANNER_STATUS out",
-                                  "config/planner.yaml"},
-                                 ifar::planner::runPlanner);
+  return ifar::common::runDaemon(
+      argc, argv,
+      {"planner",
+       "DV-graph planner: VELODYNE_PACKET, POSE, GOAL in; DV_GRAPH, "
+       "GLOBAL_PATH, PLANNER_STATUS out",
+       "config/planner.yaml",
+       [](const ifar::common::ConfigNode& config) {
+         return ifar::planner::plannerConfigYaml(ifar::planner::loadPlannerConfig(config));
+       }},
+      ifar::planner::runPlanner);
 }

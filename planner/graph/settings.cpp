@@ -1,50 +1,39 @@
 #include "planner/graph/settings.hpp"
 
-#include <cmath>
-
 namespace ifar::graph {
+
+const common::ParameterTable<GraphSettings>& graphParameters()
+{
+  using S = GraphSettings;
+  using Range = common::ParameterRange;
+  static const auto table =
+      common::ParameterTable<S>()
+          .add("association_distance_m", &S::association_distance_m, "m", Range::positive(),
+               "a local vertex this close to a global one of the same kind is it")
+          .add("votes", &S::votes, "", Range::atLeast(1),
+               "consecutive frames unseen while in view before a vertex is removed")
+          .add("view_radius_m", &S::view_radius_m, "m", Range::positive(),
+               "around the vehicle: vertices inside count as in view for voting")
+          .add("bucket_size_m", &S::bucket_size_m, "m", Range::nonNegative(),
+               "visibility index bucket side; 0 = chosen from the edge lengths")
+          .add("route_preference", &S::route_preference, "", Range::between(0.0, 0.5),
+               "experimental, 0 = off: the previous route's edges cost this fraction less, so a new route "
+               "must "
+               "be clearly shorter to replace it")
+          .add("route_preference_cap_m", &S::route_preference_cap_m, "m", Range::nonNegative(),
+               "... and the whole route at most this many metres less (0 = no cap)")
+          .add("unseen_cost", &S::unseen_cost, "", Range::between(0.0, 10.0),
+               "experimental, 0 = off: each metre of a way through space no scan has looked at costs this "
+               "much "
+               "more")
+          .add("seen_range_m", &S::seen_range_m, "m", Range::interval(0.0, false, 200.0, true),
+               "a scan looks this far, in sight of the vehicle, for unseen_cost");
+  return table;
+}
 
 GraphSettings loadGraphSettings(const common::ConfigNode& node)
 {
-  GraphSettings settings;
-  settings.association_distance_m =
-      node.optional<double>("association_distance_m", settings.association_distance_m);
-  settings.votes = node.optional<int>("votes", settings.votes);
-  settings.view_radius_m = node.optional<double>("view_radius_m", settings.view_radius_m);
-  settings.bucket_size_m = node.optional<double>("bucket_size_m", settings.bucket_size_m);
-  settings.route_preference = node.optional<double>("route_preference", settings.route_preference);
-  settings.route_preference_cap_m =
-      node.optional<double>("route_preference_cap_m", settings.route_preference_cap_m);
-  settings.unseen_cost = node.optional<double>("unseen_cost", settings.unseen_cost);
-  settings.seen_range_m = node.optional<double>("seen_range_m", settings.seen_range_m);
-  if (!(std::isfinite(settings.association_distance_m) && settings.association_distance_m > 0.0)) {
-    node.fail("association_distance_m", "must be a positive number of metres");
-  }
-  if (settings.votes < 1) {
-    node.fail("votes", "must be at least 1");
-  }
-  if (!(std::isfinite(settings.view_radius_m) && settings.view_radius_m > 0.0)) {
-    node.fail("view_radius_m", "must be a positive number of metres");
-  }
-  if (!(std::isfinite(settings.bucket_size_m) && settings.bucket_size_m >= 0.0)) {
-    node.fail("bucket_size_m", "must be 0 (automatic) or a positive number of metres");
-  }
-  if (!(std::isfinite(settings.route_preference) && settings.route_preference >= 0.0 &&
-        settings.route_preference <= 0.5)) {
-    node.fail("route_preference", "must be a fraction from 0 (none) to 0.5");
-  }
-  if (!(std::isfinite(settings.route_preference_cap_m) && settings.route_preference_cap_m >= 0.0)) {
-    node.fail("route_preference_cap_m", "must be 0 (no cap) or a positive number of metres");
-  }
-  if (!(std::isfinite(settings.unseen_cost) && settings.unseen_cost >= 0.0 && settings.unseen_cost <= 10.0)) {
-    node.fail("unseen_cost", "must be 0 (off) or a positive factor up to 10");
-  }
-  if (!(std::isfinite(settings.seen_range_m) && settings.seen_range_m > 0.0 &&
-        settings.seen_range_m <= 200.0)) {
-    node.fail("seen_range_m", "must be a positive number of metres up to 200");
-  }
-  node.rejectUnknownKeys();
-  return settings;
+  return graphParameters().load(node);
 }
 
 }  // namespace ifar::graph

@@ -2,6 +2,7 @@
 // Settings of the DV-graph: the `graph:` section of config/planner.yaml.
 
 #include "common/config.hpp"
+#include "common/parameters.hpp"
 
 namespace ifar::graph {
 
@@ -19,7 +20,7 @@ struct GraphSettings {
   /// route must be clearly shorter to replace it, so two ways of nearly equal length do not take turns.
   double route_preference = 0.0;
   /// ... but all of them together at most this many metres less, from the route's first arcs on (0: no
-  /// cap). A fraction of a long route alone was too much (docs/graph.md, Global search 5.).
+  /// cap): a fraction alone of a long route can hold the vehicle on it past a shorter turn.
   double route_preference_cap_m = 0.0;
   /// Each metre of a way through space no scan has looked at costs this much more (0 = off): unseen space
   /// is attemptable, but a way through it is a guess, and a seen way of the same length is not.
@@ -27,6 +28,9 @@ struct GraphSettings {
   /// A scan looks this far (metres) for unseen_cost's map of what was seen.
   double seen_range_m = 15.0;
 };
+
+/// planner.yaml `graph:` keys, every one optional.
+const common::ParameterTable<GraphSettings>& graphParameters();
 
 /// Reads the `graph` section (`node` is that section). Every key is optional with the defaults above;
 /// unknown keys and out-of-range values throw common::ConfigError naming the key.

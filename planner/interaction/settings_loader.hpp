@@ -19,10 +19,14 @@
 //     track_drop_frames: 5
 
 #include "common/config.hpp"
+#include "common/parameters.hpp"
 #include "common/vehicle.hpp"
 #include "planner/interaction/interaction_settings.hpp"
 
 namespace ifar::interaction {
+
+/// planner.yaml `interaction:` keys of the interaction planner, every one optional.
+const common::ParameterTable<InteractionSettings>& interactionParameters();
 
 /// `node` is the `interaction` section. Unknown keys and out-of-range values throw common::ConfigError
 /// naming the key.

@@ -10,64 +10,85 @@ namespace ifar::planner {
 
 namespace {
 
-double positive(const common::ConfigNode& node, const std::string& key, double fallback)
+using Range = common::ParameterRange;
+
+template <typename Member>
+void addChannel(common::ParameterTable<NodeSettings>& table, const std::string& key, Member member,
+                const std::string& meaning)
 {
-  const double value = node.optional<double>(key, fallback);
-  if (!std::isfinite(value) || value <= 0.0) {
-    node.fail(key, "must be a positive number");
-  }
-  return value;
+  table.add(
+      "daemon.channels." + key, [member](auto& s) -> auto& { return s.channels.*member; }, "",
+      Range::nonEmpty(), meaning);
 }
 
-std::string channel(const common::ConfigNode& node, const std::string& key, const std::string& fallback)
+common::ParameterTable<NodeSettings> makeNodeParameters()
 {
-  std::string value = node.optional<std::string>(key, fallback);
-  if (value.empty()) {
-    node.fail(key, "channel name must not be empty");
-  }
-  return value;
+  using S = NodeSettings;
+  auto table =
+      common::ParameterTable<S>()
+          .add("vehicle_config", &S::vehicle_config, "", Range::nonEmpty(),
+               "vehicle dimensions, lidar mount and filter, relative to the working directory")
+          .add("daemon.rate_hz", &S::rate_hz, "Hz", Range::positive(),
+               "graph updates and publications per second")
+          .add("daemon.path_resend_hz", &S::path_resend_hz, "Hz", Range::positive(),
+               "the last GLOBAL_PATH again (fresh utime) between updates: liveness for the executive")
+          .add(
+              "daemon.stale_input_age_s", [](auto& s) -> auto& { return s.input.stale_input_age_s; }, "s",
+              Range::positive(), "a scan farther than this from every pose cannot be placed")
+          .add(
+              "daemon.max_future_s", [](auto& s) -> auto& { return s.input.max_future_s; }, "s",
+              Range::positive(), "packets and poses stamped later than now + this are refused")
+          .add(
+              "daemon.pose_history_s", [](auto& s) -> auto& { return s.input.pose_history_s; }, "s",
+              Range::positive(), "poses kept for interpolating the vehicle over a scan")
+          .add("daemon.detector_max_age_s", &S::detector_max_age_s, "s", Range::positive(),
+               "older DETECTED_OBJECTS outlines fall back to reflectivity")
+          .add("daemon.arrival_radius_m", &S::arrival_radius_m, "m", Range::positive(),
+               "the vehicle this close to the goal has arrived: PLANNER_STATUS says so (the path is still "
+               "published); the executive's goal_tolerance_m decides where the vehicle stops")
+          .add("daemon.prior_graph", &S::prior_graph, "", Range::any(),
+               "a saved global graph (graph_file.hpp) to start from; \"\" = none")
+          .add(
+              "daemon.data_port", &S::data_port, "", Range::between(1, 65535),
+              "VELODYNE_PACKET port of data packets (the driver's data_port); other packets carry no points");
+  addChannel(table, "velodyne_packet", &PlannerChannels::velodyne_packet,
+             "lidar packets (velodyne_packet_t)");
+  addChannel(table, "pose", &PlannerChannels::pose, "vehicle pose (pose_t)");
+  addChannel(table, "goal", &PlannerChannels::goal, "goal to plan to");
+  addChannel(table, "detected_objects", &PlannerChannels::detected_objects,
+             "optional external movable-object detector (object_polygons_t)");
+  addChannel(table, "affordance", &PlannerChannels::affordance, "the executive's affordance updates");
+  addChannel(table, "blocked_passage", &PlannerChannels::blocked_passage,
+             "passages the executive could not get through (blocked_passage_t)");
+  addChannel(table, "dv_graph", &PlannerChannels::dv_graph, "the published DV-graph");
+  addChannel(table, "global_path", &PlannerChannels::global_path, "the published path");
+  addChannel(table, "planner_status", &PlannerChannels::planner_status, "the planner's status");
+  return table;
 }
 
 }  // namespace
 
+const common::ParameterTable<NodeSettings>& nodeParameters()
+{
+  static const auto table = makeNodeParameters();
+  return table;
+}
+
+const common::ParameterTable<PlannerSettings>& plannerInteractionParameters()
+{
+  static const auto table = common::ParameterTable<PlannerSettings>().add(
+      "enabled", &PlannerSettings::interaction_enabled, "", Range::any(),
+      "false = FAR mode: movable objects are plain obstacles, no pushes");
+  return table;
+}
+
 NodeSettings loadNodeSettings(const common::ConfigNode& root)
 {
   NodeSettings settings;
-  // Top level, as in sim.yaml: the file every daemon reads the vehicle from.
-  settings.vehicle_config = root.optional<std::string>("vehicle_config", settings.vehicle_config);
-  if (settings.vehicle_config.empty()) {
-    root.fail("vehicle_config", "must name the vehicle settings file");
+  nodeParameters().read(root, settings);
+  if (root.has("daemon")) {
+    root.child("daemon").rejectUnknownKeys();
   }
-  if (!root.has("daemon")) {
-    return settings;
-  }
-  const common::ConfigNode node = root.child("daemon");
-  settings.rate_hz = positive(node, "rate_hz", settings.rate_hz);
-  settings.path_resend_hz = positive(node, "path_resend_hz", settings.path_resend_hz);
-  settings.input.stale_input_age_s = positive(node, "stale_input_age_s", settings.input.stale_input_age_s);
-  settings.input.max_future_s = positive(node, "max_future_s", settings.input.max_future_s);
-  settings.input.pose_history_s = positive(node, "pose_history_s", settings.input.pose_history_s);
-  settings.detector_max_age_s = positive(node, "detector_max_age_s", settings.detector_max_age_s);
-  settings.arrival_radius_m = positive(node, "arrival_radius_m", settings.arrival_radius_m);
-  settings.prior_graph = node.optional<std::string>("prior_graph", settings.prior_graph);
-  settings.data_port = node.optional<int>("data_port", settings.data_port);
-  if (settings.data_port < 1 || settings.data_port > 65535) {
-    node.fail("data_port", "must be a UDP port, 1 to 65535");
-  }
-  if (node.has("channels")) {
-    const common::ConfigNode channels = node.child("channels");
-    PlannerChannels& out = settings.channels;
-    out.velodyne_packet = channel(channels, "velodyne_packet", out.velodyne_packet);
-    out.pose = channel(channels, "pose", out.pose);
-    out.goal = channel(channels, "goal", out.goal);
-    out.detected_objects = channel(channels, "detected_objects", out.detected_objects);
-    out.affordance = channel(channels, "affordance", out.affordance);
-    out.blocked_passage = channel(channels, "blocked_passage", out.blocked_passage);
-    out.dv_graph = channel(channels, "dv_graph", out.dv_graph);
-    out.global_path = channel(channels, "global_path", out.global_path);
-    out.planner_status = channel(channels, "planner_status", out.planner_status);
-  }
-  node.rejectUnknownKeys();
   return settings;
 }
 
@@ -81,13 +102,23 @@ PlannerConfig loadPlannerConfig(const common::ConfigNode& root)
   config.planner.arrival_radius_m = config.node.arrival_radius_m;
   if (root.has("interaction")) {
     const common::ConfigNode interaction = root.child("interaction");
-    config.planner.interaction_enabled =
-        interaction.optional<bool>("enabled", config.planner.interaction_enabled);
+    plannerInteractionParameters().read(interaction, config.planner);
     // The pusher part is derived from the vehicle again when the Planner is built.
     config.planner.interaction = interaction::loadInteractionSettings(interaction, common::VehicleSettings{});
   }
   root.rejectUnknownKeys();
   return config;
+}
+
+std::string plannerConfigYaml(const PlannerConfig& config)
+{
+  common::ConfigDump dump;
+  perception::perceptionParameters().dump(config.planner.perception, "perception", dump);
+  graph::graphParameters().dump(config.planner.graph, "graph", dump);
+  plannerInteractionParameters().dump(config.planner, "interaction", dump);
+  interaction::interactionParameters().dump(config.planner.interaction, "interaction", dump);
+  nodeParameters().dump(config.node, "", dump);
+  return dump.yaml();
 }
 
 }  // namespace ifar::planner

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "common/config.hpp"
+#include "common/parameters.hpp"
 #include "planner/core/frame_assembler.hpp"
 #include "planner/core/planner.hpp"
 
@@ -35,6 +36,9 @@ struct NodeSettings {
   PlannerChannels channels;
 };
 
+/// planner.yaml's top-level `vehicle_config` and `daemon:` keys, every one optional.
+const common::ParameterTable<NodeSettings>& nodeParameters();
+
 /// Reads the top-level `vehicle_config` and the `daemon` child of `root` (every key optional, with the
 /// defaults above; rates and ages must be positive) and rejects unknown keys inside it. Throws
 /// common::ConfigError naming file and key.
@@ -48,5 +52,11 @@ struct PlannerConfig {
   NodeSettings node;        // the `daemon:` section
 };
 PlannerConfig loadPlannerConfig(const common::ConfigNode& root);
+
+/// planner.yaml `interaction:` keys that are the planner's, not the interaction planner's (`enabled`).
+const common::ParameterTable<PlannerSettings>& plannerInteractionParameters();
+
+/// The effective planner.yaml as YAML with every key's meaning as a comment (--print-config).
+std::string plannerConfigYaml(const PlannerConfig& config);
 
 }  // namespace ifar::planner

@@ -6,15 +6,6 @@
 namespace ifar::perception {
 namespace {
 
-double requirePositive(const common::ConfigNode& node, const std::string& key)
-{
-  const auto value = node.required<double>(key);
-  if (!std::isfinite(value) || value <= 0.0) {
-    node.fail(key, "must be a positive number of the stated unit, got " + std::to_string(value));
-  }
-  return value;
-}
-
 constexpr int kMaxLayerCells = 20000;
 
 struct KeyProblem {
@@ -81,28 +72,40 @@ int PerceptionSettings::layerCells() const
   return static_cast<int>(std::ceil(layer_size_m / cell_size_m - 1e-9));
 }
 
+const common::ParameterTable<PerceptionSettings>& perceptionParameters()
+{
+  using S = PerceptionSettings;
+  using Range = common::ParameterRange;
+  static const auto table =
+      common::ParameterTable<S>(common::Presence::required)
+          .add("layer_size_m", &S::layer_size_m, "m", Range::positive(),
+               "side of the square local layer centred on the vehicle: twice the lidar's range, so it holds "
+               "all "
+               "the sensor can see")
+          .add("cell_size_m", &S::cell_size_m, "m", Range::positive(), "raster cell side of the local layer")
+          .add("inflation_radius_m", &S::inflation_radius_m, "m", Range::positive(),
+               "obstacles grow by this before their outlines are taken: half of vehicle.yaml width_m")
+          .add("simplify_epsilon_m", &S::simplify_epsilon_m, "m", Range::positive(),
+               "Douglas-Peucker tolerance for the obstacle outlines")
+          .add("min_polygon_area_m2", &S::min_polygon_area_m2, "m^2", Range::positive(),
+               "smaller outlines and enclosed free-space holes are dropped")
+          .add("remember_background", &S::remember_background, "", Range::any(),
+               "walls seen once stay in the layer after they leave the scan (never movable objects)")
+          .add("gap_fill_azimuth_step_deg", &S::gap_fill_azimuth_step_deg, "deg", Range::nonNegative(),
+               "experimental, 0 = off: far wall gaps no ray went through are filled, joining returns of rays "
+               "this far apart (0.2 for the VLP-16 at 10 Hz)")
+          .add("gap_fill_min_incidence_deg", &S::gap_fill_min_incidence_deg, "deg", Range::any(),
+               "... when a surface at this angle to the ray or steeper could hold both (above 1.25 steps, "
+               "below 90)");
+  return table;
+}
+
 PerceptionSettings loadPerceptionSettings(const common::ConfigNode& root)
 {
   const common::ConfigNode node = root.child("perception");
-  PerceptionSettings settings;
-  settings.ground_clearance_m = requirePositive(node, "ground_clearance_m");
-  settings.vehicle_height_m = requirePositive(node, "vehicle_height_m");
-  settings.min_range_m = requirePositive(node, "min_range_m");
-  settings.movable_reflectivity_threshold =
-      static_cast<float>(requirePositive(node, "movable_reflectivity_threshold"));
-  settings.layer_size_m = requirePositive(node, "layer_size_m");
-  settings.cell_size_m = requirePositive(node, "cell_size_m");
-  settings.inflation_radius_m = requirePositive(node, "inflation_radius_m");
-  settings.simplify_epsilon_m = requirePositive(node, "simplify_epsilon_m");
-  settings.min_polygon_area_m2 = requirePositive(node, "min_polygon_area_m2");
-  settings.remember_background = node.required<bool>("remember_background");
-  settings.gap_fill_azimuth_step_deg = node.required<double>("gap_fill_azimuth_step_deg");
-  settings.gap_fill_min_incidence_deg = node.required<double>("gap_fill_min_incidence_deg");
+  const PerceptionSettings settings = perceptionParameters().load(node);
   if (const auto problem = gapFillProblem(settings)) {
     node.fail(problem->key, problem->reason);
-  }
-  if (settings.vehicle_height_m <= settings.ground_clearance_m) {
-    node.fail("vehicle_height_m", "must be above ground_clearance_m");
   }
   if (settings.cell_size_m > settings.layer_size_m) {
     node.fail("cell_size_m", "must not exceed layer_size_m");
@@ -110,7 +113,15 @@ PerceptionSettings loadPerceptionSettings(const common::ConfigNode& root)
   if (settings.layer_size_m / settings.cell_size_m > kMaxLayerCells) {
     node.fail("cell_size_m", "gives more than 20000 cells per side of the layer; use larger cells");
   }
-  node.rejectUnknownKeys();
+  return settings;
+}
+
+PerceptionSettings withLidarFilter(PerceptionSettings settings, const common::LidarFilterSettings& lidar)
+{
+  settings.ground_clearance_m = lidar.ground_clearance_m;
+  settings.vehicle_height_m = lidar.max_height_m;
+  settings.min_range_m = lidar.min_range_m;
+  settings.movable_reflectivity_threshold = static_cast<float>(lidar.movable_reflectivity_threshold);
   return settings;
 }
 

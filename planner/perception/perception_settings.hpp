@@ -1,15 +1,19 @@
 #pragma once
-// Settings of the perception stages, read from the `perception:` section of config/planner.yaml.
+// Settings of the perception stages, read from the `perception:` section of config/planner.yaml; the
+// lidar point filter (heights, least range, reflectivity) is the vehicle's (vehicle.yaml `lidar:`).
 
 #include <optional>
 #include <string>
 
 #include "common/config.hpp"
+#include "common/parameters.hpp"
+#include "common/vehicle.hpp"
 
 namespace ifar::perception {
 
 struct PerceptionSettings {
-  /// Obstacle points lie between these heights above the ground under the vehicle (metres).
+  /// Obstacle points lie between these heights above the ground under the vehicle (metres). These four
+  /// come from vehicle.yaml `lidar:` (withLidarFilter; the Planner applies its vehicle's).
   double ground_clearance_m = 0.15;
   double vehicle_height_m = 1.2;
   /// Returns closer than this to the sensor are dropped (no-return zeros, the vehicle itself).
@@ -44,8 +48,14 @@ struct PerceptionSettings {
 /// of more than 20000 cells a side), naming the field; empty when they are usable.
 std::optional<std::string> findSettingsProblem(const PerceptionSettings& settings);
 
-/// Reads the `perception` child of `root` (every key required, all positive, vehicle height above
-/// ground clearance) and rejects unknown keys inside it. Throws common::ConfigError naming file and key.
+/// planner.yaml `perception:` keys, every one required.
+const common::ParameterTable<PerceptionSettings>& perceptionParameters();
+
+/// Reads the `perception` child of `root` (every key required and in range) and rejects unknown keys
+/// inside it. Throws common::ConfigError naming file and key. The lidar filter keeps its defaults.
 PerceptionSettings loadPerceptionSettings(const common::ConfigNode& root);
+
+/// `settings` with the point filter of the vehicle's lidar.
+PerceptionSettings withLidarFilter(PerceptionSettings settings, const common::LidarFilterSettings& lidar);
 
 }  // namespace ifar::perception

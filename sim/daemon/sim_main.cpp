@@ -39,10 +39,14 @@ int runSimulator(ifar::common::DaemonContext& context, const CommandLine& comman
 {
   auto& logger = *context.logger;
   auto settings = ifar::sim::loadSimNodeSettings(context.config);
-  const auto bus_settings = ifar::can::loadBusSettings(context.config);
   context.config.rejectUnknownKeys();
   const auto vehicle =
       ifar::common::loadVehicleSettings(ifar::common::ConfigNode::loadFile(settings.vehicle_config));
+  // The bus, the drives' node ids and the force frame id are the vehicle's CAN configuration: the file
+  // the CAN drivers read.
+  const auto can_config = ifar::common::ConfigNode::loadFile(settings.can_config);
+  const auto bus_settings = ifar::can::loadBusSettings(can_config);
+  settings.can_nodes = ifar::sim::loadCanNodes(can_config, settings.can_nodes);
 
   ifar::sim::World world;
   const std::string world_path = command_line.world_path.empty() ? settings.world : command_line.world_path;
@@ -174,7 +178,14 @@ int main(int argc, char** argv)
   CommandLine command_line;
   return ifar::common::runDaemon(
       argc, argv,
-      {"sim", "Simulator: VLP-16 packets by UDP, CAN force sensor and drives, POSE", "config/sim.yaml"},
+      {"sim", "Simulator: VLP-16 packets by UDP, CAN force sensor and drives, POSE", "config/sim.yaml",
+       [](const ifar::common::ConfigNode& config) {
+         const auto settings = ifar::sim::loadSimNodeSettings(config);
+         const auto can_config = ifar::common::ConfigNode::loadFile(settings.can_config);
+         ifar::can::loadBusSettings(can_config);
+         ifar::sim::loadCanNodes(can_config);
+         return ifar::sim::simNodeParameters().yaml(settings);
+       }},
       [&](ifar::common::DaemonContext& context) { return runSimulator(context, command_line); },
       [&](CLI::App& app) {
         app.add_option("world", command_line.world_path, "World file (YAML, docs/worlds.md)");

@@ -1,11 +1,13 @@
 #pragma once
 // What config/sim.yaml holds for the simulator node (the daemon ifar-sim and the headless runner). The CAN
-// `bus:` section has the same keys as config/can.yaml and is read by the daemon with can::loadBusSettings.
+// bus, the drives' node ids and the force sensor's frame id are the vehicle's CAN configuration: the
+// simulator reads them from can.yaml (sim.yaml `can_config`), the file the CAN drivers read.
 
 #include <cstdint>
 #include <string>
 
 #include "common/config.hpp"
+#include "common/parameters.hpp"
 #include "sim/can_nodes/vehicle_can_nodes.hpp"
 #include "sim/simulator/simulator.hpp"
 
@@ -15,6 +17,7 @@ enum class CommandSource { kCan, kLcm };
 
 struct SimNodeSettings {
   std::string vehicle_config = "config/vehicle.yaml";
+  std::string can_config = "config/can.yaml";
   std::string world;  // world file used when none is given on the command line
   SimulatorSettings simulator;
   std::string lidar_host = "127.0.0.1";
@@ -26,11 +29,19 @@ struct SimNodeSettings {
   CommandSource command_source = CommandSource::kCan;
   std::string velocity_channel = "VELOCITY_CMD";
   double command_timeout_s = 0.5;  // an LCM velocity command older than this counts as zero
-  CanNodeSettings can_nodes;
+  CanNodeSettings can_nodes;       // from can.yaml (loadCanNodes), not sim.yaml
 };
 
+/// sim.yaml's keys, every one optional.
+const common::ParameterTable<SimNodeSettings>& simNodeParameters();
+
 /// Reads the daemon's keys from the root of sim.yaml (all optional with the defaults above, except that
-/// values present must be valid). Throws common::ConfigError naming the key. Leaves `bus` unread.
+/// values present must be valid). Throws common::ConfigError naming the key. Leaves the unknown-key
+/// check to the caller.
 SimNodeSettings loadSimNodeSettings(const common::ConfigNode& root);
+
+/// The emulated drives' node ids and the force sensor's frame id from can.yaml (`can_root`), checked by
+/// the CAN drivers' own loaders; the rest of `nodes` is kept.
+CanNodeSettings loadCanNodes(const common::ConfigNode& can_root, CanNodeSettings nodes = {});
 
 }  // namespace ifar::sim

@@ -42,7 +42,7 @@ class DaemonMain : public ::testing::Test {
       argv.push_back(argument.data());
     }
     return ifar::common::runDaemon(static_cast<int>(argv.size()), argv.data(),
-                                   {"daemon-main-test", "test daemon", ""},
+                                   {"daemon-main-test", "test daemon", "", {}},
                                    [this](ifar::common::DaemonContext& context) {
                                      context.config.rejectUnknownKeys();
                                      url_ = context.lcm_url;
@@ -50,9 +50,49 @@ class DaemonMain : public ::testing::Test {
                                    });
   }
 
+  /// runDaemon with --print-config and a daemon whose settings are one key, `rate_hz`; stdout captured.
+  int printConfig(const std::string& config, std::string& printed)
+  {
+    std::vector<std::string> arguments = {"ifar-test", "--log-dir", "", "--config", config, "--print-config"};
+    std::vector<char*> argv;
+    for (std::string& argument : arguments) {
+      argv.push_back(argument.data());
+    }
+    const auto describe = [](const ifar::common::ConfigNode& node) {
+      const double rate = node.optional<double>("rate_hz", 2.5);
+      return "rate_hz: " + std::to_string(rate) + "\n";
+    };
+    ::testing::internal::CaptureStdout();
+    const int code = ifar::common::runDaemon(static_cast<int>(argv.size()), argv.data(),
+                                             {"daemon-main-test", "test daemon", "", describe},
+                                             [this](ifar::common::DaemonContext&) {
+                                               url_ = "(the daemon ran)";
+                                               return 0;
+                                             });
+    printed = ::testing::internal::GetCapturedStdout();
+    return code;
+  }
+
   fs::path directory_;
   std::string url_ = "(not recorded)";
 };
+
+TEST_F(DaemonMain, PrintConfigPrintsTheCommonKeysAndTheDaemonsThenExitsWithoutRunning)
+{
+  std::string printed;
+  EXPECT_EQ(printConfig(writeConfig("log_level: warn\nrate_hz: 5\n"), printed), 0);
+  EXPECT_EQ(url_, "(not recorded)");
+  EXPECT_NE(printed.find("\nlog_level: \"warn\"  # trace, debug"), std::string::npos) << printed;
+  EXPECT_NE(printed.find("\nlcm_url: \"\"  # LCM URL"), std::string::npos) << printed;
+  EXPECT_NE(printed.find("\nrate_hz: 5.000000\n"), std::string::npos) << printed;
+}
+
+TEST_F(DaemonMain, PrintConfigRejectsAnUnknownKeyLikeStartUp)
+{
+  std::string printed;
+  EXPECT_EQ(printConfig(writeConfig("rate_hz: 5\nrate_hz_typo: 6\n"), printed), 2);
+  EXPECT_EQ(printed, "");
+}
 
 constexpr const char* kConfigured = "udpm://239.255.76.67:7667?ttl=0";
 constexpr const char* kCommandLine = "udpm://239.255.76.68:7668?ttl=0";

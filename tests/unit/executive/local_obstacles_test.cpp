@@ -225,12 +225,8 @@ TEST(ObstacleSettings, LoadsShippedConfig)
   const auto root = common::ConfigNode::loadFile(std::string(IFAR_SOURCE_DIR) + "/config/executive.yaml");
   const ObstacleSettings settings = loadObstacleSettings(root.child("obstacles"));
   EXPECT_EQ(settings.packet_channel, "VELODYNE_PACKET");
-  EXPECT_DOUBLE_EQ(settings.ground_clearance_m, 0.15);
-  EXPECT_DOUBLE_EQ(settings.max_height_m, 1.2);
-  EXPECT_DOUBLE_EQ(settings.min_range_m, 0.4);
   EXPECT_DOUBLE_EQ(settings.max_range_m, 15.0);
   EXPECT_DOUBLE_EQ(settings.keep_s, 0.15);
-  EXPECT_EQ(settings.movable_reflectivity_threshold, 101);
   EXPECT_DOUBLE_EQ(settings.cell_m, 0.05);
 }
 
@@ -246,17 +242,15 @@ std::string loadError(const std::string& text)
 
 TEST(ObstacleSettings, BadValuesNameTheKey)
 {
-  const std::string valid =
-      "packet_channel: VELODYNE_PACKET\nground_clearance_m: 0.15\nmin_range_m: 0.4\nmax_range_m: 15\n"
-      "keep_s: 0.15\nmovable_reflectivity_threshold: 101\ncell_m: 0.05\n";
-  EXPECT_EQ(loadError(valid + "max_height_m: 1.2\n"), "");
-  EXPECT_NE(loadError(valid + "max_height_m: 0.1\n").find("max_height_m"), std::string::npos);
-  EXPECT_NE(loadError(valid + "max_height_m: 1.2\nsurprise: 1\n").find("surprise"), std::string::npos);
-  const std::string no_keep =
-      "packet_channel: X\nground_clearance_m: 0.15\nmax_height_m: 1.2\nmin_range_m: 0.4\nmax_range_m: 15\n"
-      "movable_reflectivity_threshold: 101\ncell_m: 0\n";
-  EXPECT_NE(loadError(no_keep).find("keep_s"), std::string::npos);
-  EXPECT_NE(loadError(no_keep + "keep_s: -1\n").find("keep_s"), std::string::npos);
+  const std::string valid = "packet_channel: VELODYNE_PACKET\nmax_range_m: 15\ncell_m: 0.05\n";
+  EXPECT_EQ(loadError(valid + "keep_s: 0.15\n"), "");
+  EXPECT_NE(loadError(valid + "keep_s: 0.15\nsurprise: 1\n").find("surprise"), std::string::npos);
+  // The lidar filter is the vehicle's (vehicle.yaml lidar:), no longer a key of this section.
+  EXPECT_NE(loadError(valid + "keep_s: 0.15\nmin_range_m: 0.4\n").find("'min_range_m': unknown key"),
+            std::string::npos);
+  EXPECT_NE(loadError(valid).find("keep_s"), std::string::npos);
+  EXPECT_EQ(loadError(valid + "keep_s: -1\n"), "obstacles.yaml: key 'keep_s': must be in (0, 2] s, got -1");
+  EXPECT_EQ(loadError(valid + "keep_s: 3\n"), "obstacles.yaml: key 'keep_s': must be in (0, 2] s, got 3");
 }
 
 }  // namespace

@@ -63,14 +63,13 @@ TEST(InteractionSettingsLoaderTest, ReadsThePlannerLoopKeysThePassageMarginAndTh
   EXPECT_THAT(errorOf("passage_margin_m: -0.1\n"), ::testing::HasSubstr("passage_margin_m"));
   EXPECT_DOUBLE_EQ(settings.search.unseen_depth_m, 0.0);
   EXPECT_DOUBLE_EQ(load("").search.unseen_depth_m, 0.5);
-  EXPECT_THAT(
-      errorOf("unseen_depth_m: -1\n"),
-      ::testing::HasSubstr("key 'unseen_depth_m': must be a number >= 0 (0: as thin as the face seen)"));
+  EXPECT_THAT(errorOf("unseen_depth_m: -1\n"),
+              ::testing::HasSubstr("key 'unseen_depth_m': must be at least 0 m, got -1"));
   EXPECT_THAT(errorOf("frame_budget_ms: 0\n"), ::testing::HasSubstr("frame_budget_ms"));
   EXPECT_THAT(errorOf("track_drop_frames: 0\n"), ::testing::HasSubstr("track_drop_frames"));
   EXPECT_THAT(errorOf("reach_m: 0\n"), ::testing::HasSubstr("reach_m"));
   EXPECT_THAT(errorOf("outline_memory_restart_m: -1\n"),
-              ::testing::HasSubstr("key 'outline_memory_restart_m': must be a number >= 0 (0: off)"));
+              ::testing::HasSubstr("key 'outline_memory_restart_m': must be at least 0 m, got -1"));
 }
 
 TEST(InteractionSettingsLoaderTest, TheExtendedSearchRadiusIsOffOrBeyondTheSearchRadius)

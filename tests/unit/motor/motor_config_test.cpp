@@ -69,11 +69,11 @@ TEST(MotorConfig, RejectsADriveWatchdogThatWouldStopAHealthyDriver)
       "heartbeat_timeout_ms", "not longer than master_heartbeat_ms");
   expectRejected(
       "motor:\n  left_node_id: 1\n  right_node_id: 2\n  drive_watchdog:\n    rpdo_timeout_ms: 70000\n",
-      "rpdo_timeout_ms", "must be 0 (off) or 1..65535");
+      "rpdo_timeout_ms", "must be in [0, 65535] ms, got 70000");
   expectRejected("motor:\n  left_node_id: 1\n  right_node_id: 2\n  master_node_id: 2\n", "master_node_id",
                  "equals a drive's node id");
   expectRejected("motor:\n  left_node_id: 1\n  right_node_id: 2\n  sdo_attempts: 0\n", "sdo_attempts",
-                 "must be 1..100");
+                 "must be in [1, 100], got 0");
 }
 
 TEST(MotorConfig, AZeroWatchdogTimeIsOff)

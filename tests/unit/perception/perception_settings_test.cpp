@@ -10,10 +10,6 @@ namespace {
 
 const char* const kValid = R"(
 perception:
-  ground_clearance_m: 0.2
-  vehicle_height_m: 1.5
-  min_range_m: 0.5
-  movable_reflectivity_threshold: 120
   layer_size_m: 40.0
   cell_size_m: 0.2
   inflation_radius_m: 0.4
@@ -44,10 +40,6 @@ std::string replaced(const std::string& from, const std::string& to)
 TEST(PerceptionSettings, ReadsEveryKey)
 {
   const PerceptionSettings settings = loadPerceptionSettings(common::ConfigNode::loadString(kValid, "test"));
-  EXPECT_DOUBLE_EQ(settings.ground_clearance_m, 0.2);
-  EXPECT_DOUBLE_EQ(settings.vehicle_height_m, 1.5);
-  EXPECT_DOUBLE_EQ(settings.min_range_m, 0.5);
-  EXPECT_FLOAT_EQ(settings.movable_reflectivity_threshold, 120.0F);
   EXPECT_DOUBLE_EQ(settings.layer_size_m, 40.0);
   EXPECT_DOUBLE_EQ(settings.cell_size_m, 0.2);
   EXPECT_DOUBLE_EQ(settings.inflation_radius_m, 0.4);
@@ -57,6 +49,21 @@ TEST(PerceptionSettings, ReadsEveryKey)
   EXPECT_DOUBLE_EQ(settings.gap_fill_azimuth_step_deg, 0.5);
   EXPECT_DOUBLE_EQ(settings.gap_fill_min_incidence_deg, 4.0);
   EXPECT_EQ(settings.layerCells(), 200);
+}
+
+TEST(PerceptionSettings, TheLidarFilterIsTheVehicles)
+{
+  common::LidarFilterSettings lidar;
+  lidar.ground_clearance_m = 0.2;
+  lidar.max_height_m = 1.5;
+  lidar.min_range_m = 0.5;
+  lidar.movable_reflectivity_threshold = 120;
+  const PerceptionSettings settings = withLidarFilter(PerceptionSettings{}, lidar);
+  EXPECT_EQ(settings.ground_clearance_m, 0.2);
+  EXPECT_EQ(settings.vehicle_height_m, 1.5);
+  EXPECT_EQ(settings.min_range_m, 0.5);
+  EXPECT_EQ(settings.movable_reflectivity_threshold, 120.0F);
+  EXPECT_EQ(settings.cell_size_m, PerceptionSettings{}.cell_size_m);
 }
 
 TEST(PerceptionSettings, ProjectConfigLoads)
@@ -73,13 +80,19 @@ TEST(PerceptionSettings, BadValuesNameTheKey)
 {
   EXPECT_NE(messageOf(replaced("cell_size_m: 0.2", "cell_size_m: -0.2")).find("cell_size_m"),
             std::string::npos);
-  EXPECT_NE(messageOf(replaced("vehicle_height_m: 1.5", "vehicle_height_m: 0.1")).find("vehicle_height_m"),
+  EXPECT_EQ(messageOf(replaced("cell_size_m: 0.2", "cell_size_m: 0")),
+            "planner.yaml: key 'perception.cell_size_m': must be greater than 0 m, got 0");
+  EXPECT_NE(messageOf(replaced("cell_size_m: 0.2", "cell_size_m: 50")).find("must not exceed layer_size_m"),
             std::string::npos);
   EXPECT_NE(messageOf(replaced("layer_size_m: 40.0", "layer_size_m: wide")).find("layer_size_m"),
             std::string::npos);
-  EXPECT_NE(messageOf(replaced("  min_range_m: 0.5\n", "")).find("min_range_m"), std::string::npos);
-  EXPECT_NE(messageOf(replaced("min_range_m: 0.5", "min_range_m: 0.5\n  colour: red")).find("colour"),
+  EXPECT_NE(messageOf(replaced("  cell_size_m: 0.2\n", "")).find("cell_size_m"), std::string::npos);
+  EXPECT_NE(messageOf(replaced("cell_size_m: 0.2", "cell_size_m: 0.2\n  colour: red")).find("colour"),
             std::string::npos);
+  // The lidar filter moved to vehicle.yaml lidar:; the old key here is unknown.
+  EXPECT_NE(
+      messageOf(replaced("cell_size_m: 0.2", "cell_size_m: 0.2\n  min_range_m: 0.4")).find("min_range_m"),
+      std::string::npos);
   EXPECT_NE(messageOf("graph: {}\n").find("perception"), std::string::npos);
   EXPECT_NE(messageOf(replaced("gap_fill_azimuth_step_deg: 0.5", "gap_fill_azimuth_step_deg: -0.5"))
                 .find("gap_fill_azimuth_step_deg"),
