@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <thread>
+#include <utility>
 
 extern char** environ;
 
@@ -25,7 +26,10 @@ std::vector<std::string> childEnvironment(const std::map<std::string, std::strin
     }
   }
   for (const auto& [name, value] : overrides) {
-    entries.push_back(name + "=" + value);
+    std::string entry = name;
+    entry += '=';
+    entry += value;
+    entries.push_back(std::move(entry));
   }
   return entries;
 }
@@ -33,6 +37,7 @@ std::vector<std::string> childEnvironment(const std::map<std::string, std::strin
 std::vector<char*> pointersTo(std::vector<std::string>& texts)
 {
   std::vector<char*> pointers;
+  pointers.reserve(texts.size() + 1);
   for (std::string& text : texts) {
     pointers.push_back(text.data());
   }

@@ -1,5 +1,7 @@
 #include "testing/simulated_feed.hpp"
 
+#include <cmath>
+
 #include <Eigen/Geometry>
 
 #include "common/vehicle.hpp"
@@ -24,7 +26,7 @@ std::vector<FeedRecord> recordSimulation(const sim::World& world, double seconds
   simulator.setVelocityCommand(linear, angular);
   std::vector<FeedRecord> records;
   constexpr double kStep = 0.01;
-  const int steps = static_cast<int>(seconds / kStep + 0.5);
+  const int steps = static_cast<int>(std::lround(seconds / kStep));
   for (int step = 0; step < steps; ++step) {
     const sim::StepOutput output = simulator.step(kStep);
     FeedRecord pose;
