@@ -147,9 +147,10 @@ void SimulatedStack::subscribeNodes(const RunRequest& request)
                                        [this](const ifar::motor_status_t& message, std::int64_t now_us) {
                                          executive_.onMotorStatus(message, now_us);
                                        });
-  bus_.subscribe<ifar::odometry_t>(
-      executive::kOdometryChannel,
-      [this](const ifar::odometry_t& message, std::int64_t now_us) { executive_.onOdometry(message, now_us); });
+  bus_.subscribe<ifar::odometry_t>(executive::kOdometryChannel,
+                                   [this](const ifar::odometry_t& message, std::int64_t now_us) {
+                                     executive_.onOdometry(message, now_us);
+                                   });
   bus_.subscribe<ifar::e_stop_t>(
       executive::kEStopChannel,
       [this](const ifar::e_stop_t& message, std::int64_t now_us) { executive_.onEStop(message, now_us); });

@@ -33,11 +33,9 @@ ifar::odometry_t toOdometryMessage(const MotorStatus& left, const MotorStatus& r
   message.angular_velocity = body.angular;
   message.left_age_us = feedbackAge(left, utime);
   message.right_age_us = feedbackAge(right, utime);
-  message.status = (stale(message.left_age_us, geometry.feedback_timeout_us) ? ifar::odometry_t::STATUS_LEFT_STALE
-                                                                             : 0) |
-                   (stale(message.right_age_us, geometry.feedback_timeout_us)
-                        ? ifar::odometry_t::STATUS_RIGHT_STALE
-                        : 0);
+  message.status =
+      (stale(message.left_age_us, geometry.feedback_timeout_us) ? ifar::odometry_t::STATUS_LEFT_STALE : 0) |
+      (stale(message.right_age_us, geometry.feedback_timeout_us) ? ifar::odometry_t::STATUS_RIGHT_STALE : 0);
   return message;
 }
 

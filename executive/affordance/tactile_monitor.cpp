@@ -212,7 +212,8 @@ std::optional<AffordanceEvent> TactileMonitor::checkCost(const TactileSettings& 
   event.text = fmt::format(
       "object {}: measured cost {:.2f} vs planned {:.2f} after {:.2f} m at mean {:.0f} N "
       "(planned {:.0f} N)",
-      plan_.object_id, measured, plan_.expected_cost, measuredDistance(), meanForce(), plan_.expected_force_n);
+      plan_.object_id, measured, plan_.expected_cost, measuredDistance(), meanForce(),
+      plan_.expected_force_n);
   return event;
 }
 

@@ -28,9 +28,9 @@ namespace ifar::executive {
 
 /// One cycle's forward travel (metres, signed) as each source sees it.
 struct TravelSteps {
-  double pose = 0.0;      ///< the pose's
-  double smoothed = 0.0;  ///< the smoothed pose's
-  double wheels = 0.0;    ///< the wheels' (the pose's where odometry is missing)
+  double pose = 0.0;             ///< the pose's
+  double smoothed = 0.0;         ///< the smoothed pose's
+  double wheels = 0.0;           ///< the wheels' (the pose's where odometry is missing)
   double wheels_smoothed = 0.0;  ///< the wheels' (the smoothed pose's where odometry is missing)
 };
 
@@ -86,8 +86,8 @@ class TactileMonitor {
                                                 const std::optional<geometry::Point>& object_position,
                                                 const TactileSettings& settings);
   /// This cycle's forward steps of the pose, the smoothed pose and the wheels; advances the filter.
-  TravelSteps stepsTo(std::int64_t now_us, const geometry::Pose2& vehicle, std::optional<double> wheel_travel_m,
-                const TactileSettings& settings);
+  TravelSteps stepsTo(std::int64_t now_us, const geometry::Pose2& vehicle,
+                      std::optional<double> wheel_travel_m, const TactileSettings& settings);
   /// True while the wheels' count of distance pushed is the lesser (the one that counts).
   bool wheelsCount() const { return pushed_by_wheels_ < pushed_by_pose_; }
   /// Principle 2: the event once the measured cost differs from the plan's by more than the threshold.

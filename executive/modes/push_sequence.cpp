@@ -160,8 +160,7 @@ PushSequence::Step PushSequence::push(const CycleView& view, const CollisionGuar
   request.command = result.command;
   request.reason = fmt::format("object {}: {}", plan_.object_id, result.reason);
   guard.stop(view.pose, obstacles, request);
-  if (request.command.isZero() && !result.command.isZero() &&
-      standstill_.standingStill(view)) {
+  if (request.command.isZero() && !result.command.isZero() && standstill_.standingStill(view)) {
     // The guard has held the push for the standstill timeout: something beside the object is in the
     // vehicle's way (no force rises, so the tactile monitor says nothing). Without this the vehicle
     // stood there for good.
@@ -178,8 +177,9 @@ std::optional<AffordanceEvent> PushSequence::tactileVerdict(const CycleView& vie
 {
   const std::optional<double> wheel_travel =
       view.wheels ? std::optional<double>(view.wheels->travel_m) : std::nullopt;
-  std::optional<AffordanceEvent> event = tactile_.update(view.now_us, view.force_n, view.pose, wheel_travel,
-                                                         observed, tracked.expects_contact, settings_.tactile);
+  std::optional<AffordanceEvent> event =
+      tactile_.update(view.now_us, view.force_n, view.pose, wheel_travel, observed, tracked.expects_contact,
+                      settings_.tactile);
   if (event && event->reason == AffordanceReason::Jammed) {
     jammed_objects_.push_back(plan_.object_id);
   }

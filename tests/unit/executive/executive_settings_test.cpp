@@ -94,8 +94,8 @@ TEST(ExecutiveSettings, OdometryAndSmoothingKeysAreRequiredAndChecked)
 {
   EXPECT_NE(errorWithLineReplaced("  odometry: 0.1", "  odometry: 0").find("stale_after_s.odometry"),
             std::string::npos);
-  EXPECT_NE(errorWithLineReplaced("  pose_smoothing_s: 0.1", "  pose_smoothing_s: -0.1").find(
-                "tactile.pose_smoothing_s"),
+  EXPECT_NE(errorWithLineReplaced("  pose_smoothing_s: 0.1", "  pose_smoothing_s: -0.1")
+                .find("tactile.pose_smoothing_s"),
             std::string::npos);
   EXPECT_NE(errorWithLineReplaced("  pose_smoothing_s: 0.1", "").find("tactile.pose_smoothing_s"),
             std::string::npos);

@@ -286,8 +286,7 @@ PushRun push(TactileMonitor& monitor, const TactileSettings& settings, JitteryPo
       run.saturated_from_us = now_us;
     }
     const Pose2 pose = estimator(Pose2{vehicle_speed * t, 0.0, 0.0});
-    const std::optional<double> wheels =
-        wheel_speed ? std::optional<double>(*wheel_speed * t) : std::nullopt;
+    const std::optional<double> wheels = wheel_speed ? std::optional<double>(*wheel_speed * t) : std::nullopt;
     const auto event = monitor.update(now_us, force, pose, wheels, std::nullopt, true, settings);
     if (event && event->reason == AffordanceReason::NoMotion && !run.unpushable) {
       run.unpushable = event;
@@ -301,7 +300,7 @@ PushRun push(TactileMonitor& monitor, const TactileSettings& settings, JitteryPo
 /// most), for every seed.
 void expectUnpushableWithinTheWindow(double wheel_speed_or_nan, const char* what)
 {
-  TactileSettings settings;  // 2 s at >= 90 % of the maximum, 5 cm motion threshold
+  TactileSettings settings;          // 2 s at >= 90 % of the maximum, 5 cm motion threshold
   settings.cost_threshold = 1000.0;  // only the no-motion rule here
   const std::optional<double> wheels =
       std::isnan(wheel_speed_or_nan) ? std::nullopt : std::optional<double>(wheel_speed_or_nan);
@@ -341,8 +340,8 @@ TEST(TactileMonitor, ASlowlyMovingObjectUnderPoseJitterIsNotUnpushable)
   settings.cost_threshold = 1000.0;  // only the no-motion rule here
   // 5 cm/s at the maximum force: 10 cm per no-motion window. With wheels that agree, with wheels that
   // slip on top of it, and without odometry.
-  for (const std::optional<double> wheels : {std::optional<double>(0.05), std::optional<double>(0.15),
-                                             std::optional<double>()}) {
+  for (const std::optional<double> wheels :
+       {std::optional<double>(0.05), std::optional<double>(0.15), std::optional<double>()}) {
     for (unsigned seed = 1; seed <= 10; ++seed) {
       JitteryPose estimator(seed, 0.02, 0.003);
       TactileMonitor monitor;
@@ -369,10 +368,11 @@ TEST(TactileMonitor, PoseJitterIsNoDistancePushed)
   for (int cycle = 0; cycle <= 300; ++cycle) {
     const Pose2 pose = estimator(Pose2{1.0, 2.0, 0.0});
     event = event ? event : pose_alone.update(cycle * kCycleUs, 300.0, pose, std::nullopt, true, settings);
-    event = event ? event : with_wheels.update(cycle * kCycleUs, 300.0, pose, 0.0, std::nullopt, true, settings);
+    event =
+        event ? event : with_wheels.update(cycle * kCycleUs, 300.0, pose, 0.0, std::nullopt, true, settings);
   }
   EXPECT_FALSE(event.has_value()) << event->text;
-  EXPECT_LT(pose_alone.measuredDistance(), 0.1);      // the jitter of two samples, not 6 s of it
+  EXPECT_LT(pose_alone.measuredDistance(), 0.1);          // the jitter of two samples, not 6 s of it
   EXPECT_DOUBLE_EQ(with_wheels.measuredDistance(), 0.0);  // the wheels stood: nothing was pushed
 }
 

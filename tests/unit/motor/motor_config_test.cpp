@@ -36,11 +36,12 @@ TEST(MotorConfig, OdometryKeysAreOptionalAndChecked)
       common::VehicleSettings{});
   EXPECT_EQ(defaults.odometry_channel, "ODOMETRY");
   EXPECT_EQ(defaults.odometry_timeout_us, 50'000);
-  const auto set = loadMotorConfig(common::ConfigNode::loadString("motor:\n  left_node_id: 1\n  right_node_id: 2\n"
-                                                                  "  odometry_timeout_ms: 80\n"
-                                                                  "  odometry_channel: WHEELS\n",
-                                                                  "test.yaml"),
-                                   common::VehicleSettings{});
+  const auto set =
+      loadMotorConfig(common::ConfigNode::loadString("motor:\n  left_node_id: 1\n  right_node_id: 2\n"
+                                                     "  odometry_timeout_ms: 80\n"
+                                                     "  odometry_channel: WHEELS\n",
+                                                     "test.yaml"),
+                      common::VehicleSettings{});
   EXPECT_EQ(set.odometry_channel, "WHEELS");
   EXPECT_EQ(set.odometry_timeout_us, 80'000);
   const auto zero = common::ConfigNode::loadString(

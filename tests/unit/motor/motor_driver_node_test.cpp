@@ -307,9 +307,9 @@ can::Frame tpdo1(std::uint8_t node_id, std::int32_t actual_velocity)
 TEST(MotorDriverNodeOdometry, TheDrivesActualVelocitiesBecomeWheelAndBodyVelocities)
 {
   MotorDriverNode node{projectConfig(), common::VehicleSettings{}};  // radius 0.15 m, track 0.6 m
-  node.onFrame(tpdo1(1, 2000), kEpoch);           // left wheel 2 rad/s
-  node.onFrame(tpdo1(2, 3000), kEpoch + 3'000);   // right wheel 3 rad/s
-  node.onFrame(tpdo1(3, 9000), kEpoch + 4'000);   // another node's: not a wheel
+  node.onFrame(tpdo1(1, 2000), kEpoch);                              // left wheel 2 rad/s
+  node.onFrame(tpdo1(2, 3000), kEpoch + 3'000);                      // right wheel 3 rad/s
+  node.onFrame(tpdo1(3, 9000), kEpoch + 4'000);                      // another node's: not a wheel
   const ifar::odometry_t odometry = node.odometry(kEpoch + 10'000);
   EXPECT_EQ(odometry.utime, kEpoch + 10'000);
   EXPECT_EQ(odometry.left_node_id, 1);
