@@ -388,7 +388,7 @@ int main(int argc, char** argv)
   }
   // A planned row must not depend on machine load: the push searches stop on their expansion limit only.
   // With the time budget, a wider search that ran out of time under load was not "exhausted", so the next
-  // one never ran (tunnel-1 t2 came out 346.6 m, 521.4 m or no path). The driven runs keep the budget.
+  // one never ran and a planned length depended on the load. The driven runs keep the budget.
   map_settings.interaction.search.time_budget_s = std::numeric_limits<double>::infinity();
 
   // Read before the search part, so a bad runner config stops the suite at once, and only once.
@@ -525,8 +525,8 @@ int main(int argc, char** argv)
     return scenarios::toAnswer(runner->run(kept[job.world].world, job.task, slot.ours, slot.sensing,
                                            budget.seconds(job.task.optimal)));
   };
-  // Wall time: the runner runs several times faster than simulated time (at most 0.28 s of wall per
-  // simulated second in the suite of 2026-11-27), so only a hung run meets this.
+  // Wall time: the runner runs several times faster than simulated time (well under 1 s of wall per
+  // simulated second, bench/results), so only a hung run meets this.
   runs.deadline = [&](std::size_t index) {
     const double seconds = 120.0 + budget.seconds(jobs[slots[index].job].task.optimal);
     return std::chrono::milliseconds(static_cast<long long>(1000.0 * seconds));
