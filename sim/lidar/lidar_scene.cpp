@@ -75,6 +75,8 @@ class LidarScene::CrossingWalk {
       hit_.surface = RayHit::Surface::Wall;
       hit_.horizontal_distance = crossing.distance;
       hit_.reflectivity = segment.reflectivity;
+      hit_.wall_facing = std::abs(ray_.direction_x * segment.delta_y - ray_.direction_y * segment.delta_x) /
+                         std::hypot(segment.delta_x, segment.delta_y);
       return true;
     }
     if (crossing.entering && ray_.slope < 0.0 && height > segment.height) {
