@@ -31,12 +31,15 @@ ForceModelReading ForceSensorModel::next(std::int64_t now_us, double true_force_
     reading.force_n = held_n_;
     return reading;
   }
+  // The frame after an episode is a healthy one: the firmware is back before it can hang again.
+  const bool recovering = stuck_until_us_ >= 0;
+  stuck_until_us_ = -1;
   double value = true_force_n + bias_n_;
   if (settings_.noise_n > 0.0) {
     value += settings_.noise_n * unit_(random_);
   }
   reading.force_n = value;
-  if (settings_.stuck_interval_s > 0.0 && elapsed_s > 0.0 &&
+  if (!recovering && settings_.stuck_interval_s > 0.0 && elapsed_s > 0.0 &&
       uniform_(random_) < 1.0 - std::exp(-elapsed_s / settings_.stuck_interval_s)) {
     stuck_until_us_ = now_us + std::llround(settings_.stuck_duration_s * 1e6);
     held_n_ = value;

@@ -39,6 +39,8 @@ void PoseEstimateModel::advance(const VehicleMotion& truth)
       correct(truth);
       scheduleCorrection(truth.time_ns);
     }
+  } else {
+    estimate_ = truth.pose;
   }
   truth_ = truth;
   VehicleMotion estimate = truth;
