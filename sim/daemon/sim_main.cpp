@@ -37,7 +37,8 @@ struct CommandLine {
 };
 
 /// The config's settings, with the command line's sensing profile when given.
-ifar::sim::SimNodeSettings loadSettings(const ifar::common::ConfigNode& config, const CommandLine& command_line)
+ifar::sim::SimNodeSettings loadSettings(const ifar::common::ConfigNode& config,
+                                        const CommandLine& command_line)
 {
   std::optional<ifar::sim::SensingProfile> profile;
   if (!command_line.sensing.empty()) {
@@ -207,9 +208,10 @@ int main(int argc, char** argv)
             "Generate the world (seed from the config): room, room_objects, office, tunnel, demo_room");
         app.add_option("--builtin", command_line.builtin,
                        "Use a built-in world instead of a file: room, push_light, push_heavy, tunnel");
-        app.add_option("--sensing", command_line.sensing,
-                       "Sensing profile instead of the config's sensing.profile: ideal (exact sensors) or field "
-                       "(docs/simulator.md); the config's other sensing keys still apply")
+        app.add_option(
+               "--sensing", command_line.sensing,
+               "Sensing profile instead of the config's sensing.profile: ideal (exact sensors) or field "
+               "(docs/simulator.md); the config's other sensing keys still apply")
             ->check(CLI::IsMember(ifar::sim::sensingProfileNames()));
       });
 }

@@ -71,7 +71,8 @@ std::vector<Vlp16Packet> Vlp16Scanner::advance(std::int64_t end_time_ns, const g
       double slant = hit.horizontal_distance / cosines_[laser];
       bool returned = hit.surface != RayHit::Surface::None;
       std::uint8_t reflectivity =
-          returned ? static_cast<std::uint8_t>(std::lround(std::clamp(hit.reflectivity, 0.0, 1.0) * 255.0)) : 0;
+          returned ? static_cast<std::uint8_t>(std::lround(std::clamp(hit.reflectivity, 0.0, 1.0) * 255.0))
+                   : 0;
       if (returned && model_.active()) {
         // A face's normal is horizontal (incidence from the beam's elevation and its facing), a top's and
         // the ground's vertical.

@@ -267,7 +267,8 @@ void PhysicsWorld::Implementation::applyWheelForces()
       // The tyre transmits force only by slipping: the slip ratio (relative to the faster of wheel and
       // ground, with a floor so that creeping does not divide by nothing) sets what it can carry.
       const double reference =
-          std::max({std::abs(wheel_targets[wheel]), std::abs(static_cast<double>(b2Dot(velocity, forward))), kSlipSpeedFloor});
+          std::max({std::abs(wheel_targets[wheel]), std::abs(static_cast<double>(b2Dot(velocity, forward))),
+                    kSlipSpeedFloor});
       const double ratio = std::abs(longitudinal_slip) / reference;
       const double tyre = traction_limit * (1.0 - std::exp(-ratio / settings.slip_ratio_scale));
       longitudinal_force = std::clamp(longitudinal_force, -tyre, tyre);

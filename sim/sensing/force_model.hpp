@@ -12,8 +12,8 @@
 namespace ifar::sim {
 
 struct ForceModelReading {
-  bool send = true;     // false: this frame is lost
-  bool stuck = false;   // the frame repeats the episode's first frame (counter frozen)
+  bool send = true;    // false: this frame is lost
+  bool stuck = false;  // the frame repeats the episode's first frame (counter frozen)
   double force_n = 0.0;
 };
 

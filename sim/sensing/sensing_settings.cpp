@@ -13,9 +13,9 @@ SensingSettings fieldProfile()
   auto& pose = sensing.pose;
   pose.jitter_position_m = 0.01;
   pose.jitter_heading_rad = 0.002;
-  pose.drift_position_m_per_sqrt_m = 0.0316;     // 10 cm (1 %) after 10 m
-  pose.drift_heading_rad_per_sqrt_m = 0.00276;   // 0.5 degree after 10 m
-  pose.drift_heading_rad_per_sqrt_rad = 0.002;   // 0.3 degree after a full turn
+  pose.drift_position_m_per_sqrt_m = 0.0316;    // 10 cm (1 %) after 10 m
+  pose.drift_heading_rad_per_sqrt_m = 0.00276;  // 0.5 degree after 10 m
+  pose.drift_heading_rad_per_sqrt_rad = 0.002;  // 0.3 degree after a full turn
   pose.latency_s = 0.05;
   pose.correction_interval_s = 20.0;
   pose.correction_fraction = 0.8;

@@ -44,8 +44,8 @@ RunBytes runNode(const World& world, const SimNodeSettings& settings, int steps,
       run.pose_messages.push_back(*result.pose);
     }
     run.left_actual.push_back(left.status(now_us).actual_velocity);
-    const auto wanted = motor::wheelVelocities(linear, step < steps / 2 ? 0.0 : angular, vehicle.wheel_track_m,
-                                               vehicle.wheel_radius_m);
+    const auto wanted = motor::wheelVelocities(linear, step < steps / 2 ? 0.0 : angular,
+                                               vehicle.wheel_track_m, vehicle.wheel_radius_m);
     left.command(wanted.left, now_us);
     right.command(wanted.right, now_us);
     for (auto* client : {&left, &right}) {

@@ -18,7 +18,7 @@ struct RunBytes {
   std::vector<std::uint8_t> frames;   // id, length and data of every CAN frame sent
   std::vector<std::uint8_t> poses;    // every pose_t, LCM-encoded
   std::vector<ifar::pose_t> pose_messages;
-  std::vector<StepOutput> outputs;    // per step, packets left out (ground truth, estimates, forces)
+  std::vector<StepOutput> outputs;        // per step, packets left out (ground truth, estimates, forces)
   std::vector<std::int32_t> left_actual;  // TPDO1 actual velocity of the left drive, 0.001 rad/s
 };
 

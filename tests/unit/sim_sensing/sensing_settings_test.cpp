@@ -56,8 +56,8 @@ TEST(SensingConfig, TheProfileGivesTheDefaultsAndKeysOverrideThem)
 
 TEST(SensingConfig, AProfileFromTheCommandLineReplacesTheFilesAndKeepsItsOverrides)
 {
-  const auto root = common::ConfigNode::loadString(
-      "sensing:\n  profile: ideal\n  pose: {latency_s: 0.1}\n", "sim.yaml");
+  const auto root =
+      common::ConfigNode::loadString("sensing:\n  profile: ideal\n  pose: {latency_s: 0.1}\n", "sim.yaml");
   const SensingSettings ideal = loadSimNodeSettings(root).simulator.sensing;
   EXPECT_EQ(ideal.profile, SensingProfile::kIdeal);
   EXPECT_DOUBLE_EQ(ideal.pose.latency_s, 0.1);
