@@ -67,6 +67,7 @@ class LidarScene {
     double start_x, start_y, delta_x, delta_y;
     double height;
     double reflectivity;
+    double inverse_length;  // 1 / |delta|: a hit's facing without a square root per ray
     std::int32_t prism;
   };
   struct Crossing {
