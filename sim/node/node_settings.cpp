@@ -54,7 +54,6 @@ void addSimulator(Table& table)
 /// shows the ideal profile's).
 void addSensing(Table& table)
 {
-  using common::ParameterRange;
   const auto fraction = Range::between(0.0, 1.0);
   const auto reflectivity = Range::between(0, 255);
   table

@@ -1,5 +1,6 @@
 #include <stdexcept>
 #include <string>
+#include <variant>
 
 #include <gtest/gtest.h>
 
@@ -95,6 +96,33 @@ TEST(SensingConfig, BadValuesNameTheKey)
   const auto typo = common::ConfigNode::loadString("sensing:\n  lidar: {range_noise: 0.03}\n", "sim.yaml");
   loadSimNodeSettings(typo);
   EXPECT_THROW(typo.rejectUnknownKeys(), common::ConfigError);
+}
+
+// The reference (docs/configuration.md) quotes each key's field value: it must be the profile's.
+TEST(SensingConfig, TheMeaningsQuoteTheFieldProfilesValues)
+{
+  SimNodeSettings field;
+  field.simulator.sensing = sensingProfile(SensingProfile::kField);
+  const auto infos = simNodeParameters().infos();
+  const auto values = simNodeParameters().values(field);
+  int quoted = 0;
+  for (std::size_t index = 0; index < infos.size(); ++index) {
+    const std::string& meaning = infos[index].meaning;
+    const auto at = meaning.find("(field ");
+    if (infos[index].key.rfind("sensing.", 0) != 0 || at == std::string::npos) {
+      continue;
+    }
+    const double value = std::holds_alternative<double>(values[index])
+                             ? std::get<double>(values[index])
+                             : static_cast<double>(std::get<std::int64_t>(values[index]));
+    const std::string written = common::formatNumber(value);
+    EXPECT_EQ(meaning.compare(at + 7, written.size(), written), 0) << infos[index].key << ": " << meaning;
+    EXPECT_TRUE(meaning.size() > at + 7 + written.size() &&
+                (meaning[at + 7 + written.size()] == ')' || meaning[at + 7 + written.size()] == ':'))
+        << infos[index].key << ": " << meaning;
+    ++quoted;
+  }
+  EXPECT_GE(quoted, 20);
 }
 
 TEST(SensingStreams, AreIndependentOfEachOther)
