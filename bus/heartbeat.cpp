@@ -2,6 +2,12 @@
 
 #include <unistd.h>
 
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+
+#include "bus/duplicate_process_watch.hpp"
 #include "common/time.hpp"
 #include "ifar/heartbeat_t.hpp"
 
@@ -58,11 +64,22 @@ void publishHeartbeats(RunLoop& loop, const std::string& process, double period_
   beat.process = process;
   beat.pid = static_cast<std::int32_t>(::getpid());
   beat.sequence = 0;
+  // Shared by the subscription that fills it and the timer that reports it, both run by this loop.
+  auto duplicates = std::make_shared<DuplicateProcessWatch>(process, beat.pid);
+  loop.subscribe<heartbeat_t>(kHeartbeatChannel, [&loop, duplicates](const heartbeat_t& other, std::int64_t) {
+    if (const std::optional<std::string> alarm = duplicates->onBeat(other.process, other.pid, loop.now())) {
+      loop.logger().error("{}", *alarm);
+    }
+  });
   LoopCounters previous = countersOf(loop);
-  loop.every(period_s, [&loop, beat, previous, problem = std::move(problem)]() mutable {
+  loop.every(period_s, [&loop, beat, previous, duplicates, problem = std::move(problem)]() mutable {
     const LoopCounters current = countersOf(loop);
-    const LoopHealth health =
-        withDaemonProblem(healthBetween(previous, current), problem ? problem() : std::string());
+    std::string own_problem = problem ? problem() : std::string();
+    const std::string duplicate = duplicates->problem(loop.now());
+    if (!duplicate.empty()) {
+      own_problem = own_problem.empty() ? duplicate : duplicate + "; " + own_problem;
+    }
+    const LoopHealth health = withDaemonProblem(healthBetween(previous, current), own_problem);
     previous = current;
     beat.utime = common::nowMicroseconds();
     beat.health = health.level;

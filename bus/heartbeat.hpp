@@ -38,7 +38,8 @@ using DaemonProblem = std::function<std::string()>;
 
 /// Publishes a heartbeat_t for `process` on kHeartbeatChannel from `loop` every `period_s` seconds (the
 /// first one period after the loop starts), with this process's id and a sequence from 0; `problem`
-/// (may be empty) is asked at each beat.
+/// (may be empty) is asked at each beat. It also watches the heartbeats of `process`'s name: another process
+/// of that name on the same URL is logged as an error and reported in every beat (DEGRADED) while present.
 void publishHeartbeats(RunLoop& loop, const std::string& process, double period_s = 1.0,
                        DaemonProblem problem = {});
 

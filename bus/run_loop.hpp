@@ -86,6 +86,7 @@ class RunLoop {
   bool stopping() const { return stopping_; }
 
   lcm::LCM& lcm() { return lcm_; }
+  spdlog::logger& logger() const { return *logger_; }
   std::int64_t handlerErrors() const { return handler_errors_; }
   std::int64_t badMessages() const { return bad_messages_; }
   std::int64_t publishErrors() const { return publish_errors_; }

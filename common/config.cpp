@@ -123,10 +123,22 @@ std::vector<std::string> splitKey(const std::string& key)
   return parts;
 }
 
+/// The most nodes a document may hold once its aliases are expanded. An alias names a subtree again, so a
+/// few hundred bytes of nested aliases expand to billions of nodes and every walk over the tree would never
+/// end; the largest world file this project reads (10^5 objects) stays far below this.
+constexpr std::size_t kMaxExpandedNodes = 4'000'000;
+
 /// yaml-cpp keeps both entries of a key given twice in one map and lookups see the first: an edit
-/// appended to a file would be silently ignored, so a repeated key is an error naming its line.
-void rejectDuplicateKeys(const YAML::Node& node, const std::string& path, const std::string& source_name)
+/// appended to a file would be silently ignored, so a repeated key is an error naming its line. Counts
+/// the nodes it walks into `walked` and refuses a document with more than kMaxExpandedNodes.
+void rejectDuplicateKeys(const YAML::Node& node, const std::string& path, const std::string& source_name,
+                         std::size_t& walked)
 {
+  if (++walked > kMaxExpandedNodes) {
+    throw ConfigError(source_name + ": more than " + std::to_string(kMaxExpandedNodes) +
+                      " YAML nodes once its aliases are expanded (near key '" + path +
+                      "'): refused as too large (an alias bomb?)");
+  }
   if (node.IsMap()) {
     std::set<std::string> seen;
     for (const auto& entry : node) {
@@ -138,11 +150,11 @@ void rejectDuplicateKeys(const YAML::Node& node, const std::string& path, const 
         message += ": key '" + full_path + "': given twice in the same map";
         throw ConfigError(message);
       }
-      rejectDuplicateKeys(entry.second, full_path, source_name);
+      rejectDuplicateKeys(entry.second, full_path, source_name, walked);
     }
   } else if (node.IsSequence()) {
     for (std::size_t index = 0; index < node.size(); ++index) {
-      rejectDuplicateKeys(node[index], path + "[" + std::to_string(index) + "]", source_name);
+      rejectDuplicateKeys(node[index], path + "[" + std::to_string(index) + "]", source_name, walked);
     }
   }
 }
@@ -190,7 +202,8 @@ ConfigNode ConfigNode::loadString(const std::string& text, const std::string& so
     throw ConfigError(source_name + ": the top level must be a map of settings, found " +
                       describeValue(root));
   }
-  rejectDuplicateKeys(root, "", source_name);
+  std::size_t walked = 0;
+  rejectDuplicateKeys(root, "", source_name, walked);
   return ConfigNode(root, "", std::make_shared<const std::string>(source_name),
                     std::make_shared<std::set<std::string>>());
 }

@@ -5,6 +5,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include <spdlog/spdlog.h>
 
@@ -24,7 +25,15 @@ spdlog::level::level_enum parseLogLevel(const std::string& text);
 /// The level the precedence rule picks, given the SPDLOG_LEVEL value (nullptr when unset).
 spdlog::level::level_enum chooseLogLevel(const LoggingOptions& options, const char* environment_level);
 
-/// Creates (or replaces) and registers the logger `name` with console and rotating-file sinks.
+/// `text` with newlines, carriage returns and tabs written as \n, \r, \t and every other control character
+/// as \xNN: one log line stays one line whatever a message from the bus holds.
+std::string escapeControlCharacters(std::string_view text);
+
+/// The daemons' log line: time, logger name, level and the message with its control characters escaped.
+std::unique_ptr<spdlog::formatter> daemonLogFormatter();
+
+/// Creates (or replaces) and registers the logger `name` with console and rotating-file sinks, each line
+/// written by daemonLogFormatter().
 std::shared_ptr<spdlog::logger> makeLogger(const std::string& name, const LoggingOptions& options);
 
 }  // namespace ifar::common

@@ -1,6 +1,7 @@
 #include "system/run_config.hpp"
 
 #include <filesystem>
+#include <stdexcept>
 
 #include "common/config.hpp"
 #include "common/daemon_main.hpp"
@@ -121,6 +122,22 @@ RunRequest loadRunSettings(const std::string& config_directory)
   loadCan(config_directory, request);
   loadVelodyne(config_directory, request);
   return request;
+}
+
+}  // namespace ifar::runner
+
+namespace ifar::runner {
+
+std::vector<std::string> sensingProfileNames()
+{
+  return {"ideal"};
+}
+
+void applySensingProfile(RunRequest& /*request*/, const std::string& name)
+{
+  if (name != "ideal") {
+    throw std::invalid_argument("no sensing profile '" + name + "'");
+  }
 }
 
 }  // namespace ifar::runner

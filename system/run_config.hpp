@@ -7,6 +7,7 @@
 // `vehicle_config` paths inside planner.yaml and sim.yaml name it for the daemons).
 
 #include <string>
+#include <vector>
 
 #include "system/scenario_runner.hpp"
 
@@ -19,5 +20,12 @@ RunRequest loadRunSettings(const std::string& config_directory);
 /// The effective settings of every file in `config_directory` as a YAML stream, one document per file,
 /// each key's meaning as a comment (ifar run --print-config). Throws as loadRunSettings does.
 std::string runConfigYaml(const std::string& config_directory);
+
+/// The simulator's named sensing profiles ("ideal" first), for --sensing.
+std::vector<std::string> sensingProfileNames();
+
+/// Replaces the request's sensing models (sim.yaml sensing:) by the named profile's. Throws
+/// std::invalid_argument naming the profile when there is none of that name.
+void applySensingProfile(RunRequest& request, const std::string& name);
 
 }  // namespace ifar::runner

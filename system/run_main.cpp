@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <iostream>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <utility>
 
@@ -146,6 +147,11 @@ int main(int argc, char** argv)
   app.add_option("--config-dir", config_dir,
                  "Directory with vehicle.yaml, planner.yaml, executive.yaml and sim.yaml")
       ->capture_default_str();
+  std::string sensing;
+  app.add_option("--sensing", sensing,
+                 "Sensing profile of the simulator instead of sim.yaml sensing: (ideal: exact pose, lidar, "
+                 "wheels and force; field: a state estimator's drift, jitter and jumps, lidar noise and "
+                 "dropouts, wheel slip, force sensor noise)");
   bool print_config = false;
   app.add_flag(
       "--print-config", print_config,
@@ -204,6 +210,14 @@ int main(int argc, char** argv)
         std::cerr << "error: " << option << ": cannot write '" << path << "': " << problem << "\n";
         return kExitBadInput;
       }
+    }
+  }
+  if (!sensing.empty()) {
+    try {
+      ifar::runner::applySensingProfile(request, sensing);
+    } catch (const std::invalid_argument& error) {
+      std::cerr << "error: --sensing: " << error.what() << "\n";
+      return kExitBadInput;
     }
   }
   request.max_sim_time_s = max_time_s;

@@ -14,6 +14,7 @@
 
 #include "common/percentile.hpp"
 #include "executive/modes/mode.hpp"
+#include "system/saturated_push_watch.hpp"
 #include "system/simulated_stack.hpp"
 
 namespace ifar::runner {
@@ -67,6 +68,16 @@ std::string requestProblem(const RunRequest& request)
   return {};
 }
 
+/// The watch for pushes at maximum force that the executive leaves undecided: the executive's own
+/// notion of maximum force (fraction of the traction limit, capped by the sensor's range) and its window.
+SaturatedPushWatch saturatedPushWatch(const RunRequest& request)
+{
+  const executive::TactileSettings& tactile = request.executive.tactile;
+  const double max_force_n = std::min(request.vehicle.maxPushForce(), request.vehicle.force_sensor_range_n);
+  return SaturatedPushWatch(tactile.max_force_fraction * max_force_n,
+                            tactile.no_motion_time_s + kDecisionAllowanceS);
+}
+
 /// One run: the stack, and what the summary needs from it.
 class Scenario {
  public:
@@ -96,6 +107,7 @@ class Scenario {
       findings_;  // the executive's AFFORDANCE and BLOCKED_PASSAGE texts not yet answered
   std::int64_t stopped_since_us_ = -1;
   bool ended_ = false;
+  SaturatedPushWatch saturated_pushes_;
   std::vector<double> frame_ms_;        // per planner frame, for summary_.planner_frame
   std::vector<double> interaction_ms_;  // ... and summary_.interaction
   RunSummary summary_;
@@ -114,7 +126,8 @@ Scenario::Scenario(const RunRequest& request, const std::function<void(const std
                             [this](const executive::ExecutiveOutputs& outputs, std::int64_t now_us) {
                               executiveCycled(outputs, now_us);
                             }}),
-      vehicle_(request.world.start)
+      vehicle_(request.world.start),
+      saturated_pushes_(saturatedPushWatch(request))
 {
 }
 
@@ -133,6 +146,7 @@ void Scenario::simulatorStepped(const sim::SimulatorStep& step)
   summary_.distance_m += (step.output.vehicle.pose.position() - vehicle_.position()).norm();
   vehicle_ = step.output.vehicle.pose;
   objects_ = step.output.objects;
+  saturated_pushes_.force(step.output.utime, step.output.bumper_force_n);
 }
 
 void Scenario::plannerFinished(const planner::PlannerJob& job, const planner::PlannerJobResult& finished,
@@ -168,6 +182,7 @@ void Scenario::executiveCycled(const executive::ExecutiveOutputs& outputs, std::
   summary_.replans = result.status.replans;
   if (result.affordance) {
     ++summary_.affordance_updates;
+    saturated_pushes_.decided(now_us);
     findings_.push_back("affordance: " + result.affordance->text);
   }
   if (result.blocked_passage) {
@@ -231,6 +246,8 @@ RunSummary Scenario::run()
   summary_.goal_distance_m = (vehicle_.position() - request_.goal).norm();
   summary_.planner_frame = frameTimes(frame_ms_);
   summary_.interaction = frameTimes(interaction_ms_);
+  summary_.undecided_saturated_pushes = saturated_pushes_.undecided();
+  summary_.longest_saturated_push_s = saturated_pushes_.longestUndecidedSeconds();
   for (const auto& object : objects_) {
     summary_.final_objects.push_back(object.pose);
   }

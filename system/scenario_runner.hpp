@@ -58,6 +58,10 @@ struct FrameTimes {
   double max_ms = std::numeric_limits<double>::quiet_NaN();
 };
 
+/// How long past the tactile monitor's window a push at maximum force may last before its decision
+/// counts as missing: the decision has to reach the push sequence and the vehicle has to ease off.
+constexpr double kDecisionAllowanceS = 2.0;
+
 struct RunSummary {
   bool arrived = false;
   std::string reason;       // why it ended: "arrived", "timeout", "stopped: <executive reason>", ...
@@ -67,11 +71,15 @@ struct RunSummary {
   int pushes = 0;
   int replans = 0;
   int affordance_updates = 0;
-  int blocked_passages = 0;                    // passages the executive gave up and the planner sealed
-  double goal_distance_m = 0.0;                // final ground-truth distance to the goal
-  FrameTimes planner_frame;                    // each planner frame: perception, graphs, interaction, search
-  FrameTimes interaction;                      // its interaction stage alone (no frame budget in the runner)
-  std::vector<geometry::Pose2> trajectory;     // ground truth, one per control cycle
+  int blocked_passages = 0;  // passages the executive gave up and the planner sealed
+  /// Pushes held at the maximum force (true bumper force) longer than the tactile monitor's window plus
+  /// kDecisionAllowanceS without an affordance decision; a working monitor keeps this at 0.
+  int undecided_saturated_pushes = 0;
+  double longest_saturated_push_s = 0.0;    // the longest spell at maximum force without a decision, seconds
+  double goal_distance_m = 0.0;             // final ground-truth distance to the goal
+  FrameTimes planner_frame;                 // each planner frame: perception, graphs, interaction, search
+  FrameTimes interaction;                   // its interaction stage alone (no frame budget in the runner)
+  std::vector<geometry::Pose2> trajectory;  // ground truth, one per control cycle
   std::vector<geometry::Pose2> final_objects;  // ground truth object poses at the end, world-file order
 };
 

@@ -101,7 +101,7 @@ inline LocalScene fireDoorBesideARoomScene()
 
 /// The fire door with a room along the corridor's south side (wall real -0.1 < y < 0, room down to y =
 /// -4), its doors at real -4.8 < x < -3.6 and 3.6 < x < 4.8: a box pushed 2 m along the corridor closes
-/// it, yet the corridor beyond stays reachable round through the room (office2x-3+4 t0).
+/// it, yet the corridor beyond stays reachable round through the room.
 inline LocalScene fireDoorWithALoopRoundItScene()
 {
   LocalScene scene = fireDoorScene();

@@ -102,7 +102,7 @@ std::string utcNow()
 
 scenarios::ResultRow systemRow(scenarios::ScenarioKind kind, const std::string& world,
                                const scenarios::Task& task, const std::string& planner,
-                               const scenarios::SystemRun& run)
+                               const std::string& sensing, const scenarios::SystemRun& run)
 {
   scenarios::ResultRow row;
   row.table = "system";
@@ -121,6 +121,8 @@ scenarios::ResultRow systemRow(scenarios::ScenarioKind kind, const std::string& 
   row.frame_p99_ms = run.frame_p99_ms;
   row.frame_max_ms = run.frame_max_ms;
   row.interaction_max_ms = run.interaction_max_ms;
+  row.sensing = sensing;
+  row.undecided_saturated_pushes = run.undecided_saturated_pushes;
   if (!run.ran) {
     row.status = "runner_unavailable";
     row.reason = run.reason;
@@ -138,11 +140,13 @@ scenarios::ResultRow systemRow(scenarios::ScenarioKind kind, const std::string& 
 }
 
 scenarios::ResultRow skippedRow(scenarios::ScenarioKind kind, const std::string& world,
-                                const scenarios::Task& task, const std::string& planner)
+                                const scenarios::Task& task, const std::string& planner,
+                                const std::string& sensing)
 {
   scenarios::ResultRow row;
   row.table = "system";
   row.planner = planner;
+  row.sensing = sensing;
   row.kind = scenarios::kindName(kind);
   row.world = world;
   row.task = task.id;
@@ -162,10 +166,12 @@ struct SystemJob {
   scenarios::Task task;
 };
 
-/// One runner run of a job: FAR mode or ours, filled in as its child process answers.
+/// One runner run of a job: FAR mode or ours under one sensing profile, filled in as its child process
+/// answers.
 struct SystemSlot {
   std::size_t job;  // index into the jobs
-  bool ours;        // false: FAR mode
+  std::string sensing;
+  bool ours;  // false: FAR mode
   scenarios::SystemRun run;
   bool skipped;  // the --system-budget was spent before it started
 };
@@ -197,6 +203,7 @@ int main(int argc, char** argv)
   bool no_system = false;
   bool smoke = false;
   std::string system_kind_list = "office,tunnel,room_objects,willow,room";
+  std::string sensing_list = "ideal,field";
   int system_tasks = 3;
   scenarios::SimTimeBudget budget;  // the runner's stop: 60 s + 4 s/m, at most 1,800 s
   double strict_per_metre_s = 2.0;
@@ -238,6 +245,11 @@ int main(int argc, char** argv)
   app.add_flag("--no-plots", no_plots, "write no PNGs");
   app.add_flag("--no-system", no_system, "skip the headless-runner runs (Table II driven, Table III)");
   app.add_option("--system-kinds", system_kind_list, "kinds driven in the runner, in this order")
+      ->capture_default_str();
+  app.add_option(
+         "--sensing", sensing_list,
+         "comma-separated sensing profiles every driven task is run under (sim.yaml sensing:): ideal, "
+         "field")
       ->capture_default_str();
   app.add_option("--system-tasks", system_tasks, "the first N tasks of each kind are driven")
       ->check(CLI::NonNegativeNumber)
@@ -328,6 +340,19 @@ int main(int argc, char** argv)
     }
   }
 
+  const std::vector<std::string> sensing_profiles = splitList(sensing_list);
+  for (const std::string& sensing : sensing_profiles) {
+    const std::vector<std::string> known = scenarios::sensingProfileNames();
+    if (std::find(known.begin(), known.end(), sensing) == known.end()) {
+      std::cerr << "ifar bench: --sensing: unknown profile '" << sensing << "'\n";
+      return 1;
+    }
+  }
+  if (sensing_profiles.empty()) {
+    std::cerr << "ifar bench: --sensing: name at least one profile\n";
+    return 1;
+  }
+
   ifar::common::VehicleSettings vehicle;
   const std::string vehicle_path = config_dir + "/vehicle.yaml";
   if (std::ifstream(vehicle_path).good()) {
@@ -363,7 +388,7 @@ int main(int argc, char** argv)
   }
   // A planned row must not depend on machine load: the push searches stop on their expansion limit only.
   // With the time budget, a wider search that ran out of time under load was not "exhausted", so the next
-  // one never ran (tunnel-1 t2 came out 346.6 m, 521.4 m or no path). The driven runs keep the budget.
+  // one never ran and a planned length depended on the load. The driven runs keep the budget.
   map_settings.interaction.search.time_budget_s = std::numeric_limits<double>::infinity();
 
   // Read before the search part, so a bad runner config stops the suite at once, and only once.
@@ -482,9 +507,11 @@ int main(int argc, char** argv)
   // Every (task, mode) run is independent and deterministic in simulated time: they start in order, and
   // the rows keep that order whatever finishes first.
   std::vector<SystemSlot> slots;
-  for (std::size_t job = 0; job < jobs.size(); ++job) {
-    for (const bool ours : {false, true}) {
-      slots.push_back({job, ours, {}, false});
+  for (const std::string& sensing : sensing_profiles) {
+    for (std::size_t job = 0; job < jobs.size(); ++job) {
+      for (const bool ours : {false, true}) {
+        slots.push_back({job, sensing, ours, {}, false});
+      }
     }
   }
   // Each run is driven in a child process of its own, `jobs_count` at once, so a runner that crashes or
@@ -495,11 +522,11 @@ int main(int argc, char** argv)
   runs.answer = [&](std::size_t index) {
     const SystemSlot& slot = slots[index];
     const SystemJob& job = jobs[slot.job];
-    return scenarios::toAnswer(
-        runner->run(kept[job.world].world, job.task, slot.ours, budget.seconds(job.task.optimal)));
+    return scenarios::toAnswer(runner->run(kept[job.world].world, job.task, slot.ours, slot.sensing,
+                                           budget.seconds(job.task.optimal)));
   };
-  // Wall time: the runner runs several times faster than simulated time (at most 0.28 s of wall per
-  // simulated second in the suite of 2026-11-27), so only a hung run meets this.
+  // Wall time: the runner runs several times faster than simulated time (well under 1 s of wall per
+  // simulated second, bench/results), so only a hung run meets this.
   runs.deadline = [&](std::size_t index) {
     const double seconds = 120.0 + budget.seconds(jobs[slots[index].job].task.optimal);
     return std::chrono::milliseconds(static_cast<long long>(1000.0 * seconds));
@@ -525,11 +552,12 @@ int main(int argc, char** argv)
       slot.run.failure_status = outcome.answered ? "error" : outcome.status;
       slot.run.reason = "runner " + (outcome.answered ? "answer could not be read" : outcome.reason);
     }
-    const scenarios::ResultRow row =
-        systemRow(job.kind, kept[job.world].name, job.task, slot.ours ? "ours" : "far", slot.run);
+    const scenarios::ResultRow row = systemRow(job.kind, kept[job.world].name, job.task,
+                                               slot.ours ? "ours" : "far", slot.sensing, slot.run);
     std::cerr << scenarios::kindName(job.kind) << " " << kept[job.world].name << " " << job.task.id << " "
-              << row.planner << ": " << row.status << " " << row.reason << " (" << slot.run.distance_m
-              << " m, " << slot.run.sim_time_s << " s simulated, " << slot.run.wall_time_s << " s wall)\n";
+              << row.planner << " (" << slot.sensing << "): " << row.status << " " << row.reason << " ("
+              << slot.run.distance_m << " m, " << slot.run.sim_time_s << " s simulated, "
+              << slot.run.wall_time_s << " s wall)\n";
   };
   scenarios::runForked(runs);
   std::map<std::size_t, std::vector<scenarios::PathPair>> driven_pairs;  // kept world -> trajectories
@@ -543,11 +571,14 @@ int main(int argc, char** argv)
       }
       const std::string planner = slot.ours ? "ours" : "far";
       if (slot.skipped) {
-        rows.push_back(skippedRow(job.kind, kept[job.world].name, job.task, planner));
+        rows.push_back(skippedRow(job.kind, kept[job.world].name, job.task, planner, slot.sensing));
         ++skipped;
         continue;
       }
-      rows.push_back(systemRow(job.kind, kept[job.world].name, job.task, planner, slot.run));
+      rows.push_back(systemRow(job.kind, kept[job.world].name, job.task, planner, slot.sensing, slot.run));
+      if (slot.sensing != sensing_profiles.front()) {
+        continue;  // the plots show the trajectories of the first profile
+      }
       std::vector<ifar::geometry::Point>& line = slot.ours ? pair.ours : pair.far;
       for (const ifar::geometry::Pose2& pose : slot.run.trajectory) {
         line.push_back(pose.position());

@@ -54,6 +54,8 @@ std::string toJsonLine(const ResultRow& row)
     line += ", \"frame_p99_ms\": " + number(row.frame_p99_ms);
     line += ", \"frame_max_ms\": " + number(row.frame_max_ms);
     line += ", \"interaction_max_ms\": " + number(row.interaction_max_ms);
+    line += ", \"sensing\": " + common::jsonString(row.sensing);
+    line += ", \"undecided_saturated_pushes\": " + std::to_string(row.undecided_saturated_pushes);
   }
   return line + "}";
 }
@@ -84,6 +86,8 @@ void rowFields(Fields& fields, Row& row)
   fields.field(row.frame_p99_ms);
   fields.field(row.frame_max_ms);
   fields.field(row.interaction_max_ms);
+  fields.field(row.sensing);
+  fields.field(row.undecided_saturated_pushes);
 }
 
 }  // namespace

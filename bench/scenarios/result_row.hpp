@@ -31,6 +31,10 @@ struct ResultRow {
   double frame_p99_ms = NAN;
   double frame_max_ms = NAN;
   double interaction_max_ms = NAN;
+  // System rows: the simulator's sensing profile (sim.yaml sensing:, "ideal" or "field"), and the pushes
+  // held at maximum force past the tactile monitor's window without a decision (runner::RunSummary).
+  std::string sensing = "ideal";
+  int undecided_saturated_pushes = 0;
 };
 
 /// Success weighted by path length for one episode: success x optimal / max(length, optimal); 0 for a

@@ -25,6 +25,7 @@ void runFields(Fields& fields, Run& run)
   fields.field(run.frame_p99_ms);
   fields.field(run.frame_max_ms);
   fields.field(run.interaction_max_ms);
+  fields.field(run.undecided_saturated_pushes);
 }
 
 }  // namespace

@@ -33,6 +33,7 @@ struct SystemRun {
   double frame_p99_ms = NAN;
   double frame_max_ms = NAN;
   double interaction_max_ms = NAN;
+  int undecided_saturated_pushes = 0;  // runner::RunSummary::undecided_saturated_pushes
   std::vector<geometry::Pose2> trajectory;
 };
 
@@ -43,6 +44,9 @@ std::optional<SystemRun> systemRunFromAnswer(std::string_view answer);
 
 /// False when this build has no headless runner.
 bool systemRunnerAvailable();
+
+/// The simulator's sensing profiles a run can be driven under ("ideal" first).
+std::vector<std::string> sensingProfileNames();
 
 /// The headless runner with the settings every run of a suite shares, read once: a suite that runs for
 /// an hour must not pick up a config file edited half-way through (nor fail on it run by run).
@@ -56,9 +60,10 @@ class SystemRunner {
   SystemRunner& operator=(const SystemRunner&) = delete;
 
   /// Drives from task.start to task.goal in `world` (its start and goals replaced by the task's) for at
-  /// most `max_sim_time_s` simulated seconds. `interaction_enabled` false is FAR mode. Safe to call from
-  /// several threads at once.
-  SystemRun run(const sim::World& world, const Task& task, bool interaction_enabled,
+  /// most `max_sim_time_s` simulated seconds under the sensing profile `sensing` (one of
+  /// sensingProfileNames()). `interaction_enabled` false is FAR mode. Safe to call from several threads at
+  /// once.
+  SystemRun run(const sim::World& world, const Task& task, bool interaction_enabled, const std::string& sensing,
                 double max_sim_time_s) const;
 
  private:

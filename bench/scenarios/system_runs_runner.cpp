@@ -13,6 +13,11 @@ bool systemRunnerAvailable()
   return true;
 }
 
+std::vector<std::string> sensingProfileNames()
+{
+  return runner::sensingProfileNames();
+}
+
 struct SystemRunner::Settings {
   runner::RunRequest request;  // everything but the world, goal, mode and time cap
 };
@@ -29,10 +34,11 @@ SystemRunner::SystemRunner(const std::string& config_dir)
 SystemRunner::~SystemRunner() = default;
 
 SystemRun SystemRunner::run(const sim::World& world, const Task& task, bool interaction_enabled,
-                            double max_sim_time_s) const
+                            const std::string& sensing, double max_sim_time_s) const
 {
   SystemRun run;
   runner::RunRequest request = settings_->request;
+  runner::applySensingProfile(request, sensing);
   request.world = taskWorld(world, task);
   request.goal = task.goal;
   request.planner.interaction_enabled = interaction_enabled;
@@ -50,6 +56,7 @@ SystemRun SystemRunner::run(const sim::World& world, const Task& task, bool inte
     run.frame_p99_ms = summary.planner_frame.p99_ms;
     run.frame_max_ms = summary.planner_frame.max_ms;
     run.interaction_max_ms = summary.interaction.max_ms;
+    run.undecided_saturated_pushes = summary.undecided_saturated_pushes;
     // One pose per control cycle is more than a plot needs: keep one in ten.
     for (std::size_t index = 0; index < summary.trajectory.size(); index += 10) {
       run.trajectory.push_back(summary.trajectory[index]);

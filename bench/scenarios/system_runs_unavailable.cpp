@@ -8,6 +8,11 @@ bool systemRunnerAvailable()
   return false;
 }
 
+std::vector<std::string> sensingProfileNames()
+{
+  return {"ideal", "field"};  // named for the rows; nothing is driven under them
+}
+
 struct SystemRunner::Settings {};
 
 SystemRunner::SystemRunner(const std::string& /*config_dir*/) {}
@@ -15,7 +20,7 @@ SystemRunner::SystemRunner(const std::string& /*config_dir*/) {}
 SystemRunner::~SystemRunner() = default;
 
 SystemRun SystemRunner::run(const sim::World& /*world*/, const Task& /*task*/, bool /*interaction_enabled*/,
-                            double /*max_sim_time_s*/) const
+                            const std::string& /*sensing*/, double /*max_sim_time_s*/) const
 {
   SystemRun run;
   run.reason = "runner unavailable: this build has no system/ (target ifar_runner)";

@@ -3,6 +3,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -42,6 +43,42 @@ bool readHeaderNumber(std::istream& input, const std::string& path, int& line, c
   return true;
 }
 
+/// Why a map of `width` x `height` cells, each taking at least `bytes_per_cell` of the file, cannot be
+/// read from `input` (positioned after the header of `path`); empty when it can.
+std::string sizeProblem(std::istream& input, const std::string& path, int width, int height,
+                        std::int64_t bytes_per_cell, const MapReadLimits& limits)
+{
+  const std::int64_t cells = static_cast<std::int64_t>(width) * height;
+  if (cells > limits.max_cells) {
+    return path + ": " + std::to_string(width) + " x " + std::to_string(height) +
+           " cells exceed the limit of " + std::to_string(limits.max_cells);
+  }
+  const std::streampos here = input.tellg();
+  input.seekg(0, std::ios::end);
+  const std::streampos end = input.tellg();
+  input.seekg(here);
+  if (here < 0 || end < 0 || !input) {
+    return path + ": cannot tell the file's size";
+  }
+  const std::int64_t remaining = static_cast<std::int64_t>(end - here);
+  if (remaining < cells * bytes_per_cell) {
+    return path + ": the header says " + std::to_string(width) + " x " + std::to_string(height) +
+           " cells but only " + std::to_string(remaining) + " bytes follow it";
+  }
+  return {};
+}
+
+/// Non-empty when `path` exists and is not a regular file (a folder, or a device or pipe that may never
+/// end); a missing file is left to the reader's "cannot open".
+std::string notRegularFile(const std::string& path)
+{
+  std::error_code error;
+  const std::filesystem::file_status status = std::filesystem::status(path, error);
+  return !std::filesystem::exists(status) || std::filesystem::is_regular_file(status)
+             ? std::string()
+             : path + ": not a regular file";
+}
+
 void trimCarriageReturn(std::string& text)
 {
   if (!text.empty() && text.back() == '\r') {
@@ -51,10 +88,14 @@ void trimCarriageReturn(std::string& text)
 
 }  // namespace
 
-MapReadResult readMovingAiMap(const std::string& path)
+MapReadResult readMovingAiMap(const std::string& path, const MapReadLimits& limits)
 {
   MapReadResult result;
-  std::ifstream input(path);
+  result.error = notRegularFile(path);
+  if (!result.error.empty()) {
+    return result;
+  }
+  std::ifstream input(path, std::ios::binary);
   if (!input) {
     result.error = path + ": cannot open";
     return result;
@@ -79,6 +120,11 @@ MapReadResult readMovingAiMap(const std::string& path)
   ++line;
   if (!std::getline(input, text) || (trimCarriageReturn(text), text != "map")) {
     result.error = where(path, line) + "expected 'map'";
+    return result;
+  }
+  // Each row is its width in characters (and a line break, except perhaps the last).
+  result.error = sizeProblem(input, path, width, height, 1, limits);
+  if (!result.error.empty()) {
     return result;
   }
   GridMap map(width, height, 1.0, geometry::Point::Zero(), Cell::Free);
@@ -214,7 +260,7 @@ bool parsePositive(const std::string& token, long long limit, int& value)
 
 }  // namespace
 
-MapReadResult readMapServer(const std::string& yaml_path)
+MapReadResult readMapServer(const std::string& yaml_path, const MapReadLimits& limits)
 {
   MapReadResult result;
   YAML::Node root;
@@ -290,6 +336,11 @@ MapReadResult readMapServer(const std::string& yaml_path)
   }
 
   const std::string image_path = image.front() == '/' ? image : directoryOf(yaml_path) + image;
+  result.error = notRegularFile(image_path);
+  if (!result.error.empty()) {
+    result.error += " (image of " + yaml_path + ")";
+    return result;
+  }
   std::ifstream input(image_path, std::ios::binary);
   if (!input) {
     result.error = image_path + ": cannot open (image of " + yaml_path + ")";
@@ -311,6 +362,12 @@ MapReadResult readMapServer(const std::string& yaml_path)
   }
   if (!nextPgmToken(input, token) || !parsePositive(token, 65535, max_value)) {
     result.error = image_path + ": header: bad maximum value";
+    return result;
+  }
+  // P5 holds one byte a pixel (two above 255), P2 at least a digit and a separator.
+  result.error =
+      sizeProblem(input, image_path, width, height, magic == "P2" || max_value > 255 ? 2 : 1, limits);
+  if (!result.error.empty()) {
     return result;
   }
   GridMap map(width, height, resolution, geometry::Point(origin[0], origin[1]), Cell::Free);
@@ -351,16 +408,16 @@ MapReadResult readMapServer(const std::string& yaml_path)
   return result;
 }
 
-MapReadResult readGridMapFile(const std::string& path)
+MapReadResult readGridMapFile(const std::string& path, const MapReadLimits& limits)
 {
   const auto ends_with = [&](const std::string& suffix) {
     return path.size() >= suffix.size() &&
            path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0;
   };
   if (ends_with(".yaml") || ends_with(".yml")) {
-    return readMapServer(path);
+    return readMapServer(path, limits);
   }
-  return readMovingAiMap(path);
+  return readMovingAiMap(path, limits);
 }
 
 }  // namespace ifar::grid_map

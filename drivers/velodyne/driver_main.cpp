@@ -74,7 +74,9 @@ int runUdp(const DriverSettings& settings, bus::RunLoop& loop, PacketForwarder& 
       return 1;
     }
   }
-  logger.info("receiving VLP-16 data on {}:{}{}", settings.bind_address, settings.data_port,
+  logger.info("receiving VLP-16 data on {}:{}{}{}", settings.bind_address, settings.data_port,
+              settings.sensor_address.empty() ? std::string(" from any source")
+                                              : " from the sensor at " + settings.sensor_address,
               settings.position_packets
                   ? " and position packets on port " + std::to_string(settings.position_port)
                   : std::string());
@@ -107,7 +109,9 @@ int runUdp(const DriverSettings& settings, bus::RunLoop& loop, PacketForwarder& 
           forwarder.onOversizedDatagram(receiver.port(), datagram.wire_size, common::nowMicroseconds());
           continue;
         }
-        forwardDatagram(loop, forwarder, receiver.port(), datagram.payload, datagram.receive_time_us);
+        if (forwarder.acceptsSource(datagram.source_address, common::nowMicroseconds())) {
+          forwardDatagram(loop, forwarder, receiver.port(), datagram.payload, datagram.receive_time_us);
+        }
       }
     }
     loop.spinOnce(0);

@@ -12,6 +12,10 @@ const common::ParameterTable<DriverSettings>& driverParameters()
   static const auto table =
       common::ParameterTable<S>()
           .add("bind_address", &S::bind_address, "", Range::any(), "local IPv4 address to receive on")
+          .add("sensor_address", &S::sensor_address, "", Range::any(),
+               "IPv4 address of the sensor: datagrams from any other source are counted as bad and "
+               "skipped, so a simulator or second sensor on the network cannot feed this vehicle; empty "
+               "accepts every source")
           .add("data_port", &S::data_port, "", port, "VLP-16 data packets (1206-byte payloads)")
           .add("position_packets", &S::position_packets, "", Range::any(),
                "also forward position packets (512 bytes) on position_channel")
@@ -36,6 +40,10 @@ DriverSettings loadDriverSettings(const common::ConfigNode& node)
   if (inet_pton(AF_INET, settings.bind_address.c_str(), &parsed) != 1) {
     node.fail("bind_address",
               "must be an IPv4 address such as 0.0.0.0 or 192.168.1.77, got '" + settings.bind_address + "'");
+  }
+  if (!settings.sensor_address.empty() && inet_pton(AF_INET, settings.sensor_address.c_str(), &parsed) != 1) {
+    node.fail("sensor_address", "must be empty or an IPv4 address such as 192.168.1.201, got '" +
+                                    settings.sensor_address + "'");
   }
   return settings;
 }

@@ -11,6 +11,7 @@ namespace ifar::velodyne {
 
 struct DriverSettings {
   std::string bind_address = "0.0.0.0";  // local IPv4 address the sockets bind
+  std::string sensor_address;            // IPv4 of the sensor; datagrams from elsewhere are refused; "" any
   std::uint16_t data_port = 2368;        // VLP-16 data packets
   bool position_packets = false;         // also forward position packets
   std::uint16_t position_port = 8308;

@@ -1,5 +1,7 @@
 #include "drivers/velodyne/packet_forwarder.hpp"
 
+#include <arpa/inet.h>
+
 #include <algorithm>
 #include <utility>
 
@@ -13,6 +15,10 @@ PacketForwarder::PacketForwarder(const DriverSettings& settings, std::shared_ptr
       logger_(std::move(logger)),
       bad_packet_log_limiter_(common::secondsToMicroseconds(settings.bad_packet_log_interval_s))
 {
+  in_addr sensor{};
+  if (!settings.sensor_address.empty() && inet_pton(AF_INET, settings.sensor_address.c_str(), &sensor) == 1) {
+    sensor_address_ = ntohl(sensor.s_addr);
+  }
 }
 
 std::optional<ForwardedPacket> PacketForwarder::onDatagram(std::uint16_t port, common::ByteView payload,
@@ -50,6 +56,20 @@ void PacketForwarder::onOversizedDatagram(std::uint16_t port, std::size_t wire_s
   reject("datagram of " + std::to_string(wire_size) + " bytes on port " + std::to_string(port) +
              ", larger than any VLP-16 packet",
          now_us);
+}
+
+bool PacketForwarder::acceptsSource(std::uint32_t source_address, std::int64_t now_us)
+{
+  if (!sensor_address_ || source_address == *sensor_address_) {
+    return true;
+  }
+  in_addr address{};
+  address.s_addr = htonl(source_address);
+  char text[INET_ADDRSTRLEN] = {};
+  inet_ntop(AF_INET, &address, text, sizeof(text));
+  monitor_.recordReceived();
+  reject(std::string("datagram from ") + text + ", not the sensor " + settings_.sensor_address, now_us);
+  return false;
 }
 
 void PacketForwarder::reject(const std::string& reason, std::int64_t now_us)

@@ -36,6 +36,11 @@ class PacketForwarder {
   std::optional<ForwardedPacket> onDatagram(std::uint16_t port, common::ByteView payload,
                                             std::int64_t receive_time_us);
 
+  /// Whether a datagram from `source_address` (IPv4, host byte order) comes from the configured sensor
+  /// (DriverSettings::sensor_address; any source when it is empty). One from elsewhere is counted as bad
+  /// and logged (rate limited); the caller skips it.
+  bool acceptsSource(std::uint32_t source_address, std::int64_t now_us);
+
   /// A datagram too large for the receive buffer (`wire_size` bytes): counted as bad and skipped.
   void onOversizedDatagram(std::uint16_t port, std::size_t wire_size, std::int64_t now_us);
 
@@ -54,6 +59,7 @@ class PacketForwarder {
                           std::int64_t receive_time_us, std::uint32_t device_time_past_hour);
 
   DriverSettings settings_;
+  std::optional<std::uint32_t> sensor_address_;  // host byte order; empty: any source
   std::shared_ptr<spdlog::logger> logger_;
   PacketMonitor monitor_;
   common::RateLimiter bad_packet_log_limiter_;

@@ -33,8 +33,9 @@ UdpReceiver::UdpReceiver(std::uint16_t port, const std::string& bind_address,
     last_error_ = errnoText("cannot create a UDP socket for " + where);
     return;
   }
+  // No SO_REUSEADDR: a second receiver on the same port (a second stack's driver on this host) would
+  // silently take the datagrams; it fails to bind instead and says so.
   const int enable = 1;
-  setsockopt(fd_, SOL_SOCKET, SO_REUSEADDR, &enable, sizeof(enable));
   // Best effort: without kernel timestamps receive() falls back to the clock.
   setsockopt(fd_, SOL_SOCKET, SO_TIMESTAMP, &enable, sizeof(enable));
   const int buffer_bytes = static_cast<int>(receive_buffer_bytes);
@@ -49,7 +50,11 @@ UdpReceiver::UdpReceiver(std::uint16_t port, const std::string& bind_address,
     return;
   }
   if (bind(fd_, reinterpret_cast<const sockaddr*>(&address), sizeof(address)) != 0) {
+    const bool in_use = errno == EADDRINUSE;
     last_error_ = errnoText("cannot bind " + where);
+    if (in_use) {
+      last_error_ += " (another receiver on this host has the port: give each stack its own port)";
+    }
     close();
     return;
   }

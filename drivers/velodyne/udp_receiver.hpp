@@ -27,8 +27,9 @@ struct ReceivedDatagram {
 
 class UdpReceiver {
  public:
-  /// Binds 0.0.0.0:`port` (or `bind_address`) with SO_REUSEADDR. On failure isOpen() is false and
-  /// lastError() names the address and the reason. `port` 0 picks a free port (see port()).
+  /// Binds 0.0.0.0:`port` (or `bind_address`), alone: a port another socket holds is an error. On failure
+  /// isOpen() is false and lastError() names the address and the reason. `port` 0 picks a free port (see
+  /// port()).
   explicit UdpReceiver(std::uint16_t port, const std::string& bind_address = "0.0.0.0",
                        std::size_t receive_buffer_bytes = 4 * 1024 * 1024);
   ~UdpReceiver();

@@ -11,6 +11,9 @@
 #include "drivers/force_sensor/force_frame.hpp"
 #include "sim/can_nodes/drive_emulator.hpp"
 #include "sim/physics/physics_world.hpp"
+#include "sim/sensing/force_model.hpp"
+#include "sim/sensing/sensing_settings.hpp"
+#include "sim/sensing/wheel_encoder.hpp"
 
 namespace ifar::sim {
 
@@ -21,6 +24,9 @@ struct CanNodeSettings {
   std::int64_t force_period_us = 10'000;  // 100 Hz
   double force_range_n = 800.0;           // vehicle.yaml force_sensor_range_n
   double wheel_radius_m = 0.15;           // vehicle.yaml wheel_radius_m
+  WheelModelSettings wheels;              // the drives' encoders (sim.yaml sensing.wheels)
+  ForceModelSettings force;               // the force sensor's errors (sim.yaml sensing.force)
+  std::uint64_t seed = 1;                 // sim.yaml seed
 };
 
 class VehicleCanNodes {
@@ -31,7 +37,8 @@ class VehicleCanNodes {
   void onFrame(const can::Frame& frame, std::int64_t now_us);
 
   /// Advances to `now_us` with the current bumper force and wheel speeds; returns the frames to send
-  /// (force frames, heartbeats, TPDO1, EMCY) in order.
+  /// (force frames, heartbeats, TPDO1, EMCY) in order. The force sensor's reading and the drives' actual
+  /// velocity (their encoders) pass through the configured sensing models.
   std::vector<can::Frame> update(std::int64_t now_us, double bumper_force_n,
                                  const physics::WheelSpeeds& actual_wheels);
 
@@ -48,6 +55,10 @@ class VehicleCanNodes {
  private:
   CanNodeSettings settings_;
   force_sensor::ForceSensorEmulator force_sensor_;
+  ForceSensorModel force_model_;
+  WheelEncoder left_encoder_;
+  WheelEncoder right_encoder_;
+  bool force_stuck_ = false;
   DriveEmulator left_;
   DriveEmulator right_;
   std::int64_t next_force_us_ = -1;

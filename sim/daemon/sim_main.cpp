@@ -33,12 +33,24 @@ struct CommandLine {
   std::string world_path;
   std::string builtin;
   std::string generate;
+  std::string sensing;  // --sensing: a profile instead of the config's sensing.profile
 };
+
+/// The config's settings, with the command line's sensing profile when given.
+ifar::sim::SimNodeSettings loadSettings(const ifar::common::ConfigNode& config,
+                                        const CommandLine& command_line)
+{
+  std::optional<ifar::sim::SensingProfile> profile;
+  if (!command_line.sensing.empty()) {
+    profile = ifar::sim::parseSensingProfile(command_line.sensing);
+  }
+  return ifar::sim::loadSimNodeSettings(config, profile);
+}
 
 int runSimulator(ifar::common::DaemonContext& context, const CommandLine& command_line)
 {
   auto& logger = *context.logger;
-  auto settings = ifar::sim::loadSimNodeSettings(context.config);
+  auto settings = loadSettings(context.config, command_line);
   context.config.rejectUnknownKeys();
   const auto vehicle =
       ifar::common::loadVehicleSettings(ifar::common::ConfigNode::loadFile(settings.vehicle_config));
@@ -92,11 +104,13 @@ int runSimulator(ifar::common::DaemonContext& context, const CommandLine& comman
   settings.simulator.epoch_utime = ifar::common::nowMicroseconds();
   ifar::sim::SimulatorNode node(world, vehicle, settings);
   logger.info(
-      "world '{}' from {}: {} obstacles, {} movable objects; lidar to {}:{}, CAN on {}, commands from {}",
+      "world '{}' from {}: {} obstacles, {} movable objects; lidar to {}:{}, CAN on {}, commands from {}, "
+      "sensing {}",
       world.name, world.source, world.obstacles.size(), world.objects.size(), settings.lidar_host,
       settings.lidar_port, bus.name(),
       settings.command_source == ifar::sim::CommandSource::kCan ? "the drives (RPDO1)"
-                                                                : settings.velocity_channel);
+                                                                : settings.velocity_channel,
+      ifar::sim::sensingProfileName(settings.simulator.sensing.profile));
 
   if (settings.command_source == ifar::sim::CommandSource::kLcm) {
     loop.subscribe<ifar::velocity_cmd_t>(
@@ -179,8 +193,8 @@ int main(int argc, char** argv)
   return ifar::common::runDaemon(
       argc, argv,
       {"sim", "Simulator: VLP-16 packets by UDP, CAN force sensor and drives, POSE", "config/sim.yaml",
-       [](const ifar::common::ConfigNode& config) {
-         const auto settings = ifar::sim::loadSimNodeSettings(config);
+       [&command_line](const ifar::common::ConfigNode& config) {
+         const auto settings = loadSettings(config, command_line);
          const auto can_config = ifar::common::ConfigNode::loadFile(settings.can_config);
          ifar::can::loadBusSettings(can_config);
          ifar::sim::loadCanNodes(can_config);
@@ -194,5 +208,10 @@ int main(int argc, char** argv)
             "Generate the world (seed from the config): room, room_objects, office, tunnel, demo_room");
         app.add_option("--builtin", command_line.builtin,
                        "Use a built-in world instead of a file: room, push_light, push_heavy, tunnel");
+        app.add_option(
+               "--sensing", command_line.sensing,
+               "Sensing profile instead of the config's sensing.profile: ideal (exact sensors) or field "
+               "(docs/simulator.md); the config's other sensing keys still apply")
+            ->check(CLI::IsMember(ifar::sim::sensingProfileNames()));
       });
 }

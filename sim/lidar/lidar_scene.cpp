@@ -75,6 +75,8 @@ class LidarScene::CrossingWalk {
       hit_.surface = RayHit::Surface::Wall;
       hit_.horizontal_distance = crossing.distance;
       hit_.reflectivity = segment.reflectivity;
+      hit_.wall_facing = std::abs(ray_.direction_x * segment.delta_y - ray_.direction_y * segment.delta_x) *
+                         segment.inverse_length;
       return true;
     }
     if (crossing.entering && ray_.slope < 0.0 && height > segment.height) {
@@ -132,8 +134,8 @@ void LidarScene::appendSegments(const Prism& prism, std::int32_t index, std::vec
     if (delta.squaredNorm() < 1e-12) {
       continue;
     }
-    segments.push_back(
-        {start.x(), start.y(), delta.x(), delta.y(), prism.height_m, prism.reflectivity, index});
+    segments.push_back({start.x(), start.y(), delta.x(), delta.y(), prism.height_m, prism.reflectivity,
+                        1.0 / delta.norm(), index});
   }
 }
 

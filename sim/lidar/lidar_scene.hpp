@@ -24,6 +24,9 @@ struct RayHit {
   Surface surface = Surface::None;
   double horizontal_distance = 0.0;  // metres along the ground from the ray's origin
   double reflectivity = 0.0;         // 0..1
+  /// Wall hits: |cos| of the angle between the ray's horizontal direction and the face's normal (1 head
+  /// on, 0 grazing); tops and the ground are horizontal, so their incidence is the ray's elevation.
+  double wall_facing = 1.0;
 };
 
 /// A lidar ray: origin at `height` above the ground, horizontal unit direction (cos, sin) and slope
@@ -64,6 +67,7 @@ class LidarScene {
     double start_x, start_y, delta_x, delta_y;
     double height;
     double reflectivity;
+    double inverse_length;  // 1 / |delta|: a hit's facing without a square root per ray
     std::int32_t prism;
   };
   struct Crossing {

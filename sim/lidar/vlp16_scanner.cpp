@@ -13,7 +13,8 @@ constexpr std::int64_t kMicrosecondsPerHour = 3'600'000'000LL;
 
 }  // namespace
 
-Vlp16Scanner::Vlp16Scanner(const Vlp16Settings& settings) : settings_(settings)
+Vlp16Scanner::Vlp16Scanner(const Vlp16Settings& settings)
+    : settings_(settings), model_(settings.model, settings.seed)
 {
   for (std::size_t laser = 0; laser < kVlp16Lasers; ++laser) {
     slopes_[laser] = std::tan(kVlp16VerticalAnglesDeg[laser] * kDegree);
@@ -67,14 +68,27 @@ std::vector<Vlp16Packet> Vlp16Scanner::advance(std::int64_t end_time_ns, const g
       ray.slope = slopes_[laser];
       ray.max_horizontal = settings_.max_range_m * cosines_[laser];
       const RayHit hit = scene.cast(ray);
-      const double slant = hit.horizontal_distance / cosines_[laser];
-      const bool returned = hit.surface != RayHit::Surface::None && slant >= settings_.min_range_m &&
-                            slant <= settings_.max_range_m;
-      const long units = returned ? std::lround(slant / kVlp16DistanceUnitM) : 0;
-      firing.distance_units[laser] = static_cast<std::uint16_t>(std::min<long>(units, 0xFFFF));
-      firing.reflectivity[laser] =
+      double slant = hit.horizontal_distance / cosines_[laser];
+      bool returned = hit.surface != RayHit::Surface::None;
+      std::uint8_t reflectivity =
           returned ? static_cast<std::uint8_t>(std::lround(std::clamp(hit.reflectivity, 0.0, 1.0) * 255.0))
                    : 0;
+      if (returned && model_.active()) {
+        // A face's normal is horizontal (incidence from the beam's elevation and its facing), a top's and
+        // the ground's vertical.
+        const double cos_incidence = hit.surface == RayHit::Surface::Wall
+                                         ? cosines_[laser] * hit.wall_facing
+                                         : std::abs(std::sin(kVlp16VerticalAnglesDeg[laser] * kDegree));
+        const LidarReturn modelled =
+            model_.apply(slant, hit.reflectivity, cos_incidence, hit.surface == RayHit::Surface::Ground);
+        returned = modelled.returned;
+        slant = modelled.slant_m;
+        reflectivity = modelled.reflectivity;
+      }
+      returned = returned && slant >= settings_.min_range_m && slant <= settings_.max_range_m;
+      const long units = returned ? std::lround(slant / kVlp16DistanceUnitM) : 0;
+      firing.distance_units[laser] = static_cast<std::uint16_t>(std::min<long>(units, 0xFFFF));
+      firing.reflectivity[laser] = returned ? reflectivity : 0;
       if (returns != nullptr) {
         returns->push_back({laser_ns, static_cast<int>(laser), azimuth_deg, returned ? slant : 0.0,
                             firing.reflectivity[laser], returned ? hit.surface : RayHit::Surface::None});

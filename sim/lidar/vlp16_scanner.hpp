@@ -15,6 +15,7 @@
 #include "common/geometry/pose2.hpp"
 #include "sim/lidar/lidar_scene.hpp"
 #include "sim/lidar/vlp16_packet_encoder.hpp"
+#include "sim/sensing/lidar_model.hpp"
 
 namespace ifar::sim::lidar {
 
@@ -31,6 +32,8 @@ struct Vlp16Settings {
   double mount_x_m = 0.2;          // vehicle frame
   double mount_height_m = 0.8;     // above ground
   double start_azimuth_deg = 0.0;  // head azimuth at time 0
+  LidarModelSettings model;        // noise, dropouts, reach and reflectivity errors (all 0 = exact)
+  std::uint64_t seed = 1;          // the simulator's seed (the model draws from a stream of its own)
 };
 
 /// One laser return as fired (for tests and tools): what the encoder wrote and where it hit.
@@ -61,6 +64,7 @@ class Vlp16Scanner {
 
  private:
   Vlp16Settings settings_;
+  LidarReturnModel model_;
   std::array<double, kVlp16Lasers> slopes_{};
   std::array<double, kVlp16Lasers> cosines_{};
   std::int64_t next_firing_ = 0;  // index of the next firing sequence

@@ -4,11 +4,14 @@
 // simulator reads them from can.yaml (sim.yaml `can_config`), the file the CAN drivers read.
 
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <string_view>
 
 #include "common/config.hpp"
 #include "common/parameters.hpp"
 #include "sim/can_nodes/vehicle_can_nodes.hpp"
+#include "sim/sensing/sensing_settings.hpp"
 #include "sim/simulator/simulator.hpp"
 
 namespace ifar::sim {
@@ -37,8 +40,14 @@ const common::ParameterTable<SimNodeSettings>& simNodeParameters();
 
 /// Reads the daemon's keys from the root of sim.yaml (all optional with the defaults above, except that
 /// values present must be valid). Throws common::ConfigError naming the key. Leaves the unknown-key
-/// check to the caller.
+/// check to the caller. The sensing models start from `sensing.profile`'s values (sensingProfile) and
+/// every other `sensing.` key present overrides one of them.
 SimNodeSettings loadSimNodeSettings(const common::ConfigNode& root);
+/// The same with the profile given (a command line's --sensing) instead of the file's `sensing.profile`;
+/// the file's other sensing keys still override its values. std::nullopt = the file's profile.
+SimNodeSettings loadSimNodeSettings(const common::ConfigNode& root, std::optional<SensingProfile> profile);
+/// The profile named `name` ("ideal", "field"); throws std::invalid_argument naming the known ones.
+SensingProfile parseSensingProfile(std::string_view name);
 
 /// The emulated drives' node ids and the force sensor's frame id from can.yaml (`can_root`), checked by
 /// the CAN drivers' own loaders; the rest of `nodes` is kept.

@@ -6,10 +6,14 @@
 namespace ifar::sim {
 namespace {
 
-CanNodeSettings canNodesFor(CanNodeSettings nodes, const common::VehicleSettings& vehicle)
+CanNodeSettings canNodesFor(const SimNodeSettings& settings, const common::VehicleSettings& vehicle)
 {
+  CanNodeSettings nodes = settings.can_nodes;
   nodes.force_range_n = vehicle.force_sensor_range_n;
   nodes.wheel_radius_m = vehicle.wheel_radius_m;
+  nodes.wheels = settings.simulator.sensing.wheels;
+  nodes.force = settings.simulator.sensing.force;
+  nodes.seed = settings.simulator.seed;
   return nodes;
 }
 
@@ -29,7 +33,7 @@ std::int64_t nextDue(std::int64_t time_ns, std::int64_t period_ns)
 ifar::pose_t toPoseMessage(const StepOutput& output)
 {
   ifar::pose_t message{};
-  message.utime = output.utime;
+  message.utime = output.pose_estimate_utime;  // when the estimate is valid, not when it was sent
   const auto& estimate = output.pose_estimate;
   message.position[0] = estimate.pose.x;
   message.position[1] = estimate.pose.y;
@@ -75,7 +79,7 @@ SimulatorNode::SimulatorNode(World world, const common::VehicleSettings& vehicle
                              const SimNodeSettings& settings)
     : settings_(settings),
       simulator_(std::move(world), vehicle, settings.simulator),
-      nodes_(canNodesFor(settings.can_nodes, vehicle))
+      nodes_(canNodesFor(settings, vehicle))
 {
 }
 

@@ -61,7 +61,8 @@ class SimulatorNode {
   std::int64_t next_truth_ns_ = 0;
 };
 
-/// The pose estimate of a step as pose_t (orientation as a unit quaternion about z).
+/// The pose estimate of a step as pose_t (orientation as a unit quaternion about z), stamped with the
+/// time the estimate is valid at.
 ifar::pose_t toPoseMessage(const StepOutput& output);
 /// The ground truth of a step as world_state_t (evaluation only: never read by planner or executive).
 ifar::world_state_t toGroundTruthMessage(const StepOutput& output);

@@ -13,6 +13,8 @@
 namespace ifar::sim::physics {
 namespace {
 
+constexpr double kSlipSpeedFloor = 0.1;  // m/s: below it the slip ratio is taken relative to this
+
 b2Vec2 toBox2d(const geometry::Point& point)
 {
   return b2Vec2(static_cast<float>(point.x()), static_cast<float>(point.y()));
@@ -261,6 +263,16 @@ void PhysicsWorld::Implementation::applyWheelForces()
     const double lateral_slip = -b2Dot(velocity, left);
     double longitudinal_force = response * longitudinal_slip;
     double lateral_force = response * lateral_slip;
+    if (settings.slip_ratio_scale > 0.0) {
+      // The tyre transmits force only by slipping: the slip ratio (relative to the faster of wheel and
+      // ground, with a floor so that creeping does not divide by nothing) sets what it can carry.
+      const double reference =
+          std::max({std::abs(wheel_targets[wheel]), std::abs(static_cast<double>(b2Dot(velocity, forward))),
+                    kSlipSpeedFloor});
+      const double ratio = std::abs(longitudinal_slip) / reference;
+      const double tyre = traction_limit * (1.0 - std::exp(-ratio / settings.slip_ratio_scale));
+      longitudinal_force = std::clamp(longitudinal_force, -tyre, tyre);
+    }
     // Friction circle: the tyre's total ground force is capped by traction x normal load.
     const double magnitude = std::hypot(longitudinal_force, lateral_force);
     if (magnitude > traction_limit) {

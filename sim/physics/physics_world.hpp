@@ -24,6 +24,10 @@ struct PhysicsSettings {
   /// Fraction of a wheel's slip velocity the (stiff) motor controller removes per step, before the
   /// traction cap; 0.5 keeps the two coupled wheels stable.
   double wheel_response = 0.5;
+  /// Tyre slip: a wheel transmits at most traction limit x (1 - exp(-slip ratio / slip_ratio_scale)),
+  /// so under a large push the body moves slower than the wheels turn. 0 = a rigid tyre (only the speed
+  /// controller's own slip, the full traction limit at any slip).
+  double slip_ratio_scale = 0.0;
 };
 
 /// Pose and velocity of one body (world frame; angular velocity counter-clockwise).

@@ -16,7 +16,16 @@ lidar::Vlp16Settings scannerSettings(const common::VehicleSettings& vehicle,
   scanner.max_range_m = settings.lidar_max_range_m;
   scanner.mount_x_m = vehicle.lidar_x_m;
   scanner.mount_height_m = vehicle.lidar_height_m;
+  scanner.model = settings.sensing.lidar;
+  scanner.seed = settings.seed;
   return scanner;
+}
+
+physics::PhysicsSettings physicsSettings(const SimulatorSettings& settings)
+{
+  physics::PhysicsSettings physics = settings.physics;
+  physics.slip_ratio_scale = settings.sensing.wheels.slip_ratio_scale;
+  return physics;
 }
 
 }  // namespace
@@ -24,16 +33,23 @@ lidar::Vlp16Settings scannerSettings(const common::VehicleSettings& vehicle,
 Simulator::Simulator(World world, const common::VehicleSettings& vehicle, const SimulatorSettings& settings)
     : world_(std::move(world)),
       settings_(settings),
-      physics_(world_, vehicle, settings.physics),
+      physics_(world_, vehicle, physicsSettings(settings)),
       scene_(lidar::LidarScene::fromWorld(world_, settings.lidar_scene)),
       scanner_(scannerSettings(vehicle, settings)),
       step_ns_(std::llround(settings.physics.step_seconds * 1e9)),
-      random_(settings.seed)
+      pose_model_(settings.sensing.pose, settings.seed)
 {
   if (step_ns_ <= 0) {
     throw std::invalid_argument("simulator settings: physics step must be at least 1 ns");
   }
   scene_.setMovables(movablePrisms());
+  observeTruth();
+}
+
+void Simulator::observeTruth()
+{
+  const physics::BodyState truth = physics_.vehicleState();
+  pose_model_.advance({time_ns_, truth.pose, truth.linear_velocity, truth.angular_velocity});
 }
 
 std::vector<lidar::Prism> Simulator::movablePrisms() const
@@ -65,6 +81,7 @@ StepOutput Simulator::step(double dt_seconds)
     const geometry::Pose2 before = physics_.vehicleState().pose;
     physics_.step();
     time_ns_ += step_ns_;
+    observeTruth();
     force_sum += physics_.bumperForce();
     ++steps;
     if (settings_.lidar_enabled) {
@@ -82,17 +99,13 @@ StepOutput Simulator::step(double dt_seconds)
   output.vehicle = physics_.vehicleState();
   output.objects = physics_.objectStates();
   output.wheel_speeds = physics_.wheelSpeeds();
-  output.pose_estimate = output.vehicle;
-  if (settings_.pose_noise_position_m > 0.0) {
-    std::normal_distribution<double> position_noise(0.0, settings_.pose_noise_position_m);
-    output.pose_estimate.pose.x += position_noise(random_);
-    output.pose_estimate.pose.y += position_noise(random_);
-  }
-  if (settings_.pose_noise_heading_rad > 0.0) {
-    std::normal_distribution<double> heading_noise(0.0, settings_.pose_noise_heading_rad);
-    output.pose_estimate.pose.heading =
-        geometry::wrapAngle(output.pose_estimate.pose.heading + heading_noise(random_));
-  }
+  const VehicleMotion estimate = pose_model_.published();
+  output.pose_estimate.id = output.vehicle.id;
+  output.pose_estimate.pose = estimate.pose;
+  output.pose_estimate.linear_velocity = estimate.linear_velocity;
+  output.pose_estimate.angular_velocity = estimate.angular_velocity;
+  output.pose_estimate_utime = settings_.epoch_utime + estimate.time_ns / 1000;
+  pose_model_.addJitter(output.pose_estimate.pose);
   return output;
 }
 

@@ -8,6 +8,8 @@
 #     lcm-logger's receive time is printed (an upper bound of the driver's own latency, which includes
 #     the LCM hop and the logger's wake-up) and must stay below a loose bound on this shared machine;
 #     the driver's own receive-to-publish latency per second is in its debug log, printed too.
+#  3. isolation: a second driver on the same port refuses to start, naming the port; a driver with
+#     sensor_address set publishes only what comes from that address and counts the rest as bad.
 # Exit 77 (ctest SKIP_RETURN_CODE) when the shared capture is absent.
 set -euo pipefail
 
@@ -148,5 +150,47 @@ latencies = sorted(packet["latency_us"] for packet in packets[20:])
 p50, p99, worst = (latencies[len(latencies) // 2], latencies[int(len(latencies) * 0.99)], latencies[-1])
 print(f"latency kernel receive -> lcm-logger receive at 754 packets/s: p50 {p50} us, p99 {p99} us, max {worst} us")
 assert p99 < 50000, "p99 latency above 50 ms: the driver is stalling"
+PYTHON
+
+echo "== 3. isolation"
+port=$((20000 + RANDOM % 20000))
+sed -e "s/^data_port: .*/data_port: $port/" -e 's/^sensor_address: .*/sensor_address: "127.0.0.2"/' "$config" \
+  > "$work/velodyne-own.yaml"
+lcm-logger -f "$work/own.lcm" >/dev/null 2>&1 &
+logger_pid=$!
+pids+=($logger_pid)
+ifar-velodyne-driver --config "$work/velodyne-own.yaml" --log-dir "" > "$work/own.log" 2>&1 &
+driver_pid=$!
+pids+=($driver_pid)
+sleep 1
+if ifar-velodyne-driver --config "$work/velodyne-own.yaml" --log-dir "" > "$work/second.log" 2>&1; then
+  echo "FAIL: a second driver started on port $port"; exit 1
+fi
+grep -q "cannot bind 0.0.0.0:$port: Address already in use" "$work/second.log" \
+  || { echo "FAIL: the second driver did not name the port"; cat "$work/second.log"; exit 1; }
+echo "a second driver on port $port refused: $(grep -o 'cannot bind.*' "$work/second.log" | head -1)"
+python3 - "$capture" "$port" <<'PYTHON'
+import socket, struct, sys, time
+capture = open(sys.argv[1], "rb").read()
+payload = capture[24 + 16 + 42:24 + 16 + struct.unpack("<I", capture[24 + 8:24 + 12])[0]]
+for source, count in (("127.0.0.1", 5), ("127.0.0.2", 3)):
+    sender = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+    sender.bind((source, 0))
+    for _ in range(count):
+        sender.sendto(payload, ("127.0.0.1", int(sys.argv[2])))
+        time.sleep(0.002)
+PYTHON
+sleep 1.5
+kill -TERM "$driver_pid"; wait "$driver_pid"
+sleep 0.5
+kill -INT "$logger_pid"; wait "$logger_pid" || true
+python3 - <(summarize_log "$work/own.lcm") <<'PYTHON'
+import json, sys
+summary = json.load(open(sys.argv[1]))
+status = summary["status"]
+assert len(summary["packets"]) == 3, f"expected the sensor's 3 packets, got {len(summary['packets'])}"
+assert status["bad"] == 5 and status["published"] == 3, status
+assert status["last_error"] == "datagram from 127.0.0.1, not the sensor 127.0.0.2", status
+print("sensor_address 127.0.0.2: 3 published, 5 from 127.0.0.1 refused; status", status)
 PYTHON
 echo "PASS"

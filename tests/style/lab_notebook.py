@@ -12,8 +12,8 @@ import re
 import sys
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
-PRODUCT = ('common', 'lcmtypes', 'bus', 'drivers', 'planner', 'executive', 'sim', 'viz', 'system', 'tools',
-           'config')
+PRODUCT = ('common', 'lcmtypes', 'bus', 'drivers', 'planner', 'executive', 'sim', 'viz', 'system', 'testing',
+           'tools', 'config')
 TASK = re.compile(
     r'\b(office2x-\d+\+\d+|office-\d+|tunnel-\d+|room_objects-\d+|room-\d+)\b'  # the suite's world names
     r'|\b[Ww]illow t\d+\b'                                                      # a Willow task

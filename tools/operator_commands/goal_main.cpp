@@ -3,9 +3,11 @@
 // once a second (a respawned planner learns it again) and watches EXEC_STATUS until the executive reports
 // the goal reached (exit 0) or the wait runs out (exit 1): the demo and the system tests end on this.
 
+#include <chrono>
 #include <cmath>
 #include <iostream>
 #include <string>
+#include <thread>
 
 #include <spdlog/sinks/null_sink.h>
 #include <spdlog/spdlog.h>
@@ -54,6 +56,7 @@ int main(int argc, char** argv)
   bool cancel = false;
   int repeats = 3;
   double wait_s = 0.0;
+  double delay_s = 0.0;
   std::string url;
   app.add_option("x", x, "goal x in metres, world frame")->required();
   app.add_option("y", y, "goal y in metres, world frame")->required();
@@ -65,15 +68,23 @@ int main(int argc, char** argv)
   app.add_option("--wait", wait_s,
                  "then wait up to this many seconds for EXEC_STATUS to report the goal reached, resending "
                  "the goal every second; exit 1 if it is not reached");
+  app.add_option(
+      "--delay", delay_s,
+      "seconds to wait before sending (a launch file starts it beside the daemons, without a shell)");
   app.add_option("--lcm-url", url, "LCM URL (default: LCM_DEFAULT_URL or LCM's default)");
   if (const auto exit_code = ifar::common::parseCommandLine(app, argc, argv)) {
     return *exit_code;
   }
-  if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(wait_s) || wait_s < 0.0) {
-    std::cerr << "ifar-goal: error: the goal and --wait must be finite numbers, --wait not negative"
-              << std::endl;
+  if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(wait_s) || wait_s < 0.0 ||
+      !(std::isfinite(delay_s) && delay_s >= 0.0 && delay_s <= 3600.0)) {
+    std::cerr
+        << "ifar-goal: error: the goal, --wait and --delay must be finite numbers, --wait not negative, "
+           "--delay between 0 and 3600 s"
+        << std::endl;
     return 2;
   }
+  // Before the bus is opened: until then SIGTERM ends the process as usual.
+  std::this_thread::sleep_for(std::chrono::duration<double>(delay_s));
 
   auto logger = std::make_shared<spdlog::logger>("goal", std::make_shared<spdlog::sinks::null_sink_mt>());
   std::unique_ptr<ifar::bus::RunLoop> loop;

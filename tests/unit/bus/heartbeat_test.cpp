@@ -5,6 +5,7 @@
 
 #include <unistd.h>
 
+#include <chrono>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -88,6 +89,34 @@ TEST(Heartbeat, BeatsEachPeriodAndReportsABadMessageOnce)
   }
   EXPECT_EQ(degraded, 1);
   EXPECT_EQ(loop.badMessages(), 1);
+}
+
+TEST(Heartbeat, AnotherProcessOfTheSameNameOnTheUrlDegradesEveryBeat)
+{
+  ifar::bus::RunLoop loop("memq://", std::make_shared<spdlog::logger>(
+                                         "heartbeat_test", std::make_shared<spdlog::sinks::null_sink_mt>()));
+  std::vector<ifar::heartbeat_t> beats;
+  loop.subscribe<ifar::heartbeat_t>(ifar::bus::kHeartbeatChannel,
+                                    [&](const ifar::heartbeat_t& beat, std::int64_t) {
+                                      if (beat.pid == ::getpid()) {
+                                        beats.push_back(beat);
+                                      }
+                                    });
+  ifar::bus::publishHeartbeats(loop, "tester", 0.02);
+  ifar::heartbeat_t impostor{};
+  impostor.process = "tester";
+  impostor.pid = ::getpid() + 1;
+  const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+  while (beats.size() < 3 && std::chrono::steady_clock::now() < give_up) {
+    loop.publish(ifar::bus::kHeartbeatChannel, impostor);
+    for (int spin = 0; spin < 3; ++spin) {
+      loop.spinOnce(5);
+    }
+  }
+  ASSERT_GE(beats.size(), 3U);
+  // The impostor is heard before the second beat at the latest.
+  EXPECT_EQ(beats[2].health, ifar::heartbeat_t::HEALTH_DEGRADED);
+  EXPECT_EQ(beats[2].message, "another tester on this LCM URL (pid " + std::to_string(::getpid() + 1) + ")");
 }
 
 }  // namespace

@@ -178,3 +178,43 @@ TEST(Config, PositiveNumbersAreCheckedWithKeyAndValue)
 }
 
 }  // namespace
+
+namespace ifar::common {
+namespace {
+
+/// Nine aliases of the level below, `levels` deep: 9^levels nodes once expanded, in a few hundred bytes.
+std::string aliasBomb(int levels)
+{
+  std::string text = "a0: &a0 [x, x, x, x, x, x, x, x, x]\n";
+  for (int level = 1; level <= levels; ++level) {
+    const std::string below = "*a" + std::to_string(level - 1);
+    text += "a" + std::to_string(level) + ": &a" + std::to_string(level) + " [";
+    for (int copy = 0; copy < 9; ++copy) {
+      text += (copy > 0 ? ", " : "") + below;
+    }
+    text += "]\n";
+  }
+  return text;
+}
+
+TEST(ConfigAliases, AnAliasBombIsRefusedNamingTheFileInsteadOfExpanding)
+{
+  const std::string bomb = aliasBomb(8);
+  ASSERT_LT(bomb.size(), 600U);
+  try {
+    ConfigNode::loadString(bomb, "bomb.yaml");
+    FAIL() << "an alias bomb was accepted";
+  } catch (const ConfigError& error) {
+    EXPECT_NE(std::string(error.what()).find("bomb.yaml: more than 4000000 YAML nodes"), std::string::npos)
+        << error.what();
+  }
+}
+
+TEST(ConfigAliases, ModestAliasesStillLoad)
+{
+  const ConfigNode node = ConfigNode::loadString(aliasBomb(3) + "speed: 2.5\n", "anchors.yaml");
+  EXPECT_DOUBLE_EQ(node.required<double>("speed"), 2.5);
+}
+
+}  // namespace
+}  // namespace ifar::common

@@ -133,6 +133,38 @@ TEST(MapServer, UnknownKeyAndMissingImageNamed)
             bad_resolution.path() + ": key 'resolution': missing or not a positive number");
 }
 
+TEST(BoundedInput, AHeaderClaimingMoreCellsThanTheFileHoldsIsRefusedBeforeAllocating)
+{
+  const TemporaryFile map("huge.map", "type octile\nheight 20000\nwidth 20000\nmap\n....\n");
+  EXPECT_EQ(readMovingAiMap(map.path()).error,
+            map.path() + ": the header says 20000 x 20000 cells but only 5 bytes follow it");
+  std::string pgm = "P5\n20000 20000\n255\n";
+  pgm += std::string(16, '\xff');
+  const TemporaryFile image("huge.pgm", pgm);
+  const TemporaryFile yaml("huge.yaml", "image: huge.pgm\nresolution: 0.05\norigin: [0, 0, 0]\n");
+  EXPECT_EQ(readMapServer(yaml.path()).error,
+            image.path() + ": the header says 20000 x 20000 cells but only 16 bytes follow it");
+}
+
+TEST(BoundedInput, TheCellLimitIsConfigurable)
+{
+  const TemporaryFile map("four.map", "type octile\nheight 2\nwidth 2\nmap\n..\n..\n");
+  EXPECT_TRUE(readMovingAiMap(map.path()).ok());
+  const TemporaryFile huge("claims.map", "type octile\nheight 100000\nwidth 100000\nmap\n....\n");
+  EXPECT_EQ(readMovingAiMap(huge.path()).error,
+            huge.path() + ": 100000 x 100000 cells exceed the limit of 400000000");
+  MapReadLimits limits;
+  limits.max_cells = 3;
+  EXPECT_EQ(readMovingAiMap(map.path(), limits).error, map.path() + ": 2 x 2 cells exceed the limit of 3");
+}
+
+TEST(BoundedInput, ADeviceAsImageIsRefused)
+{
+  const TemporaryFile yaml("zero.yaml", "image: /dev/zero\nresolution: 0.05\norigin: [0, 0, 0]\n");
+  EXPECT_EQ(readMapServer(yaml.path()).error, "/dev/zero: not a regular file (image of " + yaml.path() + ")");
+  EXPECT_EQ(readMovingAiMap("/dev/zero").error, "/dev/zero: not a regular file");
+}
+
 TEST(MapServer, WillowGarage)
 {
   const std::string path = std::string(IFAR_SHARED_DATA) + "/maps/willow-full.yaml";

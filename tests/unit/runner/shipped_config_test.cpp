@@ -174,7 +174,7 @@ TEST(ShippedConfig, Simulator)
   EXPECT_EQ(sim.simulator.lidar_scene.cell_size_m, 2.0);
   EXPECT_EQ(sim.pose_channel, "POSE");
   EXPECT_EQ(sim.pose_rate_hz, 50.0);
-  EXPECT_EQ(sim.simulator.pose_noise_position_m, 0.0);
+  EXPECT_EQ(sim.simulator.sensing.pose.jitter_position_m, 0.0);
   EXPECT_EQ(sim.ground_truth_channel, "SIM_GROUND_TRUTH");
   EXPECT_EQ(sim.ground_truth_rate_hz, 20.0);
   EXPECT_EQ(sim.command_source, sim::CommandSource::kCan);

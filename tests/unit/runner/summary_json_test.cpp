@@ -25,13 +25,16 @@ TEST(RunnerSummaryJson, ExactLine)
   summary.goal_distance_m = 0.42;
   summary.planner_frame = FrameTimes{103, 4.1, 9.75, 12.0};
   summary.interaction = FrameTimes{103, 0.0, 2.5, 140.9};
+  summary.undecided_saturated_pushes = 1;
+  summary.longest_saturated_push_s = 6.25;
   summary.trajectory = {geometry::Pose2{1.0, 2.0, 0.0}};
   EXPECT_EQ(
       summaryJson(summary),
       "{\"arrived\":true,\"reason\":\"arrived\",\"distance_m\":23.457,\"time_s\":41.200,\"pushes\":1,"
       "\"replans\":2,\"affordance_updates\":3,\"blocked_passages\":1,\"goal_distance_m\":0.420,\"wall_"
       "time_s\":12.500,\"planner_frame_ms\":{\"frames\":103,\"median\":4.100,\"p99\":9.750,\"max\":12.000},"
-      "\"interaction_ms\":{\"frames\":103,\"median\":0.000,\"p99\":2.500,\"max\":140.900}}");
+      "\"interaction_ms\":{\"frames\":103,\"median\":0.000,\"p99\":2.500,\"max\":140.900},"
+      "\"undecided_saturated_pushes\":1,\"longest_saturated_push_s\":6.250}");
 }
 
 TEST(RunnerSummaryJson, ReasonIsEscapedAndNonFiniteIsNull)

@@ -90,9 +90,12 @@ TEST(JsonLine, SystemRowAddsSimulatedTimeAndPushes)
   row.frame_p99_ms = 12.25;
   row.frame_max_ms = 30.0;
   row.interaction_max_ms = 21.0;
+  row.sensing = "field";
+  row.undecided_saturated_pushes = 3;
   const std::string line = toJsonLine(row);
   EXPECT_NE(line.find(", \"sim_time_s\": 120.5, \"pushes\": 2, \"frame_median_ms\": 4.5, \"frame_p99_ms\": "
-                      "12.25, \"frame_max_ms\": 30, \"interaction_max_ms\": 21}"),
+                      "12.25, \"frame_max_ms\": 30, \"interaction_max_ms\": 21, \"sensing\": \"field\", "
+                      "\"undecided_saturated_pushes\": 3}"),
             std::string::npos)
       << line;
   EXPECT_EQ(line.find('\n'), std::string::npos);

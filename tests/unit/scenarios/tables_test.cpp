@@ -231,5 +231,54 @@ TEST(PlannerFrames, PerKindMedianOfMediansWorstP99LongestFrameAndInteraction)
   EXPECT_NE(lineStartingWith(table, "| far |").find("| - |"), std::string::npos) << table;
 }
 
+/// A driven row of ours in the office under `sensing`.
+ResultRow drivenOffice(const std::string& sensing, const std::string& task, bool arrived, double length,
+                       double p99_ms, int undecided)
+{
+  ResultRow result = row("system", "ours", "office", arrived, length, 90.0, 1000.0, task);
+  result.status = arrived ? "arrived" : "failed";
+  result.sensing = sensing;
+  result.frame_median_ms = p99_ms / 2.0;
+  result.frame_p99_ms = p99_ms;
+  result.frame_max_ms = p99_ms;
+  result.undecided_saturated_pushes = undecided;
+  return result;
+}
+
+TEST(SensingProfiles, FieldRowsAreTabledApartAndCheckedAgainstIdeal)
+{
+  const std::vector<ResultRow> rows{
+      drivenOffice("ideal", "t0", true, 100.0, 9.0, 0), drivenOffice("ideal", "t1", true, 90.0, 9.0, 0),
+      drivenOffice("field", "t0", true, 110.0, 18.0, 0), drivenOffice("field", "t1", true, 95.0, 24.0, 1)};
+  const std::string table = tableTwoSpl(rows);
+  // Ideal: (0.9 + 1.0) / 2; field: (90/110 + 90/95) / 2.
+  EXPECT_NE(lineStartingWith(table, "| ours (driven) |").find(" 0.950 (2/2) |"), std::string::npos) << table;
+  EXPECT_NE(lineStartingWith(table, "| ours (driven, field) |").find(" 0.883 (2/2) |"), std::string::npos)
+      << table;
+  EXPECT_NE(lineStartingWith(tableThreeSystem(rows), "| ours (field) |").find(" 205.0 |"), std::string::npos)
+      << tableThreeSystem(rows);
+  const std::string targets = targetCheck(rows);
+  // 0.883 < 0.95 x 0.950; the worst field p99 is 24 ms; one push was left undecided.
+  EXPECT_NE(
+      targets.find("| ours driven SPL under field >= 0.95 x ideal, as many arrivals (office) | 0.883 (2/2) "
+                   "vs 0.950 (2/2) | missed |"),
+      std::string::npos)
+      << targets;
+  EXPECT_NE(targets.find("| planner frame p99 <= 20 ms under field (office, worst run) | 24.0 ms | missed |"),
+            std::string::npos)
+      << targets;
+  EXPECT_NE(targets.find("(4 driven runs) | 1 | missed |"), std::string::npos) << targets;
+}
+
+TEST(SensingProfiles, FieldWithinTheTargetsIsMet)
+{
+  const std::vector<ResultRow> rows{drivenOffice("ideal", "t0", true, 100.0, 9.0, 0),
+                                    drivenOffice("field", "t0", true, 102.0, 19.0, 0)};
+  const std::string targets = targetCheck(rows);
+  EXPECT_NE(targets.find("(office) | 0.882 (1/1) vs 0.900 (1/1) | met |"), std::string::npos) << targets;
+  EXPECT_NE(targets.find("(office, worst run) | 19.0 ms | met |"), std::string::npos) << targets;
+  EXPECT_NE(targets.find("(2 driven runs) | 0 | met |"), std::string::npos) << targets;
+}
+
 }  // namespace
 }  // namespace ifar::scenarios

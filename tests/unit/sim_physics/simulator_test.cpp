@@ -20,8 +20,8 @@ Trajectory run(std::uint64_t seed)
 {
   SimulatorSettings settings;
   settings.seed = seed;
-  settings.pose_noise_position_m = 0.02;
-  settings.pose_noise_heading_rad = 0.01;
+  settings.sensing.pose.jitter_position_m = 0.02;
+  settings.sensing.pose.jitter_heading_rad = 0.01;
   Simulator simulator(builtinPushRoom(20.0), common::VehicleSettings{}, settings);
   Trajectory trajectory;
   for (int step = 0; step < 300; ++step) {
