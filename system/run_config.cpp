@@ -1,6 +1,7 @@
 #include "system/run_config.hpp"
 
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 
 #include "common/config.hpp"
@@ -40,11 +41,13 @@ void loadExecutive(const std::string& config_directory, RunRequest& request)
   root.rejectUnknownKeys();
 }
 
-void loadSimulator(const std::string& config_directory, RunRequest& request)
+void loadSimulator(const std::string& config_directory, const std::string& sensing, RunRequest& request)
 {
   const common::ConfigNode root = loadFrom(config_directory, "sim.yaml");
   common::readDaemonKeys(root);
-  request.sim = sim::loadSimNodeSettings(root);
+  request.sim = sim::loadSimNodeSettings(
+      root,
+      sensing.empty() ? std::nullopt : std::optional<sim::SensingProfile>(sim::parseSensingProfile(sensing)));
   root.rejectUnknownKeys();
 }
 
@@ -112,32 +115,21 @@ std::string runConfigYaml(const std::string& config_directory)
   return text;
 }
 
-RunRequest loadRunSettings(const std::string& config_directory)
+std::vector<std::string> sensingProfileNames()
+{
+  return sim::sensingProfileNames();
+}
+
+RunRequest loadRunSettings(const std::string& config_directory, const std::string& sensing)
 {
   RunRequest request;
   request.vehicle = common::loadVehicleSettings(loadFrom(config_directory, "vehicle.yaml"));
   loadPlanner(config_directory, request);
   loadExecutive(config_directory, request);
-  loadSimulator(config_directory, request);
+  loadSimulator(config_directory, sensing, request);
   loadCan(config_directory, request);
   loadVelodyne(config_directory, request);
   return request;
-}
-
-}  // namespace ifar::runner
-
-namespace ifar::runner {
-
-std::vector<std::string> sensingProfileNames()
-{
-  return {"ideal"};
-}
-
-void applySensingProfile(RunRequest& /*request*/, const std::string& name)
-{
-  if (name != "ideal") {
-    throw std::invalid_argument("no sensing profile '" + name + "'");
-  }
 }
 
 }  // namespace ifar::runner

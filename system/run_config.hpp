@@ -14,8 +14,10 @@
 namespace ifar::runner {
 
 /// A request with every setting filled in from `config_directory`; world and goal are left empty.
-/// Throws common::ConfigError naming the file and key.
-RunRequest loadRunSettings(const std::string& config_directory);
+/// `sensing` (one of sensingProfileNames(); empty: sim.yaml's sensing.profile) picks the simulator's
+/// sensing profile as ifar-sim --sensing does: sim.yaml's other sensing keys still override its values.
+/// Throws common::ConfigError naming the file and key, std::invalid_argument for an unknown profile.
+RunRequest loadRunSettings(const std::string& config_directory, const std::string& sensing = "");
 
 /// The effective settings of every file in `config_directory` as a YAML stream, one document per file,
 /// each key's meaning as a comment (ifar run --print-config). Throws as loadRunSettings does.
@@ -23,9 +25,5 @@ std::string runConfigYaml(const std::string& config_directory);
 
 /// The simulator's named sensing profiles ("ideal" first), for --sensing.
 std::vector<std::string> sensingProfileNames();
-
-/// Replaces the request's sensing models (sim.yaml sensing:) by the named profile's. Throws
-/// std::invalid_argument naming the profile when there is none of that name.
-void applySensingProfile(RunRequest& request, const std::string& name);
 
 }  // namespace ifar::runner

@@ -170,9 +170,12 @@ int main(int argc, char** argv)
 
   ifar::runner::RunRequest request;
   try {
-    request = ifar::runner::loadRunSettings(config_dir);
+    request = ifar::runner::loadRunSettings(config_dir, sensing);
   } catch (const ifar::common::ConfigError& error) {
     std::cerr << "error: " << error.what() << "\n";
+    return kExitBadInput;
+  } catch (const std::invalid_argument& error) {
+    std::cerr << "error: --sensing: " << error.what() << "\n";
     return kExitBadInput;
   }
   if (!(std::isfinite(max_time_s) && max_time_s > 0.0)) {
@@ -210,14 +213,6 @@ int main(int argc, char** argv)
         std::cerr << "error: " << option << ": cannot write '" << path << "': " << problem << "\n";
         return kExitBadInput;
       }
-    }
-  }
-  if (!sensing.empty()) {
-    try {
-      ifar::runner::applySensingProfile(request, sensing);
-    } catch (const std::invalid_argument& error) {
-      std::cerr << "error: --sensing: " << error.what() << "\n";
-      return kExitBadInput;
     }
   }
   request.max_sim_time_s = max_time_s;

@@ -31,9 +31,9 @@ std::vector<FeedRecord> recordSimulation(const sim::World& world, double seconds
     const sim::StepOutput output = simulator.step(kStep);
     FeedRecord pose;
     pose.kind = FeedRecord::Kind::Pose;
-    pose.utime = output.utime;
-    pose.pose = planarPose(output.utime, output.pose_estimate.pose.x, output.pose_estimate.pose.y,
-                           output.pose_estimate.pose.heading);
+    pose.utime = output.utime;  // when it arrives; the estimate is as of pose_estimate_utime (latency)
+    pose.pose = planarPose(output.pose_estimate_utime, output.pose_estimate.pose.x,
+                           output.pose_estimate.pose.y, output.pose_estimate.pose.heading);
     records.push_back(pose);
     for (const auto& packet : output.packets) {
       FeedRecord record;

@@ -395,7 +395,7 @@ int main(int argc, char** argv)
   std::unique_ptr<scenarios::SystemRunner> runner;
   if (!no_system) {
     try {
-      runner = std::make_unique<scenarios::SystemRunner>(config_dir);
+      runner = std::make_unique<scenarios::SystemRunner>(config_dir, sensing_profiles);
     } catch (const std::exception& error) {
       std::cerr << "ifar bench: " << error.what() << "\n";
       return 1;

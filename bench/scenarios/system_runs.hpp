@@ -52,19 +52,20 @@ std::vector<std::string> sensingProfileNames();
 /// an hour must not pick up a config file edited half-way through (nor fail on it run by run).
 class SystemRunner {
  public:
-  /// Reads vehicle.yaml, sim.yaml, planner.yaml and executive.yaml from `config_dir`. Throws
-  /// std::runtime_error naming the file and key when one is bad (not when the build has no runner).
-  explicit SystemRunner(const std::string& config_dir);
+  /// Reads vehicle.yaml, sim.yaml, planner.yaml and executive.yaml from `config_dir`, once under each of
+  /// `sensing_profiles` (sensingProfileNames()). Throws std::runtime_error naming the file and key when one
+  /// is bad (not when the build has no runner).
+  SystemRunner(const std::string& config_dir, const std::vector<std::string>& sensing_profiles);
   ~SystemRunner();
   SystemRunner(const SystemRunner&) = delete;
   SystemRunner& operator=(const SystemRunner&) = delete;
 
   /// Drives from task.start to task.goal in `world` (its start and goals replaced by the task's) for at
-  /// most `max_sim_time_s` simulated seconds under the sensing profile `sensing` (one of
-  /// sensingProfileNames()). `interaction_enabled` false is FAR mode. Safe to call from several threads at
+  /// most `max_sim_time_s` simulated seconds under the sensing profile `sensing` (one of the
+  /// constructor's). `interaction_enabled` false is FAR mode. Safe to call from several threads at
   /// once.
-  SystemRun run(const sim::World& world, const Task& task, bool interaction_enabled, const std::string& sensing,
-                double max_sim_time_s) const;
+  SystemRun run(const sim::World& world, const Task& task, bool interaction_enabled,
+                const std::string& sensing, double max_sim_time_s) const;
 
  private:
   struct Settings;

@@ -1,6 +1,10 @@
 // Built when the headless runner (system/, target ifar_runner) exists: Tables II and III for real.
 #include <exception>
+#include <map>
 #include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "bench/scenarios/system_runs.hpp"
 #include "system/run_config.hpp"
@@ -19,16 +23,20 @@ std::vector<std::string> sensingProfileNames()
 }
 
 struct SystemRunner::Settings {
-  runner::RunRequest request;  // everything but the world, goal, mode and time cap
+  std::map<std::string, runner::RunRequest> requests;  // per sensing profile: all but world, goal, mode, cap
 };
 
-SystemRunner::SystemRunner(const std::string& config_dir)
+SystemRunner::SystemRunner(const std::string& config_dir, const std::vector<std::string>& sensing_profiles)
 {
+  Settings settings;
   try {
-    settings_ = std::make_unique<const Settings>(Settings{runner::loadRunSettings(config_dir)});
+    for (const std::string& sensing : sensing_profiles) {
+      settings.requests.emplace(sensing, runner::loadRunSettings(config_dir, sensing));
+    }
   } catch (const std::exception& error) {
     throw std::runtime_error(std::string("runner settings: ") + error.what());
   }
+  settings_ = std::make_unique<const Settings>(std::move(settings));
 }
 
 SystemRunner::~SystemRunner() = default;
@@ -37,8 +45,12 @@ SystemRun SystemRunner::run(const sim::World& world, const Task& task, bool inte
                             const std::string& sensing, double max_sim_time_s) const
 {
   SystemRun run;
-  runner::RunRequest request = settings_->request;
-  runner::applySensingProfile(request, sensing);
+  const auto settings = settings_->requests.find(sensing);
+  if (settings == settings_->requests.end()) {
+    run.reason = "no settings read for the sensing profile '" + sensing + "'";
+    return run;
+  }
+  runner::RunRequest request = settings->second;
   request.world = taskWorld(world, task);
   request.goal = task.goal;
   request.planner.interaction_enabled = interaction_enabled;

@@ -15,7 +15,10 @@ std::vector<std::string> sensingProfileNames()
 
 struct SystemRunner::Settings {};
 
-SystemRunner::SystemRunner(const std::string& /*config_dir*/) {}
+SystemRunner::SystemRunner(const std::string& /*config_dir*/,
+                           const std::vector<std::string>& /*sensing_profiles*/)
+{
+}
 
 SystemRunner::~SystemRunner() = default;
 
