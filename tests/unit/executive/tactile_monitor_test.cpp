@@ -144,7 +144,7 @@ TEST(TactileMonitor, ObservedObjectThatMovesWithTheVehicleIsNotUnpushable)
   monitor.begin(plan(), kMaxPushForce);
   for (int cycle = 0; cycle <= 500; ++cycle) {
     const double travelled = 0.001 * cycle;  // 0.1 m/s, object and bumper together
-    const auto event = monitor.update(cycle * 10'000, 530.0, {travelled, 0.0, 0.0},
+    const auto event = monitor.update(static_cast<std::int64_t>(cycle) * 10'000, 530.0, {travelled, 0.0, 0.0},
                                       geometry::Point(0.6 + travelled, 0.0), true, settings);
     ASSERT_FALSE(event.has_value()) << "cycle " << cycle;
   }
@@ -162,8 +162,9 @@ TEST(TactileMonitor, ObservedCentroidJitterWithoutVehicleTravelIsNoMotion)
   for (int cycle = 0; cycle <= 300 && !event; ++cycle) {
     const double jitter = (cycle % 7) * 0.013;  // 0 .. 0.078 m, above the 0.05 m threshold
     const geometry::Point object(0.6 + jitter, 0.5 * jitter);
-    event = monitor.update(cycle * 10'000, 530.0, {0.0, 0.0, 0.0}, object, true, settings);
-    event_us = cycle * 10'000;
+    event = monitor.update(static_cast<std::int64_t>(cycle) * 10'000, 530.0, {0.0, 0.0, 0.0}, object, true,
+                           settings);
+    event_us = static_cast<std::int64_t>(cycle) * 10'000;
   }
   ASSERT_TRUE(event.has_value());
   EXPECT_EQ(event->reason, AffordanceReason::NoMotion);
@@ -178,8 +179,8 @@ TEST(TactileMonitor, SpinningWheelsWithAStillObjectAreNoMotion)
   monitor.begin(plan(), kMaxPushForce);
   std::optional<AffordanceEvent> event;
   for (int cycle = 0; cycle <= 300 && !event; ++cycle) {
-    event = monitor.update(cycle * 10'000, 530.0, {0.001 * cycle, 0.0, 0.0}, geometry::Point(0.6, 0.0), true,
-                           settings);
+    event = monitor.update(static_cast<std::int64_t>(cycle) * 10'000, 530.0, {0.001 * cycle, 0.0, 0.0},
+                           geometry::Point(0.6, 0.0), true, settings);
   }
   ASSERT_TRUE(event.has_value());
   EXPECT_EQ(event->reason, AffordanceReason::NoMotion);
