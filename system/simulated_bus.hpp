@@ -27,6 +27,7 @@
 #include "ifar/force_t.hpp"
 #include "ifar/goal_t.hpp"
 #include "ifar/motor_status_t.hpp"
+#include "ifar/odometry_t.hpp"
 #include "ifar/path_t.hpp"
 #include "ifar/planner_status_t.hpp"
 #include "ifar/pose_t.hpp"
@@ -37,10 +38,10 @@
 namespace ifar::runner {
 
 /// Every message type the nodes exchange in a run.
-using BusMessage =
-    std::variant<ifar::velodyne_packet_t, ifar::pose_t, ifar::goal_t, ifar::path_t, ifar::planner_status_t,
-                 ifar::force_t, ifar::motor_status_t, ifar::velocity_cmd_t, ifar::exec_status_t,
-                 ifar::affordance_t, ifar::blocked_passage_t, ifar::e_stop_t, ifar::world_state_t>;
+using BusMessage = std::variant<ifar::velodyne_packet_t, ifar::pose_t, ifar::goal_t, ifar::path_t,
+                                ifar::planner_status_t, ifar::force_t, ifar::motor_status_t, ifar::odometry_t,
+                                ifar::velocity_cmd_t, ifar::exec_status_t, ifar::affordance_t,
+                                ifar::blocked_passage_t, ifar::e_stop_t, ifar::world_state_t>;
 
 /// Who is on the CAN bus: a frame reaches every participant but its sender.
 using CanParticipant = int;

@@ -66,6 +66,7 @@ SimulatedStack::SimulatedStack(const RunRequest& request, StackObservers observe
       motor_(request.motor, request.vehicle),
       force_channel_(request.force_sensor.channel),
       motor_status_channel_(request.motor.status_channel),
+      motor_odometry_channel_(request.motor.odometry_channel),
       planner_node_(request.planner_node, logger_, simulator_.nowUtime()),
       planner_(makePlanner(request)),
       planner_channels_(request.planner_node.channels),
@@ -146,6 +147,10 @@ void SimulatedStack::subscribeNodes(const RunRequest& request)
                                        [this](const ifar::motor_status_t& message, std::int64_t now_us) {
                                          executive_.onMotorStatus(message, now_us);
                                        });
+  bus_.subscribe<ifar::odometry_t>(executive::kOdometryChannel,
+                                   [this](const ifar::odometry_t& message, std::int64_t now_us) {
+                                     executive_.onOdometry(message, now_us);
+                                   });
   bus_.subscribe<ifar::e_stop_t>(
       executive::kEStopChannel,
       [this](const ifar::e_stop_t& message, std::int64_t now_us) { executive_.onEStop(message, now_us); });
@@ -163,6 +168,7 @@ void SimulatedStack::addTimers(const RunRequest& request)
     for (const can::Frame& frame : motor_.cycle(now_us)) {
       bus_.publishFrame(kMotorDriverOnCan, frame);
     }
+    bus_.publish(motor_odometry_channel_, motor_.odometry(now_us));
   });
   every(kMotorStatusPeriodS, [this](std::int64_t now_us) {
     for (const ifar::motor_status_t& status : motor_.statusMessages(now_us)) {

@@ -7,8 +7,9 @@
 //      datagrams would, its POSE, SIM_GROUND_TRUTH and CAN frames onto the bus,
 //   3. everything published is delivered, stamped with the new time (messages first, as a daemon's loop
 //      handles what arrived before its timers),
-//   4. the nodes' timers that are due run (motor cycle and status, force silence check, planner tick and
-//      path resend, executive control cycle); what they publish is delivered at the next step.
+//   4. the nodes' timers that are due run (motor cycle with its ODOMETRY, motor status, force silence
+//      check, planner tick and path resend, executive control cycle); what they publish is delivered at
+//      the next step.
 // The planner's jobs run in line at once. Nothing here is glue of its own: every conversion and rule is
 // in the node cores the daemons wrap.
 
@@ -95,6 +96,7 @@ class SimulatedStack {
   motor::MotorDriverNode motor_;
   std::string force_channel_;
   std::string motor_status_channel_;
+  std::string motor_odometry_channel_;
   planner::PlannerNode planner_node_;
   planner::Planner planner_;
   planner::PlannerChannels planner_channels_;

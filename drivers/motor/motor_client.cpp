@@ -107,6 +107,7 @@ void MotorClient::onFrame(const can::Frame& frame, std::int64_t now_us)
     }
     statusword_ = feedback->statusword;
     actual_velocity_ = feedback->actual_velocity;
+    feedback_us_ = now_us;
     nmt_state_ = NmtState::kOperational;  // PDOs only flow from an operational node
   } else if (base == kEmergencyBase) {
     const auto emergency = decodeEmergency(frame, settings_.node_id);
@@ -292,6 +293,7 @@ MotorStatus MotorClient::status(std::int64_t now_us) const
   result.drive_state = statusword_ ? driveStateFromStatusword(*statusword_) : DriveState::kNotReadyToSwitchOn;
   result.target_velocity = sent_velocity_;
   result.actual_velocity = actual_velocity_;
+  result.feedback_us = feedback_us_;
   result.emergency_code = emergency_code_;
   result.fault_latched = fault_latched_;
   result.phase = phase_;

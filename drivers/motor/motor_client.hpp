@@ -75,9 +75,10 @@ struct MotorStatus {
   bool heartbeat_ok = false;
   std::optional<std::uint16_t> statusword;  // from the last TPDO1
   DriveState drive_state = DriveState::kNotReadyToSwitchOn;
-  std::int32_t target_velocity = 0;  // last sent on RPDO1
-  std::int32_t actual_velocity = 0;  // last received on TPDO1
-  std::uint16_t emergency_code = 0;  // last EMCY error code, 0 when none or reset
+  std::int32_t target_velocity = 0;         // last sent on RPDO1
+  std::int32_t actual_velocity = 0;         // last received on TPDO1
+  std::optional<std::int64_t> feedback_us;  // when the last TPDO1 arrived (the clock of onFrame's now_us)
+  std::uint16_t emergency_code = 0;         // last EMCY error code, 0 when none or reset
   bool fault_latched = false;
   ClientPhase phase = ClientPhase::kWaitingForDrive;
   StopReason reason = StopReason::kNone;  // why the client stops or would stop now; kNone = healthy
@@ -123,6 +124,7 @@ class MotorClient {
   std::int64_t last_heartbeat_us_ = 0;
   std::optional<std::uint16_t> statusword_;
   std::int32_t actual_velocity_ = 0;
+  std::optional<std::int64_t> feedback_us_;
   std::optional<std::int64_t> last_command_us_;
   std::int32_t commanded_velocity_ = 0;
   std::int32_t sent_velocity_ = 0;

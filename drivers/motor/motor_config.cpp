@@ -42,7 +42,11 @@ common::ParameterTable<MotorSection> makeMotorParameters()
           .add("drive_watchdog.rpdo_timeout_ms", &S::drive_rpdo_timeout_ms, "ms", Range::between(0, 65535),
                "written into each drive (0x1400 sub 5): it quick-stops without an RPDO1 this long (0: off; "
                "longer than cycle_ms)")
-          .add("status_channel", &S::status_channel, "", Range::nonEmpty(), "motor_status_t");
+          .add("status_channel", &S::status_channel, "", Range::nonEmpty(), "motor_status_t")
+          .add("odometry_timeout_ms", &S::odometry_timeout_ms, "ms", milliseconds,
+               "a drive without a TPDO1 (actual velocity, 100 Hz) this long is flagged stale in odometry_t")
+          .add("odometry_channel", &S::odometry_channel, "", Range::nonEmpty(),
+               "odometry_t: the wheels' actual velocities and the body velocity, every cycle");
   return table;
 }
 
@@ -100,6 +104,8 @@ MotorConfig loadMotorSection(const common::ConfigNode& root)
   config.drive_heartbeat_timeout_ms = static_cast<std::uint16_t>(section.drive_heartbeat_timeout_ms);
   config.drive_rpdo_timeout_ms = static_cast<std::uint16_t>(section.drive_rpdo_timeout_ms);
   config.status_channel = section.status_channel;
+  config.odometry_channel = section.odometry_channel;
+  config.odometry_timeout_us = section.odometry_timeout_ms * kMicrosecondsPerMillisecond;
   return config;
 }
 

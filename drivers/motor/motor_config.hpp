@@ -19,6 +19,8 @@
 //       heartbeat_timeout_ms: 150
 //       rpdo_timeout_ms: 100
 //     status_channel: MOTOR_STATUS
+//     odometry_timeout_ms: 50
+//     odometry_channel: ODOMETRY
 
 #include <cstdint>
 #include <string>
@@ -34,10 +36,12 @@ struct MotorConfig {
   DifferentialDriveSettings drive;
   std::int64_t cycle_us = 10'000;
   std::string status_channel = "MOTOR_STATUS";
-  std::uint8_t master_node_id = 127;                  // this driver's CANopen node id
-  std::int64_t master_heartbeat_period_us = 50'000;   // the driver's heartbeat, 0x700 + master_node_id
-  std::uint16_t drive_heartbeat_timeout_ms = 150;     // 0x1016 in each drive; 0 = not watched
-  std::uint16_t drive_rpdo_timeout_ms = 100;          // 0x1400:05 in each drive; 0 = not watched
+  std::string odometry_channel = "ODOMETRY";         // odometry_t, every cycle
+  std::int64_t odometry_timeout_us = 50'000;         // a drive without TPDO1 this long is stale in odometry_t
+  std::uint8_t master_node_id = 127;                 // this driver's CANopen node id
+  std::int64_t master_heartbeat_period_us = 50'000;  // the driver's heartbeat, 0x700 + master_node_id
+  std::uint16_t drive_heartbeat_timeout_ms = 150;    // 0x1016 in each drive; 0 = not watched
+  std::uint16_t drive_rpdo_timeout_ms = 100;         // 0x1400:05 in each drive; 0 = not watched
   std::int64_t command_future_tolerance_us = 50'000;  // a command stamped further ahead is refused
 };
 
@@ -58,6 +62,8 @@ struct MotorSection {
   int drive_heartbeat_timeout_ms = 150;
   int drive_rpdo_timeout_ms = 100;
   std::string status_channel = "MOTOR_STATUS";
+  int odometry_timeout_ms = 50;
+  std::string odometry_channel = "ODOMETRY";
 };
 
 /// can.yaml `motor:` keys: the node ids required, the rest optional.

@@ -3,9 +3,10 @@
 // executive's VELOCITY_CMD in (refused when stale by its own utime, from the future or not a number;
 // limited to the vehicle's speeds and accelerations), the drives configured by SDO at start-up (their
 // own limits and a watchdog on this driver), this driver's CANopen heartbeat, RPDO1 every cycle on the
-// configured CAN bus (SocketCAN on a vehicle, the LCM bridge beside the simulator), and each drive on
-// MOTOR_STATUS at 10 Hz. Everything runs on the wall clock (the clock of velocity_cmd_t.utime). On exit
-// the drives are commanded to zero and disabled.
+// configured CAN bus (SocketCAN on a vehicle, the LCM bridge beside the simulator), each drive on
+// MOTOR_STATUS at 10 Hz, and the wheels' actual velocities as odometry_t on ODOMETRY every cycle.
+// Everything runs on the wall clock (the clock of velocity_cmd_t.utime). On exit the drives are commanded
+// to zero and disabled.
 
 #include <chrono>
 #include <filesystem>
@@ -113,6 +114,7 @@ int run(ifar::common::DaemonContext& context, const std::string& vehicle_path,
         logger.error("{}: cannot send 0x{:03X}: {}", bus.name(), frame.id, sent.error);
       }
     }
+    loop.publish(motor.odometry_channel, node.odometry(time));
   };
   loop.every(static_cast<double>(motor.cycle_us) * 1e-6, cycle);
 
@@ -152,7 +154,7 @@ int main(int argc, char** argv)
   std::string command_channel = "VELOCITY_CMD";
   return ifar::common::runDaemon(
       argc, argv,
-      {"motor-driver", "Wheel drives over CANopen CiA 402: VELOCITY_CMD in, MOTOR_STATUS out",
+      {"motor-driver", "Wheel drives over CANopen CiA 402: VELOCITY_CMD in, MOTOR_STATUS and ODOMETRY out",
        "config/can.yaml", printedConfig},
       [&](ifar::common::DaemonContext& context) { return run(context, vehicle_path, command_channel); },
       [&](CLI::App& app) {

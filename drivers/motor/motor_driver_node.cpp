@@ -6,6 +6,7 @@
 
 #include "common/time.hpp"
 #include "drivers/motor/motor_status_message.hpp"
+#include "drivers/motor/odometry_message.hpp"
 
 namespace ifar::motor {
 namespace {
@@ -146,6 +147,13 @@ std::vector<can::Frame> MotorDriverNode::cycle(std::int64_t now_us)
 std::vector<ifar::motor_status_t> MotorDriverNode::statusMessages(std::int64_t now_us) const
 {
   return {toMessage(drive_.leftStatus(now_us), now_us), toMessage(drive_.rightStatus(now_us), now_us)};
+}
+
+ifar::odometry_t MotorDriverNode::odometry(std::int64_t now_us) const
+{
+  const OdometryGeometry geometry{config_.drive.wheel_radius_m, config_.drive.wheel_track_m,
+                                  config_.odometry_timeout_us};
+  return toOdometryMessage(drive_.leftStatus(now_us), drive_.rightStatus(now_us), now_us, geometry);
 }
 
 void MotorDriverNode::stopAndDisable()

@@ -20,8 +20,10 @@
 //   on VELOCITY_CMD:            node.onVelocityCommand(message, now_us);
 //   on a CAN frame:             node.onFrame(frame, now_us);
 //   every motor.cycle_ms:       for (auto& frame : node.cycle(now_us)) bus.send(frame);
-//   every 100 ms:               for (auto& message : node.statusMessages(now_us)) publish(MOTOR_STATUS,
-//   message); on exit:                    node.stopAndDisable(); then keep cycling for a few cycles.
+//                               publish(ODOMETRY, node.odometry(now_us));
+//   every 100 ms:               for (auto& message : node.statusMessages(now_us))
+//                                 publish(MOTOR_STATUS, message);
+//   on exit:                    node.stopAndDisable(); then keep cycling for a few cycles.
 
 #include <cstdint>
 #include <optional>
@@ -36,6 +38,7 @@
 #include "drivers/motor/motor_config.hpp"
 #include "drivers/motor/velocity_limits.hpp"
 #include "ifar/motor_status_t.hpp"
+#include "ifar/odometry_t.hpp"
 #include "ifar/velocity_cmd_t.hpp"
 
 namespace ifar::motor {
@@ -65,6 +68,9 @@ class MotorDriverNode {
   std::vector<can::Frame> cycle(std::int64_t now_us);
   /// Call every 100 ms: motor_status_t for the left then the right drive, stamped `now_us`.
   std::vector<ifar::motor_status_t> statusMessages(std::int64_t now_us) const;
+  /// Call every motor.cycle_ms (after cycle()): wheel odometry from the drives' last actual velocities
+  /// (TPDO1), stamped `now_us`; a drive without TPDO1 for motor.odometry_timeout_ms is flagged stale.
+  ifar::odometry_t odometry(std::int64_t now_us) const;
 
   /// Zero velocity and disable the drives (operator disable, shutdown): keep calling cycle() for a few
   /// cycles so the frames reach them.

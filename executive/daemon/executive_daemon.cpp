@@ -29,6 +29,10 @@ ExecutiveDaemon::ExecutiveDaemon(bus::RunLoop& loop, const ExecutiveSettings& se
       kMotorStatusChannel, [this](const ifar::motor_status_t& message, std::int64_t receive_utime) {
         node_.onMotorStatus(message, receive_utime);
       });
+  loop_.subscribe<ifar::odometry_t>(kOdometryChannel,
+                                    [this](const ifar::odometry_t& message, std::int64_t receive_utime) {
+                                      node_.onOdometry(message, receive_utime);
+                                    });
   loop_.subscribe<ifar::e_stop_t>(kEStopChannel,
                                   [this](const ifar::e_stop_t& message, std::int64_t receive_utime) {
                                     node_.onEStop(message, receive_utime);

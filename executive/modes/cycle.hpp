@@ -11,6 +11,7 @@
 #include "common/span.hpp"
 #include "executive/kinematics/velocity_command.hpp"
 #include "executive/modes/inputs.hpp"
+#include "executive/modes/odometer.hpp"
 
 namespace ifar::executive {
 
@@ -29,6 +30,8 @@ struct CycleView {
   common::Span<const geometry::Point> obstacles;
   bool obstacles_fresh = false;
   std::optional<ObjectObservation> pushed_object;  ///< a fresh observation of a pushed object
+  /// Where the wheels have taken the vehicle, while odometry is fresh (none: judge motion on the pose).
+  std::optional<WheelTrack> wheels;
 };
 
 /// What a part asks of the vehicle this cycle, and why (EXEC_STATUS's reason).

@@ -76,7 +76,7 @@ void DoorwayRun::start(const Doorway& doorway, const CycleView& view)
   run_.begin({end.x(), end.y(), std::atan2(doorway.heading.y(), doorway.heading.x())}, view.pose,
              run_settings_);
   started_us_ = view.now_us;
-  standstill_.anchor(view.pose, view.now_us);
+  standstill_.anchor(view);
 }
 
 DoorwayRun::Step DoorwayRun::step(const CycleView& view, const CollisionGuard& guard, MotionRequest& request)
@@ -87,7 +87,7 @@ DoorwayRun::Step DoorwayRun::step(const CycleView& view, const CollisionGuard& g
   const double elapsed_s = static_cast<double>(view.now_us - started_us_) * 1e-6;
   // Standing still (the way to the run's start blocked, the guard stopping the run) gives the run up as
   // surely as the timeout does.
-  const bool stuck = standstill_.standingStill(view.pose, view.now_us);
+  const bool stuck = standstill_.standingStill(view);
   if (elapsed_s > settings_.timeout_s || stuck) {
     // Left to the follower for a while; it may yet find its own way through.
     given_up_.emplace_back(doorway.centre,

@@ -466,7 +466,18 @@ Executive::Cycle Executive::readCycle(std::int64_t now_us, const Inputs& inputs)
   if (inputs.pushed_object && isFresh(now_us, inputs.pushed_object->utime, settings_.stale.obstacles_s)) {
     view.pushed_object = inputs.pushed_object->value;
   }
+  view.wheels = odometer_.track();
   return cycle;
+}
+
+std::optional<OdometryReading> Executive::freshOdometry(std::int64_t now_us, const Inputs& inputs) const
+{
+  if (!inputs.odometry || !inputs.odometry->value.valid ||
+      !isFresh(now_us, inputs.odometry->utime, settings_.stale.odometry_s) ||
+      !std::isfinite(inputs.odometry->value.linear) || !std::isfinite(inputs.odometry->value.angular)) {
+    return std::nullopt;
+  }
+  return inputs.odometry->value;
 }
 
 void Executive::halt(Cycle& cycle, const Inputs& inputs, std::int32_t stale, bool e_stopped)
@@ -522,6 +533,7 @@ void Executive::stepTask(Cycle& cycle)
 
 Output Executive::step(std::int64_t now_us, const Inputs& inputs)
 {
+  odometer_.update(now_us, freshOdometry(now_us, inputs));
   Cycle cycle = readCycle(now_us, inputs);
   const std::int32_t stale = staleBits(now_us, inputs);
   absorbPath(inputs);

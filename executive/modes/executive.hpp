@@ -23,6 +23,7 @@
 #include "executive/modes/following.hpp"
 #include "executive/modes/inputs.hpp"
 #include "executive/modes/mode.hpp"
+#include "executive/modes/odometer.hpp"
 #include "executive/modes/passage_reports.hpp"
 #include "executive/modes/path_progress.hpp"
 #include "executive/modes/push_sequence.hpp"
@@ -82,6 +83,8 @@ class Executive {
 
   static Mode modeOf(Task task);
   Cycle readCycle(std::int64_t now_us, const Inputs& inputs) const;
+  /// The odometry reading to dead-reckon this cycle: none when absent, stale or flagged invalid.
+  std::optional<OdometryReading> freshOdometry(std::int64_t now_us, const Inputs& inputs) const;
   std::int32_t staleBits(std::int64_t now_us, const Inputs& inputs) const;
   /// Takes in a new plan from the inputs (a resend of the same plan only keeps it fresh).
   void absorbPath(const Inputs& inputs);
@@ -125,6 +128,7 @@ class Executive {
   PushSequence push_;
   StallRecovery recovery_;
   PassageReports passages_;
+  Odometer odometer_;
 
   Task task_ = Task::Idle;
   std::string task_reason_ = "no path yet";

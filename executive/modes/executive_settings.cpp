@@ -29,6 +29,11 @@ void addTopLevel(Table& table)
           "stale_after_s.obstacles", [](auto& s) -> auto& { return s.stale.obstacles_s; }, "s",
           Range::positive(),
           "obstacle points older than this are not used (their stamp is the newest packet's)")
+      .add(
+          "stale_after_s.odometry", [](auto& s) -> auto& { return s.stale.odometry_s; }, "s",
+          Range::positive(),
+          "ODOMETRY older than this is not used: push progress and stalls are judged on the pose alone "
+          "(it arrives at 100 Hz)")
       .add("waypoint_tolerance_m", &S::waypoint_tolerance_m, "m", Range::positive(),
            "an intermediate waypoint counts as passed within this distance")
       .add(
@@ -260,6 +265,9 @@ void addPushing(Table& table)
           "push this far before the measured cost is trusted");
   tactile("cost_threshold", &T::cost_threshold, "m", Range::positive(),
           "|J measured - J planned| above this (equivalent metres) updates the affordance");
+  tactile("pose_smoothing_s", &T::pose_smoothing_s, "s", Range::nonNegative(),
+          "the no-motion window compares the pose averaged over about this long: estimator jitter of "
+          "centimetres per sample must not read as motion (0: the raw pose)");
   const auto pushed = [&table](const std::string& key, double PushedObjectSettings::*member, const char* unit,
                                Range range, const std::string& meaning) {
     table.add(

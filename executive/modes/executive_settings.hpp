@@ -20,6 +20,7 @@ struct StaleThresholds {
   double force_s = 0.1;
   double motor_s = 0.3;
   double obstacles_s = 0.5;  ///< older obstacle points are not used (the status says so)
+  double odometry_s = 0.1;   ///< older wheel odometry is not used: motion is judged on the pose alone
 };
 
 /// While approaching and pushing, the pushed object is no obstacle, but everything else still is.

@@ -30,10 +30,10 @@ Following::Step Following::step(const CycleView& view, const geometry::Point& ta
   const bool trying =
       step.result.status == FollowerStatus::Moving || step.result.status == FollowerStatus::Blocked;
   if (!watching_ || resumed || !trying) {
-    stall_watch_.anchor(view.pose, view.now_us);
+    stall_watch_.anchor(view);
     watching_ = true;
   } else {
-    step.stalled = stall_watch_.standingStill(view.pose, view.now_us);
+    step.stalled = stall_watch_.standingStill(view);
   }
   return step;
 }

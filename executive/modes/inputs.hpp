@@ -55,6 +55,15 @@ struct MotorReading {
   std::string reason;  ///< why the motor client stopped the drive, empty when running
 };
 
+/// Wheel odometry (ODOMETRY, from the drives' actual velocities): what the wheels did. Wheels keep
+/// turning when they slip, and a state estimator's pose jitters by centimetres, so neither alone says the
+/// vehicle moved.
+struct OdometryReading {
+  double linear = 0.0;   ///< m/s, forward
+  double angular = 0.0;  ///< rad/s, counter-clockwise
+  bool valid = true;     ///< false when the driver flags a drive's actual velocity stale
+};
+
 struct EStopSignal {
   bool engaged = false;
   std::string source;
@@ -72,6 +81,8 @@ struct Inputs {
   std::optional<Stamped<Path>> path;
   std::optional<Stamped<ForceReading>> force;
   std::optional<Stamped<MotorReading>> motor;
+  /// Optional: without it (an old log) motion is judged on the pose alone.
+  std::optional<Stamped<OdometryReading>> odometry;
   std::optional<Stamped<EStopSignal>> e_stop;
   std::optional<Stamped<std::vector<geometry::Point>>> obstacles;  ///< world frame, latest local set
   std::optional<Stamped<ObjectObservation>> pushed_object;

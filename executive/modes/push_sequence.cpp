@@ -26,7 +26,7 @@ void PushSequence::begin(const PushPlan& plan, const CycleView& view)
   startObjectPath();
   approach_.begin(plan_.contact_pose, view.pose, settings_.approach);
   align_backup_start_.reset();
-  standstill_.anchor(view.pose, view.now_us);
+  standstill_.anchor(view);
 }
 
 PushSequence::Step PushSequence::approach(const CycleView& view, const CollisionGuard& guard,
@@ -35,11 +35,11 @@ PushSequence::Step PushSequence::approach(const CycleView& view, const Collision
   Step step;
   step.target = plan_.contact_pose.position();
   const common::Span<const geometry::Point> obstacles = objectFreeObstacles(view);
-  bool standing_still = standstill_.standingStill(view.pose, view.now_us);
+  bool standing_still = standstill_.standingStill(view);
   if (standing_still && approach_.joinLane(view.pose, settings_.approach)) {
     // Stuck on the way to the stand-off point, already in the push lane (a corridor too narrow to turn
     // in): creep along it, no turn on the spot. Its own stall clock starts now.
-    standstill_.anchor(view.pose, view.now_us);
+    standstill_.anchor(view);
     standing_still = false;
   }
   if (standing_still && approach_.phase() == ApproachPhase::ToStandoff &&
@@ -81,7 +81,7 @@ void PushSequence::startPush(const CycleView& view)
   control_index_ = 0;
   escaped_object_.reset();
   phase_ = PushPhase::Pushing;
-  standstill_.anchor(view.pose, view.now_us);
+  standstill_.anchor(view);
   tracker_.begin(plan_);
   const bool jammed_before =
       std::find(jammed_objects_.begin(), jammed_objects_.end(), plan_.object_id) != jammed_objects_.end();
@@ -141,9 +141,9 @@ PushSequence::Step PushSequence::push(const CycleView& view, const CollisionGuar
   // cost from the event.
   if (result.phase != phase_) {
     phase_ = result.phase;
-    standstill_.anchor(view.pose, view.now_us);
+    standstill_.anchor(view);
   }
-  if (result.phase == PushPhase::Switching && standstill_.standingStill(view.pose, view.now_us)) {
+  if (result.phase == PushPhase::Switching && standstill_.standingStill(view)) {
     // Between primitives the vehicle drives round the object to its next contact like a first approach,
     // and can be boxed in the same way.
     step.object_left_at = observed ? observed : objectEstimate(true);
@@ -160,8 +160,7 @@ PushSequence::Step PushSequence::push(const CycleView& view, const CollisionGuar
   request.command = result.command;
   request.reason = fmt::format("object {}: {}", plan_.object_id, result.reason);
   guard.stop(view.pose, obstacles, request);
-  if (request.command.isZero() && !result.command.isZero() &&
-      standstill_.standingStill(view.pose, view.now_us)) {
+  if (request.command.isZero() && !result.command.isZero() && standstill_.standingStill(view)) {
     // The guard has held the push for the standstill timeout: something beside the object is in the
     // vehicle's way (no force rises, so the tactile monitor says nothing). Without this the vehicle
     // stood there for good.
@@ -176,8 +175,11 @@ PushSequence::Step PushSequence::push(const CycleView& view, const CollisionGuar
 std::optional<AffordanceEvent> PushSequence::tactileVerdict(const CycleView& view, const PushStep& tracked,
                                                             const std::optional<geometry::Point>& observed)
 {
-  std::optional<AffordanceEvent> event = tactile_.update(view.now_us, view.force_n, view.pose, observed,
-                                                         tracked.expects_contact, settings_.tactile);
+  const std::optional<double> wheel_travel =
+      view.wheels ? std::optional<double>(view.wheels->travel_m) : std::nullopt;
+  std::optional<AffordanceEvent> event =
+      tactile_.update(view.now_us, view.force_n, view.pose, wheel_travel, observed, tracked.expects_contact,
+                      settings_.tactile);
   if (event && event->reason == AffordanceReason::Jammed) {
     jammed_objects_.push_back(plan_.object_id);
   }

@@ -1,5 +1,6 @@
 #include "executive/modes/standstill_watch.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "executive/kinematics/angle.hpp"
@@ -11,19 +12,27 @@ StandstillWatch::StandstillWatch(double still_distance_m, double still_turn_rad,
 {
 }
 
-void StandstillWatch::anchor(const geometry::Pose2& pose, std::int64_t now_us)
+void StandstillWatch::anchor(const CycleView& view)
 {
-  anchor_ = pose;
-  anchor_us_ = now_us;
+  anchor_ = view.pose;
+  anchor_wheels_ = view.wheels;
+  anchor_us_ = view.now_us;
 }
 
-bool StandstillWatch::standingStill(const geometry::Pose2& pose, std::int64_t now_us)
+bool StandstillWatch::standingStill(const CycleView& view)
 {
-  if ((pose.position() - anchor_.position()).norm() > still_distance_m_ ||
-      std::abs(wrapToPi(pose.heading - anchor_.heading)) > still_turn_rad_) {
-    anchor(pose, now_us);
+  double distance = (view.pose.position() - anchor_.position()).norm();
+  double turn = std::abs(wrapToPi(view.pose.heading - anchor_.heading));
+  if (anchor_wheels_ && view.wheels) {
+    if (const std::optional<WheelMotion> wheels = wheelMotion(*anchor_wheels_, *view.wheels)) {
+      distance = std::min(distance, wheels->distance_m);
+      turn = std::min(turn, wheels->turn_rad);
+    }
   }
-  return static_cast<double>(now_us - anchor_us_) * 1e-6 > timeout_s_;
+  if (distance > still_distance_m_ || turn > still_turn_rad_) {
+    anchor(view);
+  }
+  return static_cast<double>(view.now_us - anchor_us_) * 1e-6 > timeout_s_;
 }
 
 }  // namespace ifar::executive

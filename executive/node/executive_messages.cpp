@@ -85,6 +85,11 @@ ForceReading fromMessage(const ifar::force_t& message)
   return {static_cast<double>(message.force_n), (message.status & kUnusable) != 0};
 }
 
+OdometryReading fromMessage(const ifar::odometry_t& message)
+{
+  return {message.linear_velocity, message.angular_velocity, message.status == 0};
+}
+
 EStopSignal fromMessage(const ifar::e_stop_t& message)
 {
   return {message.engaged != 0, message.source, message.reason};

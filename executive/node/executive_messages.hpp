@@ -14,6 +14,7 @@
 #include "ifar/exec_status_t.hpp"
 #include "ifar/force_t.hpp"
 #include "ifar/motor_status_t.hpp"
+#include "ifar/odometry_t.hpp"
 #include "ifar/path_t.hpp"
 #include "ifar/pose_t.hpp"
 #include "ifar/velocity_cmd_t.hpp"
@@ -29,6 +30,9 @@ Path fromMessage(const ifar::path_t& message, int& malformed);
 
 /// Fault, silent and stuck-counter statuses make the reading faulty; overload keeps the (saturated) value.
 ForceReading fromMessage(const ifar::force_t& message);
+
+/// The body velocity; invalid when the driver flags either drive's actual velocity stale.
+OdometryReading fromMessage(const ifar::odometry_t& message);
 
 EStopSignal fromMessage(const ifar::e_stop_t& message);
 

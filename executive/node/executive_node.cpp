@@ -69,6 +69,11 @@ void ExecutiveNode::onMotorStatus(const ifar::motor_status_t& message, std::int6
   inputs_.motor = motors_.combined();
 }
 
+void ExecutiveNode::onOdometry(const ifar::odometry_t& message, std::int64_t now_us)
+{
+  inputs_.odometry = Stamped<OdometryReading>{fromMessage(message), now_us};
+}
+
 void ExecutiveNode::onEStop(const ifar::e_stop_t& message, std::int64_t now_us)
 {
   inputs_.e_stop = Stamped<EStopSignal>{fromMessage(message), now_us};

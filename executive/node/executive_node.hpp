@@ -1,6 +1,6 @@
 #pragma once
 // The executive node's core: everything between the bus and the Executive, without a bus. It takes the
-// executive's input messages (POSE, GLOBAL_PATH, FORCE, MOTOR_STATUS, E_STOP and the lidar's
+// executive's input messages (POSE, GLOBAL_PATH, FORCE, MOTOR_STATUS, ODOMETRY, E_STOP and the lidar's
 // VELODYNE_PACKET, decoded into its own obstacle points) with their receive times, and on each control
 // cycle returns what to publish: VELOCITY_CMD, EXEC_STATUS (every fifth cycle and on mode changes),
 // AFFORDANCE (on tactile findings) and BLOCKED_PASSAGE (when repeated stalls give a passage up).
@@ -26,6 +26,7 @@
 #include "ifar/exec_status_t.hpp"
 #include "ifar/force_t.hpp"
 #include "ifar/motor_status_t.hpp"
+#include "ifar/odometry_t.hpp"
 #include "ifar/path_t.hpp"
 #include "ifar/pose_t.hpp"
 #include "ifar/velocity_cmd_t.hpp"
@@ -39,6 +40,7 @@ inline constexpr const char* kPoseChannel = "POSE";
 inline constexpr const char* kPathChannel = "GLOBAL_PATH";
 inline constexpr const char* kForceChannel = "FORCE";
 inline constexpr const char* kMotorStatusChannel = "MOTOR_STATUS";
+inline constexpr const char* kOdometryChannel = "ODOMETRY";
 inline constexpr const char* kEStopChannel = "E_STOP";
 inline constexpr const char* kCommandChannel = "VELOCITY_CMD";
 inline constexpr const char* kStatusChannel = "EXEC_STATUS";
@@ -69,6 +71,7 @@ class ExecutiveNode {
   void onPath(const ifar::path_t& message, std::int64_t now_us);
   void onForce(const ifar::force_t& message, std::int64_t now_us);
   void onMotorStatus(const ifar::motor_status_t& message, std::int64_t now_us);
+  void onOdometry(const ifar::odometry_t& message, std::int64_t now_us);
   void onEStop(const ifar::e_stop_t& message, std::int64_t now_us);
 
   /// One control cycle at `now_us`.

@@ -14,6 +14,7 @@
 #include "ifar/heartbeat_t.hpp"
 #include "ifar/motor_status_t.hpp"
 #include "ifar/object_polygons_t.hpp"
+#include "ifar/odometry_t.hpp"
 #include "ifar/path_t.hpp"
 #include "ifar/planner_status_t.hpp"
 #include "ifar/pose_t.hpp"
@@ -255,6 +256,22 @@ object_polygons_t makeObjectPolygons()
   return message;
 }
 
+odometry_t makeOdometry()
+{
+  odometry_t message;
+  message.utime = kUtime;
+  message.left_node_id = 1;
+  message.right_node_id = 2;
+  message.left_wheel_rad_s = 1.5;
+  message.right_wheel_rad_s = 2.25;
+  message.linear_velocity = 0.28125;
+  message.angular_velocity = 0.1875;
+  message.left_age_us = 4000;
+  message.right_age_us = 61000;
+  message.status = odometry_t::STATUS_RIGHT_STALE;
+  return message;
+}
+
 path_t makePath()
 {
   path_t message;
@@ -428,6 +445,7 @@ std::vector<SampleMessage> allSampleMessages()
       sample("MOTOR_STATUS", makeMotorStatus()),
       sample("DETECTED_OBJECTS", makeObjectPolygons()),
       sample("TEST_OBJECT_STATE", object),
+      sample("ODOMETRY", makeOdometry()),
       sample("GLOBAL_PATH", makePath()),
       sample("PLANNER_STATUS", makePlannerStatus()),
       sample("TEST_POLYGON", polygon),

@@ -131,7 +131,8 @@ Publications executiveDaemonReplay(const RunRequest& request, const std::vector<
 {
   const std::set<std::string> inputs{executive::kPoseChannel,        request.obstacles.packet_channel,
                                      executive::kPathChannel,        executive::kForceChannel,
-                                     executive::kMotorStatusChannel, executive::kEStopChannel};
+                                     executive::kMotorStatusChannel, executive::kOdometryChannel,
+                                     executive::kEStopChannel};
   std::int64_t clock = request.sim.simulator.epoch_utime;
   bus::RunLoop loop("memq://", silentLogger("executive_identity_loop"), [&clock] { return clock; });
   const executive::ExecutiveDaemon daemon(loop, request.executive, request.obstacles, request.vehicle,
@@ -170,7 +171,7 @@ TEST_P(NodeIdentity, ARunsRecordedMessagesThroughTheDaemonsGiveTheRunnersOutputs
   }
   for (const char* channel :
        {"VELODYNE_PACKET", "POSE", "GOAL", "GLOBAL_PATH", "PLANNER_STATUS", "FORCE", "MOTOR_STATUS",
-        "VELOCITY_CMD", "EXEC_STATUS", "CAN_VEHICLE", "SIM_GROUND_TRUTH"}) {
+        "ODOMETRY", "VELOCITY_CMD", "EXEC_STATUS", "CAN_VEHICLE", "SIM_GROUND_TRUTH"}) {
     EXPECT_EQ(channels.count(channel), 1U) << channel << " missing from the run's log";
   }
 

@@ -80,6 +80,21 @@ TEST(LcmConversions, ForceStatusBits)
   EXPECT_TRUE(fromMessage(message).faulty);
 }
 
+TEST(LcmConversions, OdometryIsInvalidWhenADriveIsStale)
+{
+  ifar::odometry_t message{};
+  message.linear_velocity = 0.375;
+  message.angular_velocity = 0.25;
+  OdometryReading reading = fromMessage(message);
+  EXPECT_DOUBLE_EQ(reading.linear, 0.375);
+  EXPECT_DOUBLE_EQ(reading.angular, 0.25);
+  EXPECT_TRUE(reading.valid);
+  message.status = ifar::odometry_t::STATUS_RIGHT_STALE;
+  EXPECT_FALSE(fromMessage(message).valid);
+  message.status = ifar::odometry_t::STATUS_LEFT_STALE;
+  EXPECT_FALSE(fromMessage(message).valid);
+}
+
 TEST(LcmConversions, MotorNodesCombine)
 {
   MotorStatusCombiner motors;

@@ -135,6 +135,27 @@ TEST_F(ExecutiveNodeTest, HealthNamesStaleInputsForTheHeartbeat)
   EXPECT_EQ(node_.healthProblem(), "stale inputs: pose, force, motor");
 }
 
+TEST_F(ExecutiveNodeTest, OdometryIsAnInputThatNeverStopsTheVehicle)
+{
+  receiveInputs(kStartUs);
+  ifar::odometry_t odometry{};
+  odometry.utime = kStartUs;
+  odometry.linear_velocity = 0.25;
+  odometry.angular_velocity = -0.5;
+  node_.onOdometry(odometry, kStartUs + 1'000);
+  ASSERT_TRUE(node_.inputs().odometry.has_value());
+  EXPECT_EQ(node_.inputs().odometry->utime, kStartUs + 1'000);  // the receive time
+  EXPECT_DOUBLE_EQ(node_.inputs().odometry->value.linear, 0.25);
+  EXPECT_DOUBLE_EQ(node_.inputs().odometry->value.angular, -0.5);
+  EXPECT_TRUE(node_.inputs().odometry->value.valid);
+  // Wheel odometry goes stale (an old log has none): the other inputs fresh, the vehicle follows on.
+  receiveInputs(kStartUs + 500'000);
+  const ExecutiveOutputs outputs = node_.cycle(kStartUs + 500'000);
+  EXPECT_EQ(outputs.output.status.mode, Mode::Follow);
+  EXPECT_EQ(outputs.output.status.stale, 0);
+  EXPECT_EQ(node_.healthProblem(), "");
+}
+
 // Idle or arrived, no path is expected: only the inputs that must always flow count.
 TEST(ExecutiveHealth, AStalePathIsAProblemOnlyWhileAGoalIsDriven)
 {

@@ -31,6 +31,8 @@ TEST(ExecutiveSettings, LoadsShippedConfig)
   EXPECT_EQ(settings.follower.angular_samples, 15);
   EXPECT_DOUBLE_EQ(settings.tactile.no_motion_time_s, 2.0);
   EXPECT_DOUBLE_EQ(settings.tactile.contact_force_n, settings.approach.contact_force_n);
+  EXPECT_DOUBLE_EQ(settings.tactile.pose_smoothing_s, 0.1);
+  EXPECT_DOUBLE_EQ(settings.stale.odometry_s, 0.1);
   EXPECT_TRUE(settings.doorway.enabled);
   EXPECT_DOUBLE_EQ(settings.doorway.max_width_m, 1.2);
   EXPECT_DOUBLE_EQ(settings.doorway.speed, 0.6);
@@ -86,6 +88,18 @@ TEST(ExecutiveSettings, NegativeThresholdNamesTheKey)
   } catch (const common::ConfigError& error) {
     EXPECT_NE(std::string(error.what()).find("stale_after_s.pose"), std::string::npos) << error.what();
   }
+}
+
+TEST(ExecutiveSettings, OdometryAndSmoothingKeysAreRequiredAndChecked)
+{
+  EXPECT_NE(errorWithLineReplaced("  odometry: 0.1", "  odometry: 0").find("stale_after_s.odometry"),
+            std::string::npos);
+  EXPECT_NE(errorWithLineReplaced("  pose_smoothing_s: 0.1", "  pose_smoothing_s: -0.1")
+                .find("tactile.pose_smoothing_s"),
+            std::string::npos);
+  EXPECT_NE(errorWithLineReplaced("  pose_smoothing_s: 0.1", "").find("tactile.pose_smoothing_s"),
+            std::string::npos);
+  EXPECT_EQ(errorWithLineReplaced("  pose_smoothing_s: 0.1", "  pose_smoothing_s: 0"), "");  // the raw pose
 }
 
 TEST(ExecutiveSettings, UnknownKeyIsRejected)

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -941,6 +942,44 @@ TEST_F(ExecutiveTest, StaleInputDuringPushResumesThroughFollow)
   const Output resumed = run(1, path, 100.0);
   EXPECT_NE(resumed.status.mode, Mode::Push) << resumed.status.reason;
   EXPECT_NE(resumed.status.mode, Mode::Stop);
+}
+
+TEST_F(ExecutiveTest, AStuckPushUnderPoseJitterWithSlippingWheelsIsFoundUnpushableWithinTheWindow)
+{
+  // A state estimator's pose (2 cm, 0.003 rad of jitter per sample) and wheel odometry: the drives turn
+  // at the commanded speed while the vehicle stands against an object it cannot move.
+  const Path path = pushPath(1, now_us_);
+  for (int cycle = 0; cycle < 3000 && executive_.mode() != Mode::Push; ++cycle) {
+    run(1, path);
+  }
+  ASSERT_EQ(executive_.mode(), Mode::Push);
+  std::mt19937 random(5);
+  std::normal_distribution<double> position(0.0, 0.02);
+  std::normal_distribution<double> heading(0.0, 0.003);
+  const double stall_force = 0.95 * vehicle_.maxPushForce();
+  VelocityCommand command;
+  int cycles_to_event = 0;
+  Output output;
+  while (events_.empty() && cycles_to_event < 500) {
+    now_us_ += kCycleUs;
+    Inputs inputs = freshInputs(now_us_, path, stall_force);
+    const double dx = position(random);
+    const double dy = position(random);
+    inputs.pose->value = Pose2{pose_.x + dx, pose_.y + dy, pose_.heading + heading(random)};
+    inputs.odometry =
+        Stamped<OdometryReading>{OdometryReading{command.linear, command.angular, true}, now_us_};
+    output = executive_.step(now_us_, inputs);
+    command = output.command;
+    if (output.affordance) {
+      events_.push_back(*output.affordance);
+    }
+    ++cycles_to_event;
+  }
+  ASSERT_EQ(events_.size(), 1u) << output.status.reason;
+  EXPECT_EQ(events_[0].reason, AffordanceReason::NoMotion);
+  EXPECT_FALSE(events_[0].pushable);
+  EXPECT_LE(cycles_to_event * kCycleUs * 1e-6, settings_.tactile.no_motion_time_s + 0.05);
+  EXPECT_EQ(output.status.mode, Mode::ReplanWait);
 }
 
 }  // namespace

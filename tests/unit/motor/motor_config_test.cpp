@@ -25,6 +25,33 @@ TEST(MotorConfig, ReadsTheProjectConfig)
   EXPECT_EQ(config.drive_rpdo_timeout_ms, 100);
   EXPECT_DOUBLE_EQ(config.drive.wheel_radius_m, 0.2);
   EXPECT_EQ(config.status_channel, "MOTOR_STATUS");
+  EXPECT_EQ(config.odometry_channel, "ODOMETRY");
+  EXPECT_EQ(config.odometry_timeout_us, 50'000);
+}
+
+TEST(MotorConfig, OdometryKeysAreOptionalAndChecked)
+{
+  const auto defaults = loadMotorConfig(
+      common::ConfigNode::loadString("motor:\n  left_node_id: 1\n  right_node_id: 2\n", "test.yaml"),
+      common::VehicleSettings{});
+  EXPECT_EQ(defaults.odometry_channel, "ODOMETRY");
+  EXPECT_EQ(defaults.odometry_timeout_us, 50'000);
+  const auto set =
+      loadMotorConfig(common::ConfigNode::loadString("motor:\n  left_node_id: 1\n  right_node_id: 2\n"
+                                                     "  odometry_timeout_ms: 80\n"
+                                                     "  odometry_channel: WHEELS\n",
+                                                     "test.yaml"),
+                      common::VehicleSettings{});
+  EXPECT_EQ(set.odometry_channel, "WHEELS");
+  EXPECT_EQ(set.odometry_timeout_us, 80'000);
+  const auto zero = common::ConfigNode::loadString(
+      "motor:\n  left_node_id: 1\n  right_node_id: 2\n  odometry_timeout_ms: 0\n", "test.yaml");
+  try {
+    loadMotorConfig(zero, common::VehicleSettings{});
+    FAIL() << "odometry_timeout_ms 0 accepted";
+  } catch (const common::ConfigError& error) {
+    EXPECT_NE(std::string(error.what()).find("odometry_timeout_ms"), std::string::npos) << error.what();
+  }
 }
 
 TEST(MotorConfig, RejectsEqualNodeIdsNamingTheKey)

@@ -295,3 +295,82 @@ TEST_F(MotorDriverNodeTest, StopAndDisableLeavesTheDrivesStandingAndDisabled)
 
 }  // namespace
 }  // namespace ifar::motor
+
+namespace ifar::motor {
+namespace {
+
+can::Frame tpdo1(std::uint8_t node_id, std::int32_t actual_velocity)
+{
+  return encodeTpdo1(node_id, VelocityFeedback{0x0627, actual_velocity});
+}
+
+TEST(MotorDriverNodeOdometry, TheDrivesActualVelocitiesBecomeWheelAndBodyVelocities)
+{
+  MotorDriverNode node{projectConfig(), common::VehicleSettings{}};  // radius 0.15 m, track 0.6 m
+  node.onFrame(tpdo1(1, 2000), kEpoch);                              // left wheel 2 rad/s
+  node.onFrame(tpdo1(2, 3000), kEpoch + 3'000);                      // right wheel 3 rad/s
+  node.onFrame(tpdo1(3, 9000), kEpoch + 4'000);                      // another node's: not a wheel
+  const ifar::odometry_t odometry = node.odometry(kEpoch + 10'000);
+  EXPECT_EQ(odometry.utime, kEpoch + 10'000);
+  EXPECT_EQ(odometry.left_node_id, 1);
+  EXPECT_EQ(odometry.right_node_id, 2);
+  EXPECT_DOUBLE_EQ(odometry.left_wheel_rad_s, 2.0);
+  EXPECT_DOUBLE_EQ(odometry.right_wheel_rad_s, 3.0);
+  EXPECT_DOUBLE_EQ(odometry.linear_velocity, 0.375);  // 0.15 x (3 + 2) / 2
+  EXPECT_DOUBLE_EQ(odometry.angular_velocity, 0.25);  // 0.15 x (3 - 2) / 0.6
+  EXPECT_EQ(odometry.left_age_us, 10'000);
+  EXPECT_EQ(odometry.right_age_us, 7'000);
+  EXPECT_EQ(odometry.status, 0);
+}
+
+TEST(MotorDriverNodeOdometry, ReversingAndTurningOnTheSpot)
+{
+  MotorDriverNode node{projectConfig(), common::VehicleSettings{}};
+  node.onFrame(tpdo1(1, -1000), kEpoch);
+  node.onFrame(tpdo1(2, 1000), kEpoch);
+  ifar::odometry_t odometry = node.odometry(kEpoch);
+  EXPECT_DOUBLE_EQ(odometry.linear_velocity, 0.0);
+  EXPECT_DOUBLE_EQ(odometry.angular_velocity, 0.5);  // 0.15 x 2 / 0.6, counter-clockwise
+  node.onFrame(tpdo1(1, -1500), kEpoch + 10'000);
+  node.onFrame(tpdo1(2, -1500), kEpoch + 10'000);
+  odometry = node.odometry(kEpoch + 10'000);
+  EXPECT_DOUBLE_EQ(odometry.left_wheel_rad_s, -1.5);
+  EXPECT_DOUBLE_EQ(odometry.linear_velocity, -0.225);
+  EXPECT_DOUBLE_EQ(odometry.angular_velocity, 0.0);
+}
+
+TEST(MotorDriverNodeOdometry, ADriveWithoutTpdo1WithinTheTimeoutIsFlaggedStale)
+{
+  MotorDriverNode node{projectConfig(), common::VehicleSettings{}};  // odometry timeout 50 ms
+  ifar::odometry_t odometry = node.odometry(kEpoch);
+  EXPECT_EQ(odometry.left_age_us, -1);  // nothing heard yet
+  EXPECT_EQ(odometry.right_age_us, -1);
+  EXPECT_EQ(odometry.status, ifar::odometry_t::STATUS_LEFT_STALE | ifar::odometry_t::STATUS_RIGHT_STALE);
+  node.onFrame(tpdo1(1, 1000), kEpoch);
+  node.onFrame(tpdo1(2, 1000), kEpoch);
+  EXPECT_EQ(node.odometry(kEpoch + 50'000).status, 0);  // 50 ms old: still fresh
+  node.onFrame(tpdo1(2, 1200), kEpoch + 40'000);
+  odometry = node.odometry(kEpoch + 50'001);
+  EXPECT_EQ(odometry.status, ifar::odometry_t::STATUS_LEFT_STALE);
+  EXPECT_EQ(odometry.left_age_us, 50'001);
+  EXPECT_EQ(odometry.right_age_us, 10'001);
+  EXPECT_DOUBLE_EQ(odometry.left_wheel_rad_s, 1.0);  // the last one received, flagged
+  EXPECT_DOUBLE_EQ(odometry.right_wheel_rad_s, 1.2);
+}
+
+TEST_F(MotorDriverNodeTest, OdometryFollowsTheDrivesInClosedLoop)
+{
+  run(60, 0.0, 0.0);  // configured and enabled
+  ASSERT_TRUE(node.running(now));
+  run(100, 0.3, 0.0);  // 1 s: the wheels reach 2 rad/s within the ramp
+  const ifar::odometry_t odometry = node.odometry(now);
+  EXPECT_EQ(odometry.status, 0);
+  EXPECT_LE(odometry.left_age_us, 10'000);
+  EXPECT_DOUBLE_EQ(odometry.left_wheel_rad_s, left.actualVelocity() / 1000.0);
+  EXPECT_DOUBLE_EQ(odometry.right_wheel_rad_s, right.actualVelocity() / 1000.0);
+  EXPECT_NEAR(odometry.linear_velocity, 0.3, 1e-3);
+  EXPECT_NEAR(odometry.angular_velocity, 0.0, 1e-9);
+}
+
+}  // namespace
+}  // namespace ifar::motor

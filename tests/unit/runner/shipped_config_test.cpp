@@ -102,6 +102,7 @@ TEST(ShippedConfig, ExecutiveTopLevel)
   EXPECT_EQ(executive.stale.pose_s, 0.1);
   EXPECT_EQ(executive.stale.path_s, 0.15);
   EXPECT_EQ(executive.stale.obstacles_s, 0.5);
+  EXPECT_EQ(executive.stale.odometry_s, 0.1);
   EXPECT_EQ(executive.waypoint_tolerance_m, 0.4);
   EXPECT_EQ(executive.waypoint_pass_radius_m, 1.0);
   EXPECT_EQ(executive.goal_tolerance_m, 0.3);
@@ -142,6 +143,7 @@ TEST(ShippedConfig, ExecutiveParts)
   EXPECT_EQ(executive.tactile.max_force_fraction, 0.9);
   EXPECT_EQ(executive.tactile.contact_force_n, 20.0);
   EXPECT_EQ(executive.tactile.min_measured_distance_m, 0.3);
+  EXPECT_EQ(executive.tactile.pose_smoothing_s, 0.1);
   EXPECT_EQ(executive.pushed_object.radius_m, 0.8);
   EXPECT_EQ(executive.pushed_object.guard_horizon_s, 0.5);
 }
@@ -205,6 +207,8 @@ TEST(ShippedConfig, CanDrivers)
   EXPECT_EQ(request.motor.drive_heartbeat_timeout_ms, 150);
   EXPECT_EQ(request.motor.drive_rpdo_timeout_ms, 100);
   EXPECT_EQ(request.motor.status_channel, "MOTOR_STATUS");
+  EXPECT_EQ(request.motor.odometry_channel, "ODOMETRY");
+  EXPECT_EQ(request.motor.odometry_timeout_us, 50'000);
   EXPECT_EQ(request.motor.drive.wheel_track_m, 0.6);
 }
 
