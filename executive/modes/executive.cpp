@@ -94,6 +94,11 @@ std::int32_t Executive::staleBits(std::int64_t now_us, const Inputs& inputs) con
       !isFresh(now_us, inputs.motor->utime, settings_.stale.motor_s)) {
     bits |= kStaleMotor;
   }
+  // Without fresh points the follower and the collision guard are blind: the vehicle stops as for any
+  // other lost input rather than drive on into what the lidar no longer shows.
+  if (!inputs.obstacles || !isFresh(now_us, inputs.obstacles->utime, settings_.stale.obstacles_s)) {
+    bits |= kStaleObstacles;
+  }
   return bits;
 }
 
@@ -551,10 +556,6 @@ Output Executive::step(std::int64_t now_us, const Inputs& inputs)
     stepTask(cycle);
     moving = task_ == Task::Follow || task_ == Task::Doorway || task_ == Task::Approach ||
              task_ == Task::Push || task_ == Task::BackOff;
-    if (!cycle.view.obstacles_fresh &&
-        (task_ == Task::Follow || task_ == Task::Doorway || task_ == Task::Approach)) {
-      cycle.motion.reason += " (no fresh obstacle points)";
-    }
   }
   const Mode mode = halted ? (e_stopped ? Mode::EStop : Mode::Stop) : modeOf(task_);
   return finishCycle(cycle, mode, stale, moving);

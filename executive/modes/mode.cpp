@@ -46,6 +46,9 @@ std::string describeStale(std::int32_t stale_bits)
   if ((stale_bits & kStaleMotor) != 0) {
     add("motor");
   }
+  if ((stale_bits & kStaleObstacles) != 0) {
+    add("obstacles");
+  }
   return text;
 }
 

@@ -24,7 +24,8 @@ enum StaleInput : std::int32_t {
   kStalePose = 1,
   kStalePath = 2,
   kStaleForce = 4,
-  kStaleMotor = 8,  ///< motor heartbeat lost or motor fault
+  kStaleMotor = 8,       ///< motor heartbeat lost or motor fault
+  kStaleObstacles = 16,  ///< no lidar packet lately: the obstacle points are stale or there are none
 };
 
 /// "pose, force" style list of the set bits; empty for 0.

@@ -85,7 +85,7 @@ void ExecutiveNode::updateObstacleInputs(std::int64_t now_us)
 {
   const std::int64_t newest = obstacles_.newestPacketUtime();
   if (newest == 0) {
-    return;  // no packet yet: the executive reports "no fresh obstacle points"
+    return;  // no packet yet: the obstacle input is stale and the executive stays stopped
   }
   // The set as of the newest packet, stamped with it: when the lidar falls silent the executive sees
   // the last points go stale instead of a fresh empty set.

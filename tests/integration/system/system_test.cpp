@@ -7,6 +7,7 @@
 #include <dirent.h>
 #include <signal.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <fstream>
@@ -305,10 +306,12 @@ TEST_F(SystemTest, HeavyBoxIsMarkedUnpushableAndTheVehicleGoesAround)
 /// Ground truth speeds and the executive's zero-velocity commands as they arrive, with receive times.
 struct StopWatcher {
   std::optional<ifar::world_state_t> previous;
-  std::vector<std::pair<std::int64_t, double>> speeds;  // receive utime, m/s
-  std::vector<std::int64_t> zero_commands;              // receive utimes of VELOCITY_CMD (0, 0)
+  std::vector<std::pair<std::int64_t, double>> speeds;               // receive utime, m/s
+  std::vector<std::int64_t> zero_commands;                           // receive utimes of VELOCITY_CMD (0, 0)
+  std::vector<std::pair<std::int64_t, ifar::world_state_t>> truths;  // receive utime, ground truth
   void onTruth(const lcm::ReceiveBuffer* buffer, const std::string&, const ifar::world_state_t* truth)
   {
+    truths.emplace_back(buffer->recv_utime, *truth);
     if (previous && truth->utime > previous->utime) {
       const double seconds = static_cast<double>(truth->utime - previous->utime) * 1e-6;
       const double distance =
@@ -390,6 +393,101 @@ TEST_F(SystemTest, KillingThePlannerStopsTheVehicleAndTheRunCompletesAfterRespaw
   EXPECT_EQ(stack.exitCode(), 0) << "goal not reached after the planner respawned:\n" << stack.launchOutput();
   const std::string output = stack.launchOutput();
   EXPECT_NE(output.find("restarting planner"), std::string::npos) << output;
+}
+
+/// Ground-truth distance the vehicle covered between two receive times.
+double travelledBetween(const StopWatcher& watcher, std::int64_t from_utime, std::int64_t to_utime)
+{
+  double distance = 0.0;
+  const ifar::world_state_t* previous = nullptr;
+  for (const auto& [received, truth] : watcher.truths) {
+    if (received < from_utime || received > to_utime) {
+      continue;
+    }
+    if (previous != nullptr) {
+      distance += std::hypot(truth.vehicle_x - previous->vehicle_x, truth.vehicle_y - previous->vehicle_y);
+    }
+    previous = &truth;
+  }
+  return distance;
+}
+
+TEST_F(SystemTest, AFrozenLidarDriverStopsTheVehicleAndItDrivesOnWhenTheLidarIsBack)
+{
+  const std::string url = "udpm://239.255.76.67:7784?ttl=0";
+  lcm::LCM bus(url);
+  if (!bus.good()) {
+    GTEST_SKIP() << "LCM cannot start on " << url;
+  }
+  StopWatcher watcher;
+  bus.subscribe("SIM_GROUND_TRUTH", &StopWatcher::onTruth, &watcher);
+  bus.subscribe("VELOCITY_CMD", &StopWatcher::onCommand, &watcher);
+  LaunchedStack stack(folder_, url, {{"IFAR_GOAL_WAIT_S", "170"}}, 190.0);
+  ASSERT_TRUE(stack.started());
+  const Clock::time_point give_up = Clock::now() + std::chrono::seconds(60);
+  int moving = 0;
+  double speed_at_freeze = 0.0;
+  while (moving < 20 && Clock::now() < give_up) {
+    if (bus.handleTimeout(100) > 0 && !watcher.speeds.empty()) {
+      speed_at_freeze = watcher.speeds.back().second;
+      moving = speed_at_freeze > 0.2 ? moving + 1 : 0;
+    }
+  }
+  ASSERT_GE(moving, 20) << "the vehicle never drove:\n" << stack.launchOutput();
+  const pid_t lidar = stack.childRunning("ifar-velodyne-driver");
+  ASSERT_GT(lidar, 0) << "no ifar-velodyne-driver child of the launch";
+  const std::int64_t frozen_utime = ifar::common::nowMicroseconds();
+  ASSERT_EQ(kill(lidar, SIGSTOP), 0);
+
+  // Two seconds without obstacle points, as a sensor unplugged for that long.
+  std::optional<std::int64_t> commanded_utime;
+  std::optional<std::int64_t> stopped_utime;
+  const Clock::time_point thaw = Clock::now() + std::chrono::seconds(2);
+  while (Clock::now() < thaw) {
+    if (bus.handleTimeout(50) <= 0) {
+      continue;
+    }
+    for (const std::int64_t received : watcher.zero_commands) {
+      if (!commanded_utime && received > frozen_utime) {
+        commanded_utime = received;
+      }
+    }
+    const auto& [received, speed] = watcher.speeds.back();
+    if (!stopped_utime && received > frozen_utime && speed < 0.02) {
+      stopped_utime = received;
+    }
+  }
+  const std::int64_t thawed_utime = ifar::common::nowMicroseconds();
+  ASSERT_EQ(kill(lidar, SIGCONT), 0);
+  ASSERT_TRUE(commanded_utime.has_value()) << "no zero VELOCITY_CMD while the lidar was frozen";
+  ASSERT_TRUE(stopped_utime.has_value()) << "the vehicle did not stop while the lidar was frozen";
+  const double command_ms = static_cast<double>(*commanded_utime - frozen_utime) * 1e-3;
+  const double blind_m = travelledBetween(watcher, frozen_utime, thawed_utime);
+  double peak_speed = 0.0;  // the vehicle may still have been accelerating when the lidar froze
+  for (const auto& [received, speed] : watcher.speeds) {
+    peak_speed =
+        received > frozen_utime && received < thawed_utime ? std::max(peak_speed, speed) : peak_speed;
+  }
+  std::cout << "lidar frozen at " << speed_at_freeze << " m/s: zero velocity commanded after " << command_ms
+            << " ms, at rest after " << static_cast<double>(*stopped_utime - frozen_utime) * 1e-3 << " ms, "
+            << blind_m << " m driven in the 2 s without the lidar (peak " << peak_speed << " m/s)"
+            << std::endl;
+  // The points go stale 0.5 s (executive.yaml stale_after_s.obstacles) after the last packet; the next
+  // 20 ms cycle commands zero. Then the way to the wheels (300 ms, as for a dead planner) and braking at
+  // 1 m/s^2 from at most the peak speed; 0.1 m for the 20 Hz ground truth's sampling.
+  const double command_s = command_ms * 1e-3;
+  EXPECT_LE(command_ms, 500.0 + 200.0);
+  EXPECT_LE(blind_m, peak_speed * (command_s + 0.3) + peak_speed * peak_speed / 2.0 + 0.1);
+
+  // The lidar back: the vehicle drives on.
+  bool again = false;
+  const Clock::time_point resume_until = Clock::now() + std::chrono::seconds(15);
+  while (!again && Clock::now() < resume_until) {
+    if (bus.handleTimeout(100) > 0 && !watcher.speeds.empty()) {
+      again = watcher.speeds.back().first > thawed_utime && watcher.speeds.back().second > 0.2;
+    }
+  }
+  EXPECT_TRUE(again) << "the vehicle did not drive on after the lidar came back:\n" << stack.launchOutput();
 }
 
 }  // namespace

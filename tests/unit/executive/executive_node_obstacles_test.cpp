@@ -133,9 +133,11 @@ TEST_F(ExecutiveNodeObstaclesTest, PacketsBecomeObstaclePoints)
 {
   publishInputs(straightPath());
   cycle();
-  EXPECT_FALSE(node_.inputs().obstacles.has_value());  // no packet yet
+  EXPECT_FALSE(node_.inputs().obstacles.has_value());  // no packet yet: blind, so stopped
   ASSERT_FALSE(statuses_.empty());
-  EXPECT_NE(statuses_.back().reason.find("no fresh obstacle points"), std::string::npos)
+  EXPECT_EQ(statuses_.back().mode, ifar::exec_status_t::MODE_STOP);
+  EXPECT_EQ(statuses_.back().stale, ifar::exec_status_t::STALE_OBSTACLES);
+  EXPECT_NE(statuses_.back().reason.find("stale input: obstacles"), std::string::npos)
       << statuses_.back().reason;
 
   testing::TestPacket packet(0);
@@ -181,6 +183,7 @@ TEST_F(ExecutiveNodeObstaclesTest, MalformedPacketsAreCountedAndReportedPosition
 TEST_F(ExecutiveNodeObstaclesTest, RetroReflectiveReturnsNearTheApproachedObjectBecomeItsObservation)
 {
   publishInputs(pushPath());
+  publishPacket(testing::TestPacket(0).bytes());  // the lidar runs: nothing in view yet
   const Output first = cycle();
   ASSERT_EQ(first.status.mode, Mode::Approach) << first.status.reason;
 

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 #include <spdlog/sinks/null_sink.h>
 
+#include "tests/unit/executive/vlp16_test_packet.hpp"
+
 namespace ifar::executive {
 namespace {
 
@@ -20,13 +22,20 @@ class ExecutiveNodeTest : public ::testing::Test {
   {
   }
 
-  /// Fresh pose, path, force and motor status received at `now`.
+  /// Fresh pose, path, force, motor status and a lidar packet (no returns) received at `now`.
   void receiveInputs(std::int64_t now)
   {
     ifar::pose_t pose{};
     pose.utime = now;
     pose.orientation[0] = 1.0;
     node_.onPose(pose, now);
+    // After the pose: the executive places a packet's returns with the pose it has.
+    ifar::velodyne_packet_t packet{};
+    packet.utime = now;
+    packet.port = 2368;
+    packet.data = testing::TestPacket(0).bytes();
+    packet.size = static_cast<std::int32_t>(packet.data.size());
+    node_.onVelodynePacket(packet, now);
     ifar::path_t path{};
     path.utime = 1;
     path.goal_id = 3;
@@ -132,7 +141,7 @@ TEST_F(ExecutiveNodeTest, HealthNamesStaleInputsForTheHeartbeat)
   node_.cycle(kStartUs);
   EXPECT_EQ(node_.healthProblem(), "");
   node_.cycle(kStartUs + 500'000);
-  EXPECT_EQ(node_.healthProblem(), "stale inputs: pose, force, motor");
+  EXPECT_EQ(node_.healthProblem(), "stale inputs: pose, force, motor");  // points hold 0.5 s
 }
 
 TEST_F(ExecutiveNodeTest, OdometryIsAnInputThatNeverStopsTheVehicle)

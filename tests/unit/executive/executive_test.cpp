@@ -731,6 +731,8 @@ TEST_P(StaleInputTest, ZeroCommandWithinOneCycleAfterThreshold)
       inputs.path->utime = last_fresh_us;
     } else if (name == "force") {
       inputs.force->utime = last_fresh_us;
+    } else if (name == "obstacles") {
+      inputs.obstacles->utime = last_fresh_us;
     } else {
       inputs.motor->utime = last_fresh_us;
     }
@@ -757,7 +759,9 @@ TEST_P(StaleInputTest, ZeroCommandWithinOneCycleAfterThreshold)
 INSTANTIATE_TEST_SUITE_P(
     EachInput, StaleInputTest,
     ::testing::Values(StaleCase{"pose", 0.1, kStalePose}, StaleCase{"path", 1.0, kStalePath},
-                      StaleCase{"force", 0.1, kStaleForce}, StaleCase{"motor", 0.3, kStaleMotor}),
+                      StaleCase{"force", 0.1, kStaleForce}, StaleCase{"motor", 0.3, kStaleMotor},
+                      // A frozen or unplugged lidar: the vehicle stops instead of following blind.
+                      StaleCase{"obstacles", 0.5, kStaleObstacles}),
     [](const ::testing::TestParamInfo<StaleCase>& param_info) { return std::string(param_info.param.name); });
 
 TEST_F(ExecutiveTest, MotorFaultStopsWithMotorReason)
