@@ -1,0 +1,103 @@
+#include "planner/perception/free_space_view.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+namespace ifar::perception {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+// Azimuth bins of 0.4 degrees: a VLP-16 fires every 0.2 degrees at 10 Hz (0.4 at 20 Hz), so each bin holds
+// a firing of all 16 lasers; an empty bin (no return) is never seen through.
+constexpr double kBinRad = 0.4 * kPi / 180.0;
+const std::size_t kBins = static_cast<std::size_t>(std::ceil(2.0 * kPi / kBinRad));
+
+std::size_t binOf(double azimuth)
+{
+  double wrapped = std::fmod(azimuth, 2.0 * kPi);
+  if (wrapped < 0.0) {
+    wrapped += 2.0 * kPi;
+  }
+  return std::min(kBins - 1, static_cast<std::size_t>(wrapped / kBinRad));
+}
+
+}  // namespace
+
+FreeSpaceView::FreeSpaceView(common::Span<const WorldPoint> points, const geometry::Point& origin,
+                             const FreeSpaceSettings& settings)
+    : origin_(origin), margin_m_(settings.margin_m), bins_(kBins)
+{
+  for (const WorldPoint& point : points) {
+    if (!point.position_world.allFinite() || !point.sensor_world.allFinite() ||
+        !std::isfinite(point.height_above_ground_m) || !(point.range_m >= settings.min_range_m)) {
+      continue;
+    }
+    const double ground_z = point.position_world.z() - point.height_above_ground_m;
+    const double sensor_height = point.sensor_world.z() - ground_z;
+    const double end_height = point.height_above_ground_m;
+    if (sensor_height < settings.ground_clearance_m || sensor_height > settings.vehicle_height_m) {
+      continue;  // a sensor outside the band sees no free space in it
+    }
+    // The part of the ray inside the height band: a ray into the ground leaves it at the clearance, one
+    // that climbs leaves it at the vehicle's height; a return inside the band ends it there.
+    double inside = 1.0;
+    if (end_height < settings.ground_clearance_m) {
+      inside = (sensor_height - settings.ground_clearance_m) / (sensor_height - end_height);
+    } else if (end_height > settings.vehicle_height_m) {
+      inside = (settings.vehicle_height_m - sensor_height) / (end_height - sensor_height);
+    }
+    const geometry::Point start = point.sensor_world.head<2>();
+    const geometry::Point along = point.position_world.head<2>() - start;
+    const double length = along.norm();
+    const geometry::Point free_end = start + inside * along - origin;
+    const auto free_range = static_cast<float>(free_end.norm());
+    if (!(length > 0.0) || !(free_range > 0.0F)) {
+      continue;
+    }
+    ++rays_;
+    sensor_height_m_ = std::max(sensor_height_m_, sensor_height);
+    Bin& bin = bins_[binOf(std::atan2(free_end.y(), free_end.x()))];
+    if (end_height <= sensor_height) {
+      bin.level_reach = std::max(bin.level_reach, free_range);
+    } else if (free_range > bin.climbing_reach) {
+      bin.climbing_reach = free_range;
+      bin.climb = static_cast<float>((end_height - sensor_height) / length);
+    }
+  }
+}
+
+bool FreeSpaceView::binSeesThrough(const Bin& bin, double range, double needed, double top_m) const
+{
+  // A ray over a low obstacle does not show it gone: it must cross the cell no higher than what was seen
+  // in it (a ray that does not climb is nowhere higher than the sensor).
+  return (bin.level_reach >= needed && top_m >= sensor_height_m_) ||
+         (bin.climbing_reach >= needed && top_m >= sensor_height_m_ + bin.climb * range);
+}
+
+bool FreeSpaceView::seesThrough(const geometry::Point& centre, double cell_size_m, double top_m) const
+{
+  if (rays_ == 0) {
+    return false;
+  }
+  const geometry::Point offset = centre - origin_;
+  const double range = offset.norm();
+  const double half_diagonal = cell_size_m * std::sqrt(0.5);
+  if (!(range > half_diagonal)) {
+    return false;
+  }
+  const double needed = range + half_diagonal + margin_m_;
+  const double azimuth = std::atan2(offset.y(), offset.x());
+  const double half_width = std::asin(half_diagonal / range);
+  const std::size_t first = binOf(azimuth - half_width);
+  const std::size_t last = binOf(azimuth + half_width);
+  const std::size_t count = (last + kBins - first) % kBins + 1;
+  for (std::size_t step = 0; step < count; ++step) {
+    if (!binSeesThrough(bins_[(first + step) % kBins], range, needed, top_m)) {
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace ifar::perception
