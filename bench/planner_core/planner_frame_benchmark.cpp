@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <initializer_list>
 #include <random>
-#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -198,10 +197,7 @@ void BM_PlannerFrameTunnelJitter(benchmark::State& state)
   }
   const double position_m = static_cast<double>(state.range(0)) / 1000.0;
   const double heading_rad = 0.15 * position_m;
-  PlannerSettings tmp_settings;
-  if (std::getenv("TMP_NO_MEMORY")) tmp_settings.perception.remember_background = false;
-  if (std::getenv("TMP_NO_CARVE")) tmp_settings.perception.carve_range_m = 0.0;
-  Planner planner{tmp_settings};
+  Planner planner{PlannerSettings{}};
   planner.setGoal(Goal{1, geometry::Point(211.5, 160.2)});
   std::mt19937 random(1);
   std::size_t index = 0;

@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
-#include <cstdlib>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -198,6 +196,7 @@ FrameResult Planner::processFrame(const FrameInput& frame)
   input.motion = frame.motion;
   input.detector_polygons = frame.detector_polygons;
   std::vector<geometry::Point> remembered;
+  std::vector<geometry::Point> held;
   {
     const auto end = frame.motion.vehicle_at_end.translation();
     const geometry::Point half_layer = geometry::Point::Constant(settings_.perception.layer_size_m / 2.0);
@@ -208,20 +207,15 @@ FrameResult Planner::processFrame(const FrameInput& frame)
     }
     for (const perception::BackgroundMemory* memory : {&sealed_, &known_}) {
       const std::vector<geometry::Point> cells = memory->cellsWithin(minimum, maximum);
-      remembered.insert(remembered.end(), cells.begin(), cells.end());
+      held.insert(held.end(), cells.begin(), cells.end());
     }
     input.remembered_background = common::Span<const geometry::Point>(remembered.data(), remembered.size());
+    input.held_background = common::Span<const geometry::Point>(held.data(), held.size());
   }
   perception::PerceptionResult perceived = perception::runPerception(input, settings_.perception);
-  if (std::getenv("IFAR_DEBUG_STAGES") != nullptr) {
-    fprintf(stderr, "DBG comp %.2f filt %.2f class %.2f layer %.2f total %.2f grid %d pts %zu\n", perceived.stats.compensation_ms, perceived.stats.filter_ms, perceived.stats.classification_ms, perceived.stats.layer_ms, perceived.stats.total_ms, perceived.layer.grid.cells, perceived.stats.background_points);
-  }
   const Clock::time_point memory_start = Clock::now();
   updateBackgroundMemory(perceived, status.work);
   status.timings.perception_ms = perceived.stats.total_ms + millisecondsSince(memory_start);
-  if (std::getenv("IFAR_DEBUG_STAGES") != nullptr) {
-    fprintf(stderr, "MEM %.3f\n", millisecondsSince(memory_start));
-  }
   status.obstacle_points =
       static_cast<std::int64_t>(perceived.stats.background_points + perceived.stats.movable_points);
   if (perceived.stats.non_finite_points > 0) {
@@ -247,8 +241,8 @@ FrameResult Planner::processFrame(const FrameInput& frame)
   }
   result.polygons = std::move(perceived.layer.polygons);
   status.polygons = static_cast<std::int64_t>(result.polygons.size());
-  status.work.layer_cells =
-      static_cast<std::int64_t>(perceived.layer.grid.cells) * static_cast<std::int64_t>(perceived.layer.grid.cells);
+  status.work.layer_cells = static_cast<std::int64_t>(perceived.layer.grid.cells) *
+                            static_cast<std::int64_t>(perceived.layer.grid.cells);
   for (const perception::LayerPolygon& polygon : result.polygons) {
     status.work.polygon_vertices += static_cast<std::int64_t>(polygon.vertices.size());
   }
@@ -352,9 +346,6 @@ FrameResult Planner::processFrame(const FrameInput& frame)
   search(result);
   fillSizes(status);
   status.timings.total_ms = millisecondsSince(frame_start);
-  if (std::getenv("IFAR_DEBUG_STAGES") != nullptr) {
-    fprintf(stderr, "STAGE perc %.2f local %.2f merge %.2f inter %.2f search %.2f total %.2f polyv %ld verts %ld edges %ld mem %ld\n", status.timings.perception_ms, status.timings.local_graph_ms, status.timings.merge_ms, status.timings.interaction_ms, status.timings.search_ms, status.timings.total_ms, status.work.polygon_vertices, status.vertices, status.edges, status.work.remembered_cells);
-  }
   return result;
 }
 

@@ -32,11 +32,11 @@ struct StageTimings {
 
 /// Deterministic measures of one frame's work (tests and benchmarks bound them instead of wall time).
 struct FrameWork {
-  std::int64_t remembered_cells = 0;   // background memory after the frame
-  std::int64_t checked_cells = 0;      // remembered cells tested against the scan's rays
-  std::int64_t forgotten_cells = 0;    // ... that the rays saw through for the last time
-  std::int64_t layer_cells = 0;        // cells of the frame's raster
-  std::int64_t polygon_vertices = 0;   // of the frame's local polygons
+  std::int64_t remembered_cells = 0;  // background memory after the frame
+  std::int64_t checked_cells = 0;     // remembered cells tested against the scan's rays
+  std::int64_t forgotten_cells = 0;   // ... that the rays saw through for the last time
+  std::int64_t layer_cells = 0;       // cells of the frame's raster
+  std::int64_t polygon_vertices = 0;  // of the frame's local polygons
 };
 
 struct PlannerStatus {
@@ -52,7 +52,7 @@ struct PlannerStatus {
   std::int64_t interaction_edges = 0;
   std::int64_t bad_inputs = 0;  // inputs rejected since start
   FrameWork work;
-  std::string message;          // why the state and flags are what they are
+  std::string message;  // why the state and flags are what they are
 };
 
 }  // namespace ifar::planner

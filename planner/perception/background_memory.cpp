@@ -24,7 +24,8 @@ BackgroundMemory::BackgroundMemory(double cell_size_m, int max_votes)
 {
 }
 
-void BackgroundMemory::remember(common::Span<const geometry::Point> points, common::Span<const float> heights_m)
+void BackgroundMemory::remember(common::Span<const geometry::Point> points,
+                                common::Span<const float> heights_m)
 {
   mark(points, heights_m, 1);
 }
@@ -46,7 +47,8 @@ void BackgroundMemory::mark(common::Span<const geometry::Point> points, common::
       continue;
     }
     Cell& cell = cells_[key(static_cast<std::int64_t>(column), static_cast<std::int64_t>(row))];
-    const double height_cm = with_heights && std::isfinite(heights_m[index]) ? 100.0 * heights_m[index] : kTallest;
+    const double height_cm =
+        with_heights && std::isfinite(heights_m[index]) ? 100.0 * heights_m[index] : kTallest;
     cell.top_cm = std::max(cell.top_cm, static_cast<std::uint8_t>(std::clamp(height_cm, 0.0, kTallest)));
     if (cell.last_scan != scans_) {
       cell.last_scan = scans_;

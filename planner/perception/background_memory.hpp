@@ -22,9 +22,9 @@ namespace ifar::perception {
 
 /// What forgetSeenThrough did in one scan: its work is the cells it checked (those within range).
 struct ForgetStats {
-  std::size_t checked = 0;    // remembered cells within range of the sensor
+  std::size_t checked = 0;       // remembered cells within range of the sensor
   std::size_t seen_through = 0;  // ... that every ray across passed: one vote fewer
-  std::size_t forgotten = 0;  // ... of which had none left
+  std::size_t forgotten = 0;     // ... of which had none left
 };
 
 class BackgroundMemory {

@@ -58,6 +58,9 @@ FreeSpaceView::FreeSpaceView(common::Span<const WorldPoint> points, const geomet
     ++rays_;
     sensor_height_m_ = std::max(sensor_height_m_, sensor_height);
     Bin& bin = bins_[binOf(std::atan2(free_end.y(), free_end.x()))];
+    if (inside >= 1.0) {
+      bin.nearest_return = std::min(bin.nearest_return, free_range);
+    }
     if (end_height <= sensor_height) {
       bin.level_reach = std::max(bin.level_reach, free_range);
     } else if (free_range > bin.climbing_reach) {
@@ -75,25 +78,50 @@ bool FreeSpaceView::binSeesThrough(const Bin& bin, double range, double needed, 
          (bin.climbing_reach >= needed && top_m >= sensor_height_m_ + bin.climb * range);
 }
 
-bool FreeSpaceView::seesThrough(const geometry::Point& centre, double cell_size_m, double top_m) const
+std::pair<std::size_t, std::size_t> FreeSpaceView::binsAcross(const geometry::Point& centre,
+                                                              double half_diagonal, double& range) const
 {
-  if (rays_ == 0) {
-    return false;
-  }
   const geometry::Point offset = centre - origin_;
-  const double range = offset.norm();
-  const double half_diagonal = cell_size_m * std::sqrt(0.5);
-  if (!(range > half_diagonal)) {
-    return false;
+  range = offset.norm();
+  if (rays_ == 0 || !(range > half_diagonal)) {
+    return {0, 0};
   }
-  const double needed = range + half_diagonal + margin_m_;
   const double azimuth = std::atan2(offset.y(), offset.x());
   const double half_width = std::asin(half_diagonal / range);
   const std::size_t first = binOf(azimuth - half_width);
   const std::size_t last = binOf(azimuth + half_width);
-  const std::size_t count = (last + kBins - first) % kBins + 1;
+  return {first, (last + kBins - first) % kBins + 1};
+}
+
+bool FreeSpaceView::seesThrough(const geometry::Point& centre, double cell_size_m, double top_m) const
+{
+  const double half_diagonal = cell_size_m * std::sqrt(0.5);
+  double range = 0.0;
+  const auto [first, count] = binsAcross(centre, half_diagonal, range);
+  if (count == 0) {
+    return false;
+  }
+  const double needed = range + half_diagonal + margin_m_;
   for (std::size_t step = 0; step < count; ++step) {
     if (!binSeesThrough(bins_[(first + step) % kBins], range, needed, top_m)) {
+      return false;
+    }
+  }
+  return true;
+}
+
+bool FreeSpaceView::shows(const geometry::Point& centre, double cell_size_m) const
+{
+  const double half_diagonal = cell_size_m * std::sqrt(0.5);
+  double range = 0.0;
+  const auto [first, count] = binsAcross(centre, half_diagonal, range);
+  if (count == 0) {
+    return false;
+  }
+  const double near_side = range - half_diagonal;
+  for (std::size_t step = 0; step < count; ++step) {
+    const Bin& bin = bins_[(first + step) % kBins];
+    if (bin.nearest_return < near_side || std::max(bin.level_reach, bin.climbing_reach) < near_side) {
       return false;
     }
   }

