@@ -102,7 +102,7 @@ PerceptionResult runPerception(const PerceptionInput& input, const PerceptionSet
   // Filled gaps hold for this scan only: the memory keeps what rays hit, so a passage a later, nearer scan
   // sees through is not closed for good.
   const Eigen::Vector3d sensor = (input.motion.vehicle_at_end * input.mount).translation();
-  if (settings.carve_range_m > 0.0) {
+  if (settings.carve_range_m > 0.0 && settings.remember_background) {
     result.free_space =
         FreeSpaceView(world_points, geometry::Point(sensor.x(), sensor.y()), freeSpaceSettings(settings));
   }

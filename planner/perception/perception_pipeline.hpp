@@ -69,7 +69,7 @@ struct PerceptionResult {
   std::vector<float> observed_background_heights_m;  // height above the ground of each, as observed
   std::vector<float> observed_movable_heights_m;
   /// Where this scan's rays went through the height band (BackgroundMemory::forgetSeenThrough); empty
-  /// unless settings.carve_range_m > 0.
+  /// unless settings.carve_range_m > 0 and the background is remembered.
   FreeSpaceView free_space;
   PerceptionStats stats;
 };

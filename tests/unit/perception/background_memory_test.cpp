@@ -36,8 +36,9 @@ TEST(BackgroundMemory, GivesOnlyTheCellsInsideTheWindow)
 {
   BackgroundMemory memory(0.5);
   std::vector<Point> wall;
-  for (double x = 0.1; x < 20.0; x += 0.5) {
-    wall.emplace_back(x, 3.1);
+  wall.reserve(40);
+  for (int step = 0; step < 40; ++step) {
+    wall.emplace_back(0.1 + 0.5 * step, 3.1);
   }
   memory.remember(spanOf(wall));
   EXPECT_EQ(memory.size(), 40U);
@@ -110,7 +111,8 @@ TEST(BackgroundMemory, AnOutlineMarksTheCellsItsEdgesCrossAndNoneInside)
   BackgroundMemory diagonal(0.15);
   diagonal.rememberOutline(geometry::Polygon{{0.0, 0.0}, {30.0, 10.0}});
   EXPECT_GE(diagonal.size(), 200U);  // at least one cell in each of the 200 columns it spans
-  for (double along = 0.0; along <= 1.0; along += 1e-4) {
+  for (int step = 0; step <= 10000; ++step) {
+    const double along = 1e-4 * step;
     const Point point(30.0 * along, 10.0 * along);
     double nearest = std::numeric_limits<double>::infinity();
     for (const Point& cell : diagonal.cellsWithin(point - Point(0.3, 0.3), point + Point(0.3, 0.3))) {
@@ -129,6 +131,7 @@ TEST(BackgroundMemory, AnOutlineMarksTheCellsItsEdgesCrossAndNoneInside)
 FreeSpaceView levelScan(double range_m)
 {
   std::vector<WorldPoint> points;
+  points.reserve(3600);
   for (int step = 0; step < 3600; ++step) {
     const double azimuth = step * 0.1 * 3.14159265358979323846 / 180.0;
     WorldPoint point;

@@ -231,16 +231,16 @@ std::vector<FrameInput> nothingSeenAtTheDoorwayBox(std::vector<FrameInput> frame
     const geometry::Point origin = sensor.translation().head<2>();
     const geometry::Vector to_box = kDoorwayBox - origin;
     const double half_angle = std::atan2(1.2, to_box.norm());
-    frame.points.erase(
-        std::remove_if(frame.points.begin(), frame.points.end(),
-                       [&](const perception::SensorPoint& point) {
-                         const geometry::Vector ray =
-                             (sensor * point.position_sensor.cast<double>()).head<2>() - origin;
-                         const double angle = std::abs(std::atan2(to_box.x() * ray.y() - to_box.y() * ray.x(),
-                                                                  to_box.dot(ray)));
-                         return angle < half_angle && ray.norm() > to_box.norm() - 0.6;
-                       }),
-        frame.points.end());
+    frame.points.erase(std::remove_if(frame.points.begin(), frame.points.end(),
+                                      [&](const perception::SensorPoint& point) {
+                                        const geometry::Vector ray =
+                                            (sensor * point.position_sensor.cast<double>()).head<2>() -
+                                            origin;
+                                        const double angle = std::abs(std::atan2(
+                                            to_box.x() * ray.y() - to_box.y() * ray.x(), to_box.dot(ray)));
+                                        return angle < half_angle && ray.norm() > to_box.norm() - 0.6;
+                                      }),
+                       frame.points.end());
   }
   return frames;
 }
