@@ -196,7 +196,6 @@ FrameResult Planner::processFrame(const FrameInput& frame)
   input.motion = frame.motion;
   input.detector_polygons = frame.detector_polygons;
   std::vector<geometry::Point> remembered;
-  std::vector<geometry::Point> held;
   {
     const auto end = frame.motion.vehicle_at_end.translation();
     const geometry::Point half_layer = geometry::Point::Constant(settings_.perception.layer_size_m / 2.0);
@@ -207,10 +206,9 @@ FrameResult Planner::processFrame(const FrameInput& frame)
     }
     for (const perception::BackgroundMemory* memory : {&sealed_, &known_}) {
       const std::vector<geometry::Point> cells = memory->cellsWithin(minimum, maximum);
-      held.insert(held.end(), cells.begin(), cells.end());
+      remembered.insert(remembered.end(), cells.begin(), cells.end());
     }
     input.remembered_background = common::Span<const geometry::Point>(remembered.data(), remembered.size());
-    input.held_background = common::Span<const geometry::Point>(held.data(), held.size());
   }
   perception::PerceptionResult perceived = perception::runPerception(input, settings_.perception);
   const Clock::time_point memory_start = Clock::now();

@@ -6,7 +6,7 @@ namespace ifar::graph {
 namespace {
 
 /// True when `obstacles` block the segment from `from` to `to` between points `end_margin` (at most a
-/// quarter of its length) in from each end, or hold its middle.
+/// quarter of its length) in from each end.
 bool blockedInside(const geometry::Point& from, const geometry::Point& to, const ObstacleSet& obstacles,
                    double end_margin)
 {
@@ -16,9 +16,7 @@ bool blockedInside(const geometry::Point& from, const geometry::Point& to, const
     return false;
   }
   const geometry::Vector inward = step * (std::min(end_margin, 0.25 * length) / length);
-  // A stretch wholly inside an obstacle crosses none of its sides: an edge through a door that has since
-  // closed (or a wall drawn across it from a bad pose), whose tested part begins and ends in the new wall.
-  return !obstacles.visible(from + inward, to - inward) || obstacles.isBlocked(from + 0.5 * step);
+  return !obstacles.visible(from + inward, to - inward);
 }
 
 }  // namespace

@@ -5,7 +5,6 @@
 // jitter, drift or a jump once drew it where nothing stands. Rays without a return say nothing.
 
 #include <cstddef>
-#include <limits>
 #include <utility>
 #include <vector>
 
@@ -37,12 +36,6 @@ class FreeSpaceView {
   /// (a ray over a low obstacle does not show it gone). A cell holding the origin is never seen through.
   bool seesThrough(const geometry::Point& centre, double cell_size_m, double top_m) const;
 
-  /// Whether this scan shows the square cell centred at `centre` itself: every bin across it holds a ray
-  /// that got to the cell's near side with nothing nearer in its way. Such a cell is where this scan's own
-  /// returns are (or are not): remembered returns there add only the smear of earlier, differently wrong
-  /// poses. False where something stands in front of the cell, or no ray in the band got there.
-  bool shows(const geometry::Point& centre, double cell_size_m) const;
-
   const geometry::Point& origin() const { return origin_; }
   std::size_t rays() const { return rays_; }
   bool empty() const { return rays_ == 0; }
@@ -53,8 +46,7 @@ class FreeSpaceView {
   struct Bin {
     float level_reach = 0.0F;
     float climbing_reach = 0.0F;
-    float climb = 0.0F;                                             // metres up per metre out
-    float nearest_return = std::numeric_limits<float>::infinity();  // of the returns inside the band
+    float climb = 0.0F;  // metres up per metre out
   };
 
   /// The bins across the square cell at `centre`, as the first bin and how many; none (0) when the cell

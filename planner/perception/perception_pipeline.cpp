@@ -111,18 +111,8 @@ PerceptionResult runPerception(const PerceptionInput& input, const PerceptionSet
                       grazingGapSettings(settings));
   result.stats.gap_fill_points = gap_fill.size();
   classified.background.insert(classified.background.end(), gap_fill.begin(), gap_fill.end());
-  const double shown_range_squared = settings.carve_range_m * settings.carve_range_m;
-  const geometry::Point sensor_position(sensor.x(), sensor.y());
-  for (const geometry::Point& remembered : input.remembered_background) {
-    if (!result.free_space.empty() && (remembered - sensor_position).squaredNorm() <= shown_range_squared &&
-        result.free_space.shows(remembered, settings.cell_size_m)) {
-      ++result.stats.remembered_points_shown;
-    } else {
-      classified.background.push_back(remembered);
-    }
-  }
-  classified.background.insert(classified.background.end(), input.held_background.begin(),
-                               input.held_background.end());
+  classified.background.insert(classified.background.end(), input.remembered_background.begin(),
+                               input.remembered_background.end());
 
   stage_start = Clock::now();
   result.layer = buildLocalLayer(classified, centre, settings);

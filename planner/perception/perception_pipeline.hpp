@@ -25,11 +25,7 @@ struct PerceptionInput {
   std::optional<std::vector<geometry::Polygon>> detector_polygons;
   /// Background seen in earlier scans (world frame, e.g. BackgroundMemory cell centres): drawn into the
   /// layer with this scan's background points. Only used during the call.
-  /// Within settings.carve_range_m of the sensor, a remembered cell this scan shows itself
-  /// (FreeSpaceView::shows) is left out: the scan's own returns say what is there.
   common::Span<const geometry::Point> remembered_background;
-  /// Background drawn whatever the scan shows (sealed passages, walls known before the run).
-  common::Span<const geometry::Point> held_background;
 };
 
 enum class PerceptionStatus {
@@ -50,7 +46,6 @@ struct PerceptionStats {
   std::size_t background_points = 0;
   std::size_t movable_points = 0;
   std::size_t gap_fill_points = 0;  // joined across grazing gaps (grazing_gap_fill.hpp), this scan only
-  std::size_t remembered_points_shown = 0;  // remembered background cells left out: the scan shows them
   std::size_t points_outside_layer = 0;
   std::size_t dropped_contours = 0;
   double compensation_ms = 0.0;
