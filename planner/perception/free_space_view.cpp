@@ -38,11 +38,15 @@ double fastAtan2(double y, double x)
 
 std::size_t binOf(double azimuth)
 {
-  double wrapped = std::fmod(azimuth, 2.0 * kPi);
+  // Azimuths come from fastAtan2, less a bin's half width at most: within one turn of [0, 2 pi).
+  double wrapped = azimuth;
   if (wrapped < 0.0) {
     wrapped += 2.0 * kPi;
   }
-  return std::min(kBins - 1, static_cast<std::size_t>(wrapped / kBinRad));
+  if (wrapped >= 2.0 * kPi) {
+    wrapped -= 2.0 * kPi;
+  }
+  return std::min(kBins - 1, static_cast<std::size_t>(std::max(0.0, wrapped) / kBinRad));
 }
 
 }  // namespace
@@ -72,10 +76,9 @@ FreeSpaceView::FreeSpaceView(common::Span<const WorldPoint> points, const geomet
     }
     const geometry::Point start = point.sensor_world.head<2>();
     const geometry::Point along = point.position_world.head<2>() - start;
-    const double length = along.norm();
     const geometry::Point free_end = start + inside * along - origin;
     const auto free_range = static_cast<float>(free_end.norm());
-    if (!(length > 0.0) || !(free_range > 0.0F)) {
+    if (!(free_range > 0.0F)) {
       continue;
     }
     ++rays_;
@@ -83,9 +86,9 @@ FreeSpaceView::FreeSpaceView(common::Span<const WorldPoint> points, const geomet
     Bin& bin = bins_[binOf(fastAtan2(free_end.y(), free_end.x()))];
     if (end_height <= sensor_height) {
       bin.level_reach = std::max(bin.level_reach, free_range);
-    } else if (free_range > bin.climbing_reach) {
+    } else if (free_range > bin.climbing_reach && along.squaredNorm() > 0.0) {
       bin.climbing_reach = free_range;
-      bin.climb = static_cast<float>((end_height - sensor_height) / length);
+      bin.climb = static_cast<float>((end_height - sensor_height) / along.norm());
     }
   }
 }
