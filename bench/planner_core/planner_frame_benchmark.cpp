@@ -1,10 +1,12 @@
 // One planner update (perception, local graph, merge, search) on simulated VLP-16 revolutions of a room
 // with a box, the vehicle driving a curve; and a replan (search only) on the resulting graph. The demo
 // room variants drive towards the doorway box with interaction planning (cache in use, as deployed), and
-// run a fresh planner's first frame (every object planned from scratch).
+// run a fresh planner's first frame (every object planned from scratch). The tunnel also with the pose
+// jittered as a state estimator's is.
 
 #include <algorithm>
 #include <initializer_list>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -166,6 +168,65 @@ void BM_PlannerFrameTunnel(benchmark::State& state)
   state.counters["vertices"] = static_cast<double>(planner.graph().vertexCount());
 }
 BENCHMARK(BM_PlannerFrameTunnel)->Arg(60)->Arg(120)->Arg(200)->Unit(benchmark::kMillisecond);
+
+/// `frame` as a state estimator that jitters places it: the poses at the scan's start and end each off by
+/// Gaussian noise of `position_m` on x and y and `heading_rad` on the heading (as the simulator's pose
+/// noise reaches the planner through the poses interpolated at the scan's ends).
+FrameInput jittered(FrameInput frame, double position_m, double heading_rad, std::mt19937& random)
+{
+  std::normal_distribution<double> position(0.0, position_m);
+  std::normal_distribution<double> heading(0.0, heading_rad);
+  for (Eigen::Isometry3d* pose : {&frame.motion.vehicle_at_start, &frame.motion.vehicle_at_end}) {
+    Eigen::Isometry3d offset = Eigen::Isometry3d::Identity();
+    offset.linear() = Eigen::AngleAxisd(heading(random), Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    const Eigen::Vector3d turned = pose->translation();
+    *pose = offset * *pose;
+    pose->translation() = turned + Eigen::Vector3d(position(random), position(random), 0.0);
+  }
+  return frame;
+}
+
+/// The tunnel's first tunnel (200 m layer) with pose jitter: the argument is the position noise in
+/// millimetres (the heading's is 0.15 mrad per mm: 2 mm -> 0.3 mrad, 20 mm -> 3 mrad, 50 mm -> 7.5 mrad).
+/// The frames are driven again and again with fresh noise, as a vehicle that comes by the same walls.
+void BM_PlannerFrameTunnelJitter(benchmark::State& state)
+{
+  if (tunnelFrames().empty()) {
+    state.SkipWithError("config/worlds/tunnel.yaml did not load");
+    return;
+  }
+  const double position_m = static_cast<double>(state.range(0)) / 1000.0;
+  const double heading_rad = 0.15 * position_m;
+  Planner planner{PlannerSettings{}};
+  planner.setGoal(Goal{1, geometry::Point(211.5, 160.2)});
+  std::mt19937 random(1);
+  std::size_t index = 0;
+  StageTimings sums;
+  FrameWork work;
+  for ([[maybe_unused]] auto _ : state) {
+    state.PauseTiming();
+    const FrameInput frame = jittered(tunnelFrames()[index], position_m, heading_rad, random);
+    state.ResumeTiming();
+    const FrameResult result = planner.processFrame(frame);
+    benchmark::DoNotOptimize(result.path.length_m);
+    sums.perception_ms += result.status.timings.perception_ms;
+    sums.local_graph_ms += result.status.timings.local_graph_ms;
+    sums.merge_ms += result.status.timings.merge_ms;
+    sums.search_ms += result.status.timings.search_ms;
+    work = result.status.work;
+    index = (index + 1) % tunnelFrames().size();
+  }
+  const double iterations = static_cast<double>(std::max<benchmark::IterationCount>(state.iterations(), 1));
+  state.counters["perception_ms"] = sums.perception_ms / iterations;
+  state.counters["local_graph_ms"] = sums.local_graph_ms / iterations;
+  state.counters["merge_ms"] = sums.merge_ms / iterations;
+  state.counters["search_ms"] = sums.search_ms / iterations;
+  state.counters["vertices"] = static_cast<double>(planner.graph().vertexCount());
+  state.counters["polygon_vertices"] = static_cast<double>(work.polygon_vertices);
+  state.counters["remembered_cells"] = static_cast<double>(work.remembered_cells);
+  state.counters["checked_cells"] = static_cast<double>(work.checked_cells);
+}
+BENCHMARK(BM_PlannerFrameTunnelJitter)->Arg(0)->Arg(20)->Arg(50)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace ifar::planner

@@ -86,7 +86,7 @@ Planner::Planner(const PlannerSettings& settings)
     : settings_(completed(settings)),
       tracker_(trackerSettings(settings_)),
       interaction_(settings_.interaction),
-      background_memory_(settings_.perception.cell_size_m),
+      background_memory_(settings_.perception.cell_size_m, settings_.perception.background_votes),
       sealed_(settings_.perception.cell_size_m),
       known_(settings_.perception.cell_size_m),
       object_seals_(settings_.perception.cell_size_m),
@@ -211,17 +211,9 @@ FrameResult Planner::processFrame(const FrameInput& frame)
     input.remembered_background = common::Span<const geometry::Point>(remembered.data(), remembered.size());
   }
   perception::PerceptionResult perceived = perception::runPerception(input, settings_.perception);
-  if (settings_.perception.remember_background && perceived.status == perception::PerceptionStatus::Ok) {
-    background_memory_.remember(common::Span<const geometry::Point>(perceived.observed_background.data(),
-                                                                    perceived.observed_background.size()));
-    if (!settings_.interaction_enabled) {
-      // FAR mode knows no movable objects: what it saw is an obstacle it remembers like any other (as
-      // FAR's own map does), or a corridor closed by a box looks open from the room beside it.
-      background_memory_.remember(common::Span<const geometry::Point>(perceived.observed_movable.data(),
-                                                                      perceived.observed_movable.size()));
-    }
-  }
-  status.timings.perception_ms = perceived.stats.total_ms;
+  const Clock::time_point memory_start = Clock::now();
+  updateBackgroundMemory(perceived, status.work);
+  status.timings.perception_ms = perceived.stats.total_ms + millisecondsSince(memory_start);
   status.obstacle_points =
       static_cast<std::int64_t>(perceived.stats.background_points + perceived.stats.movable_points);
   if (perceived.stats.non_finite_points > 0) {
@@ -247,6 +239,11 @@ FrameResult Planner::processFrame(const FrameInput& frame)
   }
   result.polygons = std::move(perceived.layer.polygons);
   status.polygons = static_cast<std::int64_t>(result.polygons.size());
+  status.work.layer_cells = static_cast<std::int64_t>(perceived.layer.grid.cells) *
+                            static_cast<std::int64_t>(perceived.layer.grid.cells);
+  for (const perception::LayerPolygon& polygon : result.polygons) {
+    status.work.polygon_vertices += static_cast<std::int64_t>(polygon.vertices.size());
+  }
 
   const geometry::Point robot = frame.motion.vehicle_at_end.translation().head<2>();
   robot_ = robot;
@@ -348,6 +345,28 @@ FrameResult Planner::processFrame(const FrameInput& frame)
   fillSizes(status);
   status.timings.total_ms = millisecondsSince(frame_start);
   return result;
+}
+
+void Planner::updateBackgroundMemory(const perception::PerceptionResult& perceived, FrameWork& work)
+{
+  const bool placed = perceived.status == perception::PerceptionStatus::Ok ||
+                      perceived.status == perception::PerceptionStatus::NoObstaclePoints;
+  if (!settings_.perception.remember_background || !placed) {
+    return;
+  }
+  // What this scan's rays passed through first, then what they hit: a cell both seen through and hit
+  // keeps its votes.
+  const perception::ForgetStats forgotten =
+      background_memory_.forgetSeenThrough(perceived.free_space, settings_.perception.carve_range_m);
+  work.checked_cells = static_cast<std::int64_t>(forgotten.checked);
+  work.forgotten_cells = static_cast<std::int64_t>(forgotten.forgotten);
+  background_memory_.remember(perceived.observed_background, perceived.observed_background_heights_m);
+  if (!settings_.interaction_enabled) {
+    // FAR mode knows no movable objects: what it saw is an obstacle it remembers like any other (as
+    // FAR's own map does), or a corridor closed by a box looks open from the room beside it.
+    background_memory_.remember(perceived.observed_movable, perceived.observed_movable_heights_m);
+  }
+  work.remembered_cells = static_cast<std::int64_t>(background_memory_.size());
 }
 
 void Planner::shapeOutlines(TrackingResult& tracked, const std::vector<std::size_t>& movable_polygons,

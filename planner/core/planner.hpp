@@ -30,6 +30,7 @@
 #include "planner/interaction/push_plan.hpp"
 #include "planner/perception/background_memory.hpp"
 #include "planner/perception/local_layer.hpp"
+#include "planner/perception/perception_pipeline.hpp"
 #include "planner/perception/perception_settings.hpp"
 
 namespace ifar::planner {
@@ -144,6 +145,8 @@ class Planner {
   /// Search and state for the current robot position; fills result.path and the status.
   void search(FrameResult& result);
   void fillSizes(PlannerStatus& status) const;
+  /// Forgets the remembered background the scan's rays saw through, then remembers what they hit.
+  void updateBackgroundMemory(const perception::PerceptionResult& perceived, FrameWork& work);
   /// Replaces each seen object's outline (and its polygon of the frame) with what the outline memory
   /// keeps of it, grown by the seal kept with it.
   void shapeOutlines(TrackingResult& tracked, const std::vector<std::size_t>& movable_polygons,

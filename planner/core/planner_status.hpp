@@ -30,6 +30,15 @@ struct StageTimings {
   double total_ms = 0.0;
 };
 
+/// Deterministic measures of one frame's work (tests and benchmarks bound them instead of wall time).
+struct FrameWork {
+  std::int64_t remembered_cells = 0;  // background memory after the frame
+  std::int64_t checked_cells = 0;     // remembered cells tested against the scan's rays
+  std::int64_t forgotten_cells = 0;   // ... that the rays saw through for the last time
+  std::int64_t layer_cells = 0;       // cells of the frame's raster
+  std::int64_t polygon_vertices = 0;  // of the frame's local polygons
+};
+
 struct PlannerStatus {
   std::int64_t utime = 0;  // time of the frame (scan start), microseconds
   PlannerState state = PlannerState::Idle;
@@ -42,7 +51,8 @@ struct PlannerStatus {
   std::int64_t edges = 0;  // visibility and interaction
   std::int64_t interaction_edges = 0;
   std::int64_t bad_inputs = 0;  // inputs rejected since start
-  std::string message;          // why the state and flags are what they are
+  FrameWork work;
+  std::string message;  // why the state and flags are what they are
 };
 
 }  // namespace ifar::planner

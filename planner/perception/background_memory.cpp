@@ -8,6 +8,8 @@ namespace {
 
 // Cells beyond this many from the origin are not remembered (2^31 cells of 0.15 m: 300,000 km).
 constexpr double kLargestCellIndex = 2147483647.0;
+// Heights are kept in centimetres in a byte: 2.55 m is above any obstacle band, and stands for "tall".
+constexpr double kTallest = 255.0;
 
 std::uint64_t key(std::int64_t column, std::int64_t row)
 {
@@ -17,22 +19,90 @@ std::uint64_t key(std::int64_t column, std::int64_t row)
 
 }  // namespace
 
-BackgroundMemory::BackgroundMemory(double cell_size_m) : cell_size_(cell_size_m) {}
+BackgroundMemory::BackgroundMemory(double cell_size_m, int max_votes)
+    : cell_size_(cell_size_m), max_votes_(std::clamp(max_votes, 1, 255))
+{
+}
 
-void BackgroundMemory::remember(common::Span<const geometry::Point> points)
+void BackgroundMemory::remember(common::Span<const geometry::Point> points,
+                                common::Span<const float> heights_m)
+{
+  mark(points, heights_m, 1);
+}
+
+void BackgroundMemory::mark(common::Span<const geometry::Point> points, common::Span<const float> heights_m,
+                            int votes)
 {
   if (!(cell_size_ > 0.0) || !std::isfinite(cell_size_)) {
     return;  // unusable settings: perception refuses the frames anyway
   }
-  for (const geometry::Point& point : points) {
+  ++scans_;
+  const bool with_heights = heights_m.size() == points.size();
+  for (std::size_t index = 0; index < points.size(); ++index) {
+    const geometry::Point& point = points[index];
     const double column = std::floor(point.x() / cell_size_);
     const double row = std::floor(point.y() / cell_size_);
     if (!std::isfinite(column) || !std::isfinite(row) || std::abs(column) > kLargestCellIndex ||
         std::abs(row) > kLargestCellIndex) {
       continue;
     }
-    cells_.insert(key(static_cast<std::int64_t>(column), static_cast<std::int64_t>(row)));
+    Cell& cell = cells_[key(static_cast<std::int64_t>(column), static_cast<std::int64_t>(row))];
+    const double height_cm =
+        with_heights && std::isfinite(heights_m[index]) ? 100.0 * heights_m[index] : kTallest;
+    cell.top_cm = std::max(cell.top_cm, static_cast<std::uint8_t>(std::clamp(height_cm, 0.0, kTallest)));
+    if (cell.last_scan != scans_) {
+      cell.last_scan = scans_;
+      cell.votes = static_cast<std::uint8_t>(std::min(static_cast<int>(cell.votes) + votes, max_votes_));
+    }
   }
+}
+
+ForgetStats BackgroundMemory::forgetSeenThrough(const FreeSpaceView& view, double range_m)
+{
+  ForgetStats stats;
+  if (view.empty() || !(range_m > 0.0) || !(cell_size_ > 0.0)) {
+    return stats;
+  }
+  const geometry::Point& origin = view.origin();
+  for (auto cell = cells_.begin(); cell != cells_.end();) {
+    const geometry::Point centre = centreOf(cell->first);
+    if ((centre - origin).squaredNorm() > range_m * range_m) {
+      ++cell;
+      continue;
+    }
+    ++stats.checked;
+    if (!view.seesThrough(centre, cell_size_, cell->second.top_cm / 100.0)) {
+      ++cell;
+      continue;
+    }
+    ++stats.seen_through;
+    if (--cell->second.votes == 0) {
+      ++stats.forgotten;
+      cell = cells_.erase(cell);
+    } else {
+      ++cell;
+    }
+  }
+  return stats;
+}
+
+int BackgroundMemory::votesAt(const geometry::Point& point) const
+{
+  const double column = std::floor(point.x() / cell_size_);
+  const double row = std::floor(point.y() / cell_size_);
+  if (!std::isfinite(column) || !std::isfinite(row) || std::abs(column) > kLargestCellIndex ||
+      std::abs(row) > kLargestCellIndex) {
+    return 0;
+  }
+  const auto found = cells_.find(key(static_cast<std::int64_t>(column), static_cast<std::int64_t>(row)));
+  return found == cells_.end() ? 0 : found->second.votes;
+}
+
+geometry::Point BackgroundMemory::centreOf(std::uint64_t cell) const
+{
+  const auto column = static_cast<std::int32_t>(static_cast<std::uint32_t>(cell >> 32U));
+  const auto row = static_cast<std::int32_t>(static_cast<std::uint32_t>(cell & 0xFFFFFFFFU));
+  return geometry::Point((column + 0.5) * cell_size_, (row + 0.5) * cell_size_);
 }
 
 std::size_t BackgroundMemory::rememberOutline(const geometry::Polygon& outline)
@@ -94,7 +164,8 @@ std::size_t BackgroundMemory::rememberInflatedOutline(const geometry::Polygon& i
       }
     }
   }
-  remember(common::Span<const geometry::Point>(cells.data(), cells.size()));
+  // Decided (an object found unpushable): as sure as a wall seen for long.
+  mark(common::Span<const geometry::Point>(cells.data(), cells.size()), {}, max_votes_);
   return cells.size();
 }
 
@@ -102,10 +173,8 @@ std::vector<geometry::Point> BackgroundMemory::cellsWithin(const geometry::Point
                                                            const geometry::Point& maximum) const
 {
   std::vector<geometry::Point> centres;
-  for (const std::uint64_t cell : cells_) {
-    const auto column = static_cast<std::int32_t>(static_cast<std::uint32_t>(cell >> 32U));
-    const auto row = static_cast<std::int32_t>(static_cast<std::uint32_t>(cell & 0xFFFFFFFFU));
-    const geometry::Point centre((column + 0.5) * cell_size_, (row + 0.5) * cell_size_);
+  for (const auto& cell : cells_) {
+    const geometry::Point centre = centreOf(cell.first);
     if (centre.x() >= minimum.x() && centre.y() >= minimum.y() && centre.x() < maximum.x() &&
         centre.y() < maximum.y()) {
       centres.push_back(centre);

@@ -4,26 +4,43 @@
 // through a doorway is not attached through a room's far wall that the corridor hides (the path would
 // flip between the room and the corridor each time the vehicle stepped through the door). Movable
 // objects are never remembered: they move, and the tracker follows them.
+// A pose that jitters, drifts or jumps draws walls where nothing stands; each cell keeps votes (one more
+// per scan that hits it, one fewer per scan whose rays pass through it), so what later scans see through
+// goes, and a door smeared shut or a wall drawn across the vehicle from a bad pose does not stay.
 
 #include <cstddef>
 #include <cstdint>
-#include <unordered_set>
+#include <unordered_map>
 #include <vector>
 
 #include "common/geometry/point.hpp"
 #include "common/geometry/polygon.hpp"
 #include "common/span.hpp"
+#include "planner/perception/free_space_view.hpp"
 
 namespace ifar::perception {
+
+/// What forgetSeenThrough did in one scan: its work is the cells it checked (those within range).
+struct ForgetStats {
+  std::size_t checked = 0;       // remembered cells within range of the sensor
+  std::size_t seen_through = 0;  // ... that every ray across passed: one vote fewer
+  std::size_t forgotten = 0;     // ... of which had none left
+};
 
 class BackgroundMemory {
  public:
   /// Cells `cell_size_m` wide (the local layer's), cell (i, j) covering [i, i + 1) x [j, j + 1) cell sizes.
-  /// A cell size that is not a positive number remembers nothing.
-  explicit BackgroundMemory(double cell_size_m);
+  /// A cell size that is not a positive number remembers nothing. A cell holds up to `max_votes` votes.
+  explicit BackgroundMemory(double cell_size_m, int max_votes = 1);
 
-  /// Marks the cells of `points` (world frame); non-finite points are skipped.
-  void remember(common::Span<const geometry::Point> points);
+  /// Marks the cells of `points` (world frame) as one scan's: each gains one vote at most. Non-finite points
+  /// are skipped. `heights_m` (height above the ground of each point, or empty: as tall as can be) keeps
+  /// each cell's highest return, so rays above a low obstacle do not count as seeing through it.
+  void remember(common::Span<const geometry::Point> points, common::Span<const float> heights_m = {});
+
+  /// One vote fewer for each cell within `range_m` of the view's origin that the view sees through; a cell
+  /// with none left is forgotten.
+  ForgetStats forgetSeenThrough(const FreeSpaceView& view, double range_m);
 
   /// Marks the cells of the obstacle whose outline inflated by `inflation_m` is `inflated_outline`: the
   /// cells inside it at least `inflation_m` from its border (an object found unpushable is background
@@ -41,10 +58,23 @@ class BackgroundMemory {
 
   std::size_t size() const { return cells_.size(); }
   double cellSize() const { return cell_size_; }
+  /// The votes of the cell holding `point` (0: not remembered).
+  int votesAt(const geometry::Point& point) const;
 
  private:
+  void mark(common::Span<const geometry::Point> points, common::Span<const float> heights_m, int votes);
+  geometry::Point centreOf(std::uint64_t cell) const;
+
+  struct Cell {
+    std::uint8_t votes = 0;
+    std::uint8_t top_cm = 0;      // the highest return seen in it, centimetres above the ground
+    std::uint32_t last_scan = 0;  // the scan that last gave it a vote
+  };
+
   double cell_size_;
-  std::unordered_set<std::uint64_t> cells_;  // column and row packed into one key
+  int max_votes_;
+  std::uint32_t scans_ = 0;
+  std::unordered_map<std::uint64_t, Cell> cells_;  // column and row packed into one key
 };
 
 }  // namespace ifar::perception

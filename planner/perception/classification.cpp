@@ -8,12 +8,16 @@ ClassifiedPoints classifyByReflectivity(common::Span<const WorldPoint> points, f
 {
   ClassifiedPoints result;
   result.background.reserve(points.size());
+  result.background_heights_m.reserve(points.size());
   for (const WorldPoint& point : points) {
     const geometry::Point ground(point.position_world.x(), point.position_world.y());
+    const auto height = static_cast<float>(point.height_above_ground_m);
     if (point.reflectivity >= threshold) {
       result.movable.push_back(ground);
+      result.movable_heights_m.push_back(height);
     } else {
       result.background.push_back(ground);
+      result.background_heights_m.push_back(height);
     }
   }
   return result;
@@ -36,16 +40,20 @@ ClassifiedPoints classifyByDetector(common::Span<const WorldPoint> points,
   }
   ClassifiedPoints result;
   result.background.reserve(points.size());
+  result.background_heights_m.reserve(points.size());
   for (const WorldPoint& point : points) {
     const geometry::Point ground(point.position_world.x(), point.position_world.y());
     bool movable = false;
     for (std::size_t index = 0; index < detector_polygons.size() && !movable; ++index) {
       movable = boxes[index].contains(ground) && geometry::containsPoint(detector_polygons[index], ground);
     }
+    const auto height = static_cast<float>(point.height_above_ground_m);
     if (movable) {
       result.movable.push_back(ground);
+      result.movable_heights_m.push_back(height);
     } else {
       result.background.push_back(ground);
+      result.background_heights_m.push_back(height);
     }
   }
   return result;

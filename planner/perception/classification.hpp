@@ -14,6 +14,9 @@ namespace ifar::perception {
 struct ClassifiedPoints {
   std::vector<geometry::Point> background;
   std::vector<geometry::Point> movable;
+  /// Height above the ground of each point, as classified (empty when the points were made otherwise).
+  std::vector<float> background_heights_m;
+  std::vector<float> movable_heights_m;
 };
 
 /// Movable when reflectivity >= threshold.

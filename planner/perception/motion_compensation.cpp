@@ -65,6 +65,7 @@ std::vector<WorldPoint> compensateMotion(common::Span<const SensorPoint> points,
       ground_height = vehicle.translation().z();
     }
     placed.position_world = sensor_to_world * position_sensor;
+    placed.sensor_world = sensor_to_world.translation();
     placed.height_above_ground_m = placed.position_world.z() - ground_height;
     output.push_back(placed);
   }

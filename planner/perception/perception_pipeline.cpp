@@ -28,6 +28,16 @@ GrazingGapSettings grazingGapSettings(const PerceptionSettings& settings)
   return gaps;
 }
 
+FreeSpaceSettings freeSpaceSettings(const PerceptionSettings& settings)
+{
+  FreeSpaceSettings free_space;
+  free_space.ground_clearance_m = settings.ground_clearance_m;
+  free_space.vehicle_height_m = settings.vehicle_height_m;
+  free_space.min_range_m = settings.min_range_m;
+  free_space.margin_m = settings.carve_margin_m;
+  return free_space;
+}
+
 }  // namespace
 
 const char* toString(PerceptionStatus status)
@@ -87,9 +97,15 @@ PerceptionResult runPerception(const PerceptionInput& input, const PerceptionSet
 
   result.observed_background = classified.background;
   result.observed_movable = classified.movable;
+  result.observed_background_heights_m = classified.background_heights_m;
+  result.observed_movable_heights_m = classified.movable_heights_m;
   // Filled gaps hold for this scan only: the memory keeps what rays hit, so a passage a later, nearer scan
   // sees through is not closed for good.
   const Eigen::Vector3d sensor = (input.motion.vehicle_at_end * input.mount).translation();
+  if (settings.carve_range_m > 0.0 && settings.remember_background) {
+    result.free_space =
+        FreeSpaceView(world_points, geometry::Point(sensor.x(), sensor.y()), freeSpaceSettings(settings));
+  }
   const std::vector<geometry::Point> gap_fill =
       fillGrazingGaps(classified.background, classified.movable, geometry::Point(sensor.x(), sensor.y()),
                       grazingGapSettings(settings));

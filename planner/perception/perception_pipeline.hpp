@@ -9,6 +9,7 @@
 
 #include "common/geometry/polygon.hpp"
 #include "common/span.hpp"
+#include "planner/perception/free_space_view.hpp"
 #include "planner/perception/local_layer.hpp"
 #include "planner/perception/perception_settings.hpp"
 #include "planner/perception/sensor_point.hpp"
@@ -60,6 +61,11 @@ struct PerceptionResult {
   LocalLayer layer;     // centred on the vehicle's position at the end of the scan
   std::vector<geometry::Point> observed_background;  // this scan's background obstacle points (world)
   std::vector<geometry::Point> observed_movable;     // and its movable ones
+  std::vector<float> observed_background_heights_m;  // height above the ground of each, as observed
+  std::vector<float> observed_movable_heights_m;
+  /// Where this scan's rays went through the height band (BackgroundMemory::forgetSeenThrough); empty
+  /// unless settings.carve_range_m > 0 and the background is remembered.
+  FreeSpaceView free_space;
   PerceptionStats stats;
 };
 

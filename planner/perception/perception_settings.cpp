@@ -52,6 +52,13 @@ std::optional<std::string> findSettingsProblem(const PerceptionSettings& setting
       return std::string(field.name) + " must be positive and finite, got " + std::to_string(field.value);
     }
   }
+  if (!std::isfinite(settings.carve_range_m) || settings.carve_range_m < 0.0 ||
+      !std::isfinite(settings.carve_margin_m) || settings.carve_margin_m < 0.0) {
+    return std::string("carve_range_m and carve_margin_m must be 0 or positive");
+  }
+  if (settings.background_votes < 1) {
+    return std::string("background_votes must be at least 1");
+  }
   if (settings.vehicle_height_m <= settings.ground_clearance_m) {
     return std::string("vehicle_height_m must be above ground_clearance_m");
   }
@@ -96,7 +103,16 @@ const common::ParameterTable<PerceptionSettings>& perceptionParameters()
                "this far apart (0.2 for the VLP-16 at 10 Hz)")
           .add("gap_fill_min_incidence_deg", &S::gap_fill_min_incidence_deg, "deg", Range::any(),
                "... when a surface at this angle to the ray or steeper could hold both (above 1.25 steps, "
-               "below 90)");
+               "below 90)")
+          .add(
+              "carve_range_m", &S::carve_range_m, "m", Range::nonNegative(),
+              "remembered background this close to the lidar is forgotten where the scans' rays pass through "
+              "it (0 = never): a jittered, drifted or jumped pose drew it where nothing stands")
+          .add("carve_margin_m", &S::carve_margin_m, "m", Range::nonNegative(),
+               "... when the rays go this far past the cell: the lidar's range noise and the pose's jitter")
+          .add("background_votes", &S::background_votes, "", Range::atLeast(1),
+               "a remembered cell gains a vote each scan that hits it (up to this many) and loses one each "
+               "scan that sees through it; forgotten at none");
   return table;
 }
 

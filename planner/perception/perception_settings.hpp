@@ -39,6 +39,17 @@ struct PerceptionSettings {
   /// seen at gap_fill_min_incidence_deg or steeper could hold both.
   double gap_fill_azimuth_step_deg = 0.0;
   double gap_fill_min_incidence_deg = 3.0;
+  /// Remembered background within this range of the sensor (metres; 0 = never) is forgotten where the
+  /// scan's rays pass through it (free_space_view.hpp): a pose that jittered, drifted or jumped drew it
+  /// where nothing stands, and a door or corridor it closed would stay closed for good.
+  double carve_range_m = 20.0;
+  /// ... when the rays go this far past the cell's far side (metres): the lidar's range noise and the
+  /// pose's jitter along the ray.
+  double carve_margin_m = 0.1;
+  /// A remembered cell holds up to this many votes: one more each scan that hits it, one fewer each scan
+  /// that sees through it, forgotten at none. A wall seen for long outlasts a few stray rays; a cell one
+  /// bad pose drew goes after a scan or two.
+  int background_votes = 5;
 
   /// Cells along one side of the layer.
   int layerCells() const;

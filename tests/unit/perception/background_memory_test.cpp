@@ -36,8 +36,9 @@ TEST(BackgroundMemory, GivesOnlyTheCellsInsideTheWindow)
 {
   BackgroundMemory memory(0.5);
   std::vector<Point> wall;
-  for (double x = 0.1; x < 20.0; x += 0.5) {
-    wall.emplace_back(x, 3.1);
+  wall.reserve(40);
+  for (int step = 0; step < 40; ++step) {
+    wall.emplace_back(0.1 + 0.5 * step, 3.1);
   }
   memory.remember(spanOf(wall));
   EXPECT_EQ(memory.size(), 40U);
@@ -110,7 +111,8 @@ TEST(BackgroundMemory, AnOutlineMarksTheCellsItsEdgesCrossAndNoneInside)
   BackgroundMemory diagonal(0.15);
   diagonal.rememberOutline(geometry::Polygon{{0.0, 0.0}, {30.0, 10.0}});
   EXPECT_GE(diagonal.size(), 200U);  // at least one cell in each of the 200 columns it spans
-  for (double along = 0.0; along <= 1.0; along += 1e-4) {
+  for (int step = 0; step <= 10000; ++step) {
+    const double along = 1e-4 * step;
     const Point point(30.0 * along, 10.0 * along);
     double nearest = std::numeric_limits<double>::infinity();
     for (const Point& cell : diagonal.cellsWithin(point - Point(0.3, 0.3), point + Point(0.3, 0.3))) {
@@ -122,6 +124,71 @@ TEST(BackgroundMemory, AnOutlineMarksTheCellsItsEdgesCrossAndNoneInside)
   const double nan = std::numeric_limits<double>::quiet_NaN();
   EXPECT_EQ(memory.rememberOutline(geometry::Polygon{{10.0, 10.0}, {11.0, nan}, {11.0, 11.0}}), 0U);
   EXPECT_EQ(memory.rememberOutline(geometry::Polygon{}), 0U);
+}
+
+/// A level scan from a sensor 0.8 m above the ground at the origin: one return every 0.1 degrees, each
+/// `range_m` away at the sensor's height (a wall all round).
+FreeSpaceView levelScan(double range_m)
+{
+  std::vector<WorldPoint> points;
+  points.reserve(3600);
+  for (int step = 0; step < 3600; ++step) {
+    const double azimuth = step * 0.1 * 3.14159265358979323846 / 180.0;
+    WorldPoint point;
+    point.sensor_world = Eigen::Vector3d(0.0, 0.0, 0.8);
+    point.position_world = Eigen::Vector3d(range_m * std::cos(azimuth), range_m * std::sin(azimuth), 0.8);
+    point.height_above_ground_m = 0.8;
+    point.range_m = range_m;
+    points.push_back(point);
+  }
+  return FreeSpaceView(common::Span<const WorldPoint>(points.data(), points.size()), Point(0.0, 0.0),
+                       FreeSpaceSettings{});
+}
+
+// A cell seen in three scans goes after three scans see through it; a wall the rays end at stays; so does
+// an obstacle lower than every ray that passed over it; beyond the range nothing is checked.
+TEST(BackgroundMemory, ScansThatSeeThroughACellTakeItsVotesAway)
+{
+  BackgroundMemory memory(0.15, 5);
+  const std::vector<Point> stray{{5.0, 0.05}};
+  const std::vector<Point> wall{{10.05, 0.05}};
+  const std::vector<Point> low{{0.05, 6.0}};
+  const std::vector<float> low_height{0.3F};
+  const std::vector<Point> far{{0.05, -30.0}};
+  for (int scan = 0; scan < 3; ++scan) {
+    memory.remember(spanOf(stray));
+    memory.remember(spanOf(wall));
+    memory.remember(spanOf(low), common::Span<const float>(low_height.data(), low_height.size()));
+  }
+  memory.remember(spanOf(far));
+  EXPECT_EQ(memory.votesAt(stray.front()), 3);
+  const FreeSpaceView view = levelScan(10.0);
+  for (int scan = 1; scan <= 3; ++scan) {
+    const ForgetStats stats = memory.forgetSeenThrough(view, 20.0);
+    EXPECT_EQ(stats.checked, 3U);  // the far cell is out of range
+    EXPECT_EQ(memory.votesAt(stray.front()), 3 - scan);
+    EXPECT_EQ(stats.forgotten, scan == 3 ? 1U : 0U);
+  }
+  EXPECT_EQ(memory.votesAt(wall.front()), 3) << "the rays end at the wall";
+  EXPECT_EQ(memory.votesAt(low.front()), 3) << "the rays pass over it at 0.8 m";
+  EXPECT_EQ(memory.votesAt(far.front()), 1);
+  EXPECT_EQ(memory.size(), 3U);
+  // One scan gives a cell one vote at most, however many of its returns fall in it.
+  const std::vector<Point> twice{{2.0, 2.0}, {2.01, 2.01}};
+  memory.remember(spanOf(twice));
+  EXPECT_EQ(memory.votesAt(twice.front()), 1);
+}
+
+// A scan without returns sees through nothing; a cell holding the sensor is never seen through.
+TEST(BackgroundMemory, NoRaysNoForgetting)
+{
+  BackgroundMemory memory(0.15, 5);
+  const std::vector<Point> cells{{5.0, 0.05}, {0.01, 0.01}};
+  memory.remember(spanOf(cells));
+  EXPECT_EQ(memory.forgetSeenThrough(FreeSpaceView{}, 20.0).seen_through, 0U);
+  const ForgetStats stats = memory.forgetSeenThrough(levelScan(10.0), 20.0);
+  EXPECT_EQ(stats.seen_through, 1U);
+  EXPECT_EQ(memory.votesAt(cells[1]), 1);
 }
 
 }  // namespace

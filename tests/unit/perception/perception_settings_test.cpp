@@ -18,6 +18,9 @@ perception:
   remember_background: false
   gap_fill_azimuth_step_deg: 0.5
   gap_fill_min_incidence_deg: 4.0
+  carve_range_m: 15.0
+  carve_margin_m: 0.2
+  background_votes: 3
 )";
 
 std::string messageOf(const std::string& text)
@@ -48,6 +51,9 @@ TEST(PerceptionSettings, ReadsEveryKey)
   EXPECT_FALSE(settings.remember_background);
   EXPECT_DOUBLE_EQ(settings.gap_fill_azimuth_step_deg, 0.5);
   EXPECT_DOUBLE_EQ(settings.gap_fill_min_incidence_deg, 4.0);
+  EXPECT_DOUBLE_EQ(settings.carve_range_m, 15.0);
+  EXPECT_DOUBLE_EQ(settings.carve_margin_m, 0.2);
+  EXPECT_EQ(settings.background_votes, 3);
   EXPECT_EQ(settings.layerCells(), 200);
 }
 

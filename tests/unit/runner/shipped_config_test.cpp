@@ -45,6 +45,9 @@ TEST(ShippedConfig, PlannerPerceptionAndGraph)
   EXPECT_TRUE(perception.remember_background);
   EXPECT_EQ(perception.gap_fill_azimuth_step_deg, 0.0);
   EXPECT_EQ(perception.gap_fill_min_incidence_deg, 3.0);
+  EXPECT_EQ(perception.carve_range_m, 20.0);
+  EXPECT_EQ(perception.carve_margin_m, 0.1);
+  EXPECT_EQ(perception.background_votes, 5);
   const auto& graph = shipped().planner.graph;
   EXPECT_EQ(graph.association_distance_m, 0.5);
   EXPECT_EQ(graph.votes, 10);
