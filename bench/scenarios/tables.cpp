@@ -309,9 +309,10 @@ std::string tableTwoSpl(const std::vector<ResultRow>& rows, const std::optional<
   for (const std::string& sensing : sensingProfiles(rows)) {
     for (const DrivenVariant& variant : variants) {
       for (const std::string planner : {"far", "ours"}) {
-        std::string label = variant.label;
+        std::string label = "| " + planner + variant.label;
         label.insert(label.size() - 1, profileSuffix(sensing));
-        text += "| " + planner + label + " |";
+        text += label;
+        text += " |";
         for (const ScenarioKind kind : allKinds()) {
           const auto selected = select(rows, "system", planner, kindName(kind), sensing);
           if (!runner) {
