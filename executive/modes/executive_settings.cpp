@@ -28,7 +28,8 @@ void addTopLevel(Table& table)
       .add(
           "stale_after_s.obstacles", [](auto& s) -> auto& { return s.stale.obstacles_s; }, "s",
           Range::positive(),
-          "obstacle points older than this are not used (their stamp is the newest packet's)")
+          "obstacle points older than this are stale (their stamp is the newest packet's): a silent lidar "
+          "stops the vehicle")
       .add(
           "stale_after_s.odometry", [](auto& s) -> auto& { return s.stale.odometry_s; }, "s",
           Range::positive(),
