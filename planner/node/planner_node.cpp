@@ -82,6 +82,16 @@ void PlannerNode::onPose(const pose_t& pose, std::int64_t now_us)
 
 bool PlannerNode::onGoal(const goal_t& goal, std::int64_t /*now_us*/)
 {
+  // A goal is a place the vehicle can drive to: a non-finite or absurdly far one (a corrupted or hostile
+  // message) would poison every distance the search adds up. Refused and counted like any bad input; the
+  // current goal stays.
+  if (!goal.cancel && !(std::isfinite(goal.x) && std::isfinite(goal.y) &&
+                        std::abs(goal.x) <= kMaxGoalCoordinateM && std::abs(goal.y) <= kMaxGoalCoordinateM)) {
+    ++bad_messages_;
+    logger_->warn("goal {} at ({}, {}) refused: each coordinate must be finite and within {} m", goal.goal_id,
+                  goal.x, goal.y, kMaxGoalCoordinateM);
+    return false;
+  }
   const bool same = last_goal_ && sameGoal(*last_goal_, goal);
   last_goal_ = goal;
   if (same) {

@@ -31,6 +31,9 @@
 
 namespace ifar::planner {
 
+/// The farthest a goal's coordinate may lie from the map origin, metres: far beyond any mission.
+inline constexpr double kMaxGoalCoordinateM = 1e6;
+
 /// What a tick asks for: work for the Planner, or (before anything was planned) a "waiting" status.
 struct PlannerTick {
   std::optional<PlannerJob> job;
@@ -47,7 +50,8 @@ class PlannerNode {
   // Inputs, each with its receive time. None of them throws on bad content: it is counted and reported.
   void onVelodynePacket(const velodyne_packet_t& packet, std::int64_t now_us);
   void onPose(const pose_t& pose, std::int64_t now_us);
-  /// Goals are resent: only a change counts. True when the goal changed (worth a job at once).
+  /// Goals are resent: only a change counts. True when the goal changed (worth a job at once). A goal with
+  /// a non-finite coordinate or one beyond kMaxGoalCoordinateM is refused (counted, logged).
   bool onGoal(const goal_t& goal, std::int64_t now_us);
   void onDetectedObjects(const object_polygons_t& objects, std::int64_t now_us);
   void onAffordance(const affordance_t& affordance, std::int64_t now_us);
