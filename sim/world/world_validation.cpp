@@ -23,6 +23,32 @@ bool finite(const geometry::Point& point)
   return std::isfinite(point.x()) && std::isfinite(point.y());
 }
 
+/// Far beyond any site a vehicle works in; the physics' single-precision bodies lose their millimetres
+/// past it, and an outline spanning a billion metres is a typo, not a wall.
+constexpr double kMaxCoordinateM = 1e5;
+/// Ten turns either way: a heading written in degrees past this is a typo (or hostile), not a pose.
+constexpr double kMaxHeadingRad = 20.0 * 3.14159265358979323846;
+
+bool withinExtent(const geometry::Point& point)
+{
+  return std::abs(point.x()) <= kMaxCoordinateM && std::abs(point.y()) <= kMaxCoordinateM;
+}
+
+/// What is wrong with a pose (empty when nothing): not finite, beyond the extent, or a heading of many turns.
+std::optional<std::string> poseProblem(const geometry::Pose2& pose)
+{
+  if (!finite(pose.position()) || !std::isfinite(pose.heading)) {
+    return std::string("pose is not finite");
+  }
+  if (!withinExtent(pose.position())) {
+    return "pose lies beyond " + std::to_string(static_cast<int>(kMaxCoordinateM)) + " m of the origin";
+  }
+  if (std::abs(pose.heading) > kMaxHeadingRad) {
+    return std::string("heading is more than ten turns (3600 degrees) either way");
+  }
+  return std::nullopt;
+}
+
 void checkObject(const MovableObject& object, std::vector<WorldProblem>& problems)
 {
   const auto entity = objectEntity(object);
@@ -43,8 +69,8 @@ void checkObject(const MovableObject& object, std::vector<WorldProblem>& problem
     problems.push_back(
         {entity, "reflectivity must be within 0..1, got " + std::to_string(object.reflectivity)});
   }
-  if (!std::isfinite(object.pose.x) || !std::isfinite(object.pose.y) || !std::isfinite(object.pose.heading)) {
-    problems.push_back({entity, "pose is not finite"});
+  if (const auto problem = poseProblem(object.pose)) {
+    problems.push_back({entity, *problem});
   }
   if (const auto problem = polygonProblem(object.outline)) {
     problems.push_back({entity, *problem});
@@ -73,6 +99,10 @@ std::optional<std::string> polygonProblem(const geometry::Polygon& polygon)
   for (const auto& vertex : polygon) {
     if (!finite(vertex)) {
       return std::string("polygon has a non-finite coordinate");
+    }
+    if (!withinExtent(vertex)) {
+      return "polygon reaches beyond " + std::to_string(static_cast<int>(kMaxCoordinateM)) +
+             " m of the origin";
     }
   }
   if (polygon.size() < 3) {
@@ -130,8 +160,8 @@ std::vector<WorldProblem> findWorldProblems(const World& world)
   }
 
   const auto start = world.start.position();
-  if (!finite(start) || !std::isfinite(world.start.heading)) {
-    problems.push_back({"start", "pose is not finite"});
+  if (const auto problem = poseProblem(world.start)) {
+    problems.push_back({"start", *problem});
   }
   for (const auto& obstacle : world.obstacles) {
     if (geometry::containsPoint(obstacle.outline, start)) {
@@ -147,6 +177,12 @@ std::vector<WorldProblem> findWorldProblems(const World& world)
     const std::string entity = "goal '" + goal.name + "'";
     if (!finite(goal.position)) {
       problems.push_back({entity, "position is not finite"});
+      continue;
+    }
+    if (!withinExtent(goal.position)) {
+      problems.push_back(
+          {entity,
+           "position lies beyond " + std::to_string(static_cast<int>(kMaxCoordinateM)) + " m of the origin"});
       continue;
     }
     for (const auto& obstacle : world.obstacles) {

@@ -27,6 +27,22 @@ TEST(SimWorldValidation, SelfIntersectingPolygonNamesFileEntityAndProblem)
             "bad.yaml: obstacle 'bowtie': self-intersecting polygon");
 }
 
+TEST(SimWorldValidation, AbsurdExtentsAndHeadingsAreRefusedNamingTheEntity)
+{
+  EXPECT_EQ(errorFor("obstacles:\n  - name: long wall\n    polygon: [0, 0,  1e9, 0,  1e9, 0.2,  0, 0.2]\n"),
+            "bad.yaml: obstacle 'long wall': polygon reaches beyond 100000 m of the origin");
+  EXPECT_EQ(errorFor("objects:\n  - {id: 1, name: box, mass_kg: 10, polygon: [0, 0, 1, 0, 1, 1, 0, 1],\n"
+                     "     pose: {x: 5, y: 5, heading_deg: 1e300}}\n"),
+            "bad.yaml: object 'box' (id 1): heading is more than ten turns (3600 degrees) either way");
+  const auto far_start = parseWorld("name: far\nunits: m\nstart: {x: 2e5, y: 1}\ngoals: []\n", "far.yaml");
+  ASSERT_FALSE(far_start.ok());
+  EXPECT_EQ(far_start.error(), "far.yaml: start: pose lies beyond 100000 m of the origin");
+  const auto far_goal =
+      parseWorld("name: far\nunits: m\nstart: {x: 1, y: 1}\ngoals: [{x: 1, y: -3e5}]\n", "goal.yaml");
+  ASSERT_FALSE(far_goal.ok());
+  EXPECT_EQ(far_goal.error(), "goal.yaml: goal 'goal_0': position lies beyond 100000 m of the origin");
+}
+
 TEST(SimWorldValidation, OpenPolygonIsRejected)
 {
   EXPECT_EQ(errorFor("obstacles:\n  - name: stub\n    polygon: [3, 0,  5, 2]\n"),
