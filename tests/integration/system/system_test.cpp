@@ -326,6 +326,40 @@ struct StopWatcher {
       zero_commands.push_back(buffer->recv_utime);
     }
   }
+  /// Handles `bus` until the vehicle has held more than 0.2 m/s for 20 ground-truth samples (a second) or
+  /// `seconds` pass: its last speed, or nullopt when it never drove.
+  std::optional<double> waitUntilDriving(lcm::LCM& bus, double seconds)
+  {
+    const Clock::time_point give_up =
+        Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
+    int moving = 0;
+    while (moving < 20 && Clock::now() < give_up) {
+      if (bus.handleTimeout(100) > 0 && !speeds.empty()) {
+        moving = speeds.back().second > 0.2 ? moving + 1 : 0;
+      }
+    }
+    return moving >= 20 ? std::optional<double>(speeds.back().second) : std::nullopt;
+  }
+  /// The receive time of the first zero-velocity command after `since_utime`.
+  std::optional<std::int64_t> firstZeroCommandAfter(std::int64_t since_utime) const
+  {
+    for (const std::int64_t received : zero_commands) {
+      if (received > since_utime) {
+        return received;
+      }
+    }
+    return std::nullopt;
+  }
+  /// The receive time of the first ground truth at rest (under 0.02 m/s) after `since_utime`.
+  std::optional<std::int64_t> firstRestAfter(std::int64_t since_utime) const
+  {
+    for (const auto& [received, speed] : speeds) {
+      if (received > since_utime && speed < 0.02) {
+        return received;
+      }
+    }
+    return std::nullopt;
+  }
 };
 
 TEST_F(SystemTest, KillingThePlannerStopsTheVehicleAndTheRunCompletesAfterRespawn)
@@ -341,40 +375,21 @@ TEST_F(SystemTest, KillingThePlannerStopsTheVehicleAndTheRunCompletesAfterRespaw
   LaunchedStack stack(folder_, url, {{"IFAR_GOAL_WAIT_S", "170"}}, 190.0);
   ASSERT_TRUE(stack.started());
 
-  // Wait until the vehicle has driven at speed for a second.
-  const Clock::time_point give_up = Clock::now() + std::chrono::seconds(60);
-  int moving = 0;
-  double speed_at_kill = 0.0;
-  while (moving < 20 && Clock::now() < give_up) {
-    if (bus.handleTimeout(100) > 0 && !watcher.speeds.empty()) {
-      speed_at_kill = watcher.speeds.back().second;
-      moving = speed_at_kill > 0.2 ? moving + 1 : 0;
-    }
-  }
-  ASSERT_GE(moving, 20) << "the vehicle never drove:\n" << stack.launchOutput();
+  const std::optional<double> driving = watcher.waitUntilDriving(bus, 60.0);
+  ASSERT_TRUE(driving.has_value()) << "the vehicle never drove:\n" << stack.launchOutput();
+  const double speed_at_kill = *driving;
   const pid_t planner = stack.childRunning("ifar-planner");
   ASSERT_GT(planner, 0) << "no ifar-planner child of the launch";
   const std::int64_t killed_utime = ifar::common::nowMicroseconds();
   ASSERT_EQ(kill(planner, SIGKILL), 0);
 
   // The first zero-velocity command and the first ground truth at rest after the kill.
-  std::optional<std::int64_t> commanded_utime;
-  std::optional<std::int64_t> stopped_utime;
   const Clock::time_point watch_until = Clock::now() + std::chrono::seconds(3);
-  while (!stopped_utime && Clock::now() < watch_until) {
-    if (bus.handleTimeout(100) <= 0) {
-      continue;
-    }
-    for (const std::int64_t received : watcher.zero_commands) {
-      if (!commanded_utime && received > killed_utime) {
-        commanded_utime = received;
-      }
-    }
-    const auto& [received, speed] = watcher.speeds.back();
-    if (received > killed_utime && speed < 0.02) {
-      stopped_utime = received;
-    }
+  while (!watcher.firstRestAfter(killed_utime) && Clock::now() < watch_until) {
+    bus.handleTimeout(100);
   }
+  const std::optional<std::int64_t> commanded_utime = watcher.firstZeroCommandAfter(killed_utime);
+  const std::optional<std::int64_t> stopped_utime = watcher.firstRestAfter(killed_utime);
   ASSERT_TRUE(commanded_utime.has_value()) << "no zero VELOCITY_CMD within 3 s of the planner's death";
   ASSERT_TRUE(stopped_utime.has_value()) << "the vehicle did not stop within 3 s of the planner's death";
   const double command_ms = static_cast<double>(*commanded_utime - killed_utime) * 1e-3;
@@ -424,39 +439,21 @@ TEST_F(SystemTest, AFrozenLidarDriverStopsTheVehicleAndItDrivesOnWhenTheLidarIsB
   bus.subscribe("VELOCITY_CMD", &StopWatcher::onCommand, &watcher);
   LaunchedStack stack(folder_, url, {{"IFAR_GOAL_WAIT_S", "170"}}, 190.0);
   ASSERT_TRUE(stack.started());
-  const Clock::time_point give_up = Clock::now() + std::chrono::seconds(60);
-  int moving = 0;
-  double speed_at_freeze = 0.0;
-  while (moving < 20 && Clock::now() < give_up) {
-    if (bus.handleTimeout(100) > 0 && !watcher.speeds.empty()) {
-      speed_at_freeze = watcher.speeds.back().second;
-      moving = speed_at_freeze > 0.2 ? moving + 1 : 0;
-    }
-  }
-  ASSERT_GE(moving, 20) << "the vehicle never drove:\n" << stack.launchOutput();
+  const std::optional<double> driving = watcher.waitUntilDriving(bus, 60.0);
+  ASSERT_TRUE(driving.has_value()) << "the vehicle never drove:\n" << stack.launchOutput();
+  const double speed_at_freeze = *driving;
   const pid_t lidar = stack.childRunning("ifar-velodyne-driver");
   ASSERT_GT(lidar, 0) << "no ifar-velodyne-driver child of the launch";
   const std::int64_t frozen_utime = ifar::common::nowMicroseconds();
   ASSERT_EQ(kill(lidar, SIGSTOP), 0);
 
   // Two seconds without obstacle points, as a sensor unplugged for that long.
-  std::optional<std::int64_t> commanded_utime;
-  std::optional<std::int64_t> stopped_utime;
   const Clock::time_point thaw = Clock::now() + std::chrono::seconds(2);
   while (Clock::now() < thaw) {
-    if (bus.handleTimeout(50) <= 0) {
-      continue;
-    }
-    for (const std::int64_t received : watcher.zero_commands) {
-      if (!commanded_utime && received > frozen_utime) {
-        commanded_utime = received;
-      }
-    }
-    const auto& [received, speed] = watcher.speeds.back();
-    if (!stopped_utime && received > frozen_utime && speed < 0.02) {
-      stopped_utime = received;
-    }
+    bus.handleTimeout(50);
   }
+  const std::optional<std::int64_t> commanded_utime = watcher.firstZeroCommandAfter(frozen_utime);
+  const std::optional<std::int64_t> stopped_utime = watcher.firstRestAfter(frozen_utime);
   const std::int64_t thawed_utime = ifar::common::nowMicroseconds();
   ASSERT_EQ(kill(lidar, SIGCONT), 0);
   ASSERT_TRUE(commanded_utime.has_value()) << "no zero VELOCITY_CMD while the lidar was frozen";
