@@ -83,8 +83,7 @@ void BM_HeightFilterAndClassification(benchmark::State& state)
       compensateMotion(frame.input.points, frame.input.mount, frame.input.motion);
   for ([[maybe_unused]] auto _ : state) {
     const HeightFilterResult filtered = filterObstaclePoints(world, frame.settings);
-    benchmark::DoNotOptimize(
-        classifyByReflectivity(filtered.obstacle_points, frame.settings.movable_reflectivity_threshold));
+    benchmark::DoNotOptimize(classifyByReflectivity(filtered.obstacle_points, tagReading(frame.settings)));
   }
 }
 BENCHMARK(BM_HeightFilterAndClassification)->Unit(benchmark::kMillisecond);
@@ -96,7 +95,7 @@ void BM_LocalLayer(benchmark::State& state)
       compensateMotion(frame.input.points, frame.input.mount, frame.input.motion);
   const HeightFilterResult filtered = filterObstaclePoints(world, frame.settings);
   const ClassifiedPoints classified =
-      classifyByReflectivity(filtered.obstacle_points, frame.settings.movable_reflectivity_threshold);
+      classifyByReflectivity(filtered.obstacle_points, tagReading(frame.settings));
   for ([[maybe_unused]] auto _ : state) {
     benchmark::DoNotOptimize(buildLocalLayer(classified, ifar::geometry::Point(0.1, 0.0), frame.settings));
   }

@@ -102,6 +102,10 @@ bool Planner::setGoal(const Goal& goal)
     ++bad_inputs_;
     return false;
   }
+  if (!goal_ || goal_->id != goal.id) {
+    no_path_forgets_ = 0;
+    last_forget_at_.reset();
+  }
   goal_ = goal;
   return true;
 }
@@ -360,6 +364,7 @@ void Planner::updateBackgroundMemory(const perception::PerceptionResult& perceiv
       background_memory_.forgetSeenThrough(perceived.free_space, settings_.perception.carve_range_m);
   work.checked_cells = static_cast<std::int64_t>(forgotten.checked);
   work.forgotten_cells = static_cast<std::int64_t>(forgotten.forgotten);
+  scan_first_mark_ = background_memory_.markCount() + 1;
   background_memory_.remember(perceived.observed_background, perceived.observed_background_heights_m);
   if (!settings_.interaction_enabled) {
     // FAR mode knows no movable objects: what it saw is an obstacle it remembers like any other (as
@@ -529,10 +534,36 @@ void Planner::search(FrameResult& result)
                                                 sealed_.size(), object_seals_.size()));
       sealed_ = perception::BackgroundMemory(settings_.perception.cell_size_m);
       object_seals_.clear();
+    } else {
+      forgetRememberedWallsForAPath(status.message);
     }
   }
   last_path_ = path;
   result.path = std::move(path);
+}
+
+void Planner::forgetRememberedWallsForAPath(std::string& message)
+{
+  // The walls remembered from earlier scans were drawn with the poses of their time: an estimator that
+  // drifted or jumped since has them where nothing stands, and a door they close stays closed, as no
+  // ray of the stopped vehicle passes through it. What the latest scan sees stays; the rest is looked at
+  // again. Each time after the vehicle has moved, so a goal no way leads to ends in "no path".
+  constexpr double kMovedBetweenForgetsM = 1.0;
+  const bool moved =
+      !last_forget_at_ || !robot_ || (*robot_ - *last_forget_at_).norm() >= kMovedBetweenForgetsM;
+  if (!settings_.perception.remember_background ||
+      no_path_forgets_ >= settings_.perception.no_path_forget_limit || !moved || scan_first_mark_ == 0) {
+    return;
+  }
+  const std::size_t forgotten = background_memory_.forgetMarkedBefore(scan_first_mark_);
+  if (forgotten == 0) {
+    return;
+  }
+  ++no_path_forgets_;
+  last_forget_at_ = robot_;
+  appendMessage(message, fmt::format("forgetting {} remembered wall cells out of the latest scan's sight "
+                                     "(time {} of {} for this goal): no path with them",
+                                     forgotten, no_path_forgets_, settings_.perception.no_path_forget_limit));
 }
 
 FrameResult Planner::applyAffordance(const AffordanceUpdate& update)

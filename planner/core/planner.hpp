@@ -147,6 +147,9 @@ class Planner {
   void fillSizes(PlannerStatus& status) const;
   /// Forgets the remembered background the scan's rays saw through, then remembers what they hit.
   void updateBackgroundMemory(const perception::PerceptionResult& perceived, FrameWork& work);
+  /// With no path left: forgets the remembered walls out of the latest scan's sight when the settings allow
+  /// it once more for this goal; what it did goes in `message`.
+  void forgetRememberedWallsForAPath(std::string& message);
   /// Replaces each seen object's outline (and its polygon of the frame) with what the outline memory
   /// keeps of it, grown by the seal kept with it.
   void shapeOutlines(TrackingResult& tracked, const std::vector<std::size_t>& movable_polygons,
@@ -175,6 +178,11 @@ class Planner {
   std::optional<std::pair<geometry::Point, geometry::Point>> known_extent_;
   graph::SearchScratch scratch_;
   PlannedPath last_path_;
+  // Remembered walls forgotten for want of a path (perception.no_path_forget_limit): the first mark of the
+  // latest scan (what it saw stays), how often for this goal, and where the vehicle stood the last time.
+  std::uint32_t scan_first_mark_ = 0;
+  int no_path_forgets_ = 0;
+  std::optional<geometry::Point> last_forget_at_;
   std::int64_t frames_ = 0;
   std::int64_t bad_inputs_ = 0;
   std::int64_t last_frame_utime_ = 0;

@@ -31,7 +31,7 @@ void BackgroundMemory::remember(common::Span<const geometry::Point> points,
 }
 
 void BackgroundMemory::mark(common::Span<const geometry::Point> points, common::Span<const float> heights_m,
-                            int votes)
+                            int votes, bool decided)
 {
   if (!(cell_size_ > 0.0) || !std::isfinite(cell_size_)) {
     return;  // unusable settings: perception refuses the frames anyway
@@ -50,6 +50,7 @@ void BackgroundMemory::mark(common::Span<const geometry::Point> points, common::
     const double height_cm =
         with_heights && std::isfinite(heights_m[index]) ? 100.0 * heights_m[index] : kTallest;
     cell.top_cm = std::max(cell.top_cm, static_cast<std::uint8_t>(std::clamp(height_cm, 0.0, kTallest)));
+    cell.decided = cell.decided || decided;
     if (cell.last_scan != scans_) {
       cell.last_scan = scans_;
       cell.votes = static_cast<std::uint8_t>(std::min(static_cast<int>(cell.votes) + votes, max_votes_));
@@ -84,6 +85,20 @@ ForgetStats BackgroundMemory::forgetSeenThrough(const FreeSpaceView& view, doubl
     }
   }
   return stats;
+}
+
+std::size_t BackgroundMemory::forgetMarkedBefore(std::uint32_t first_mark)
+{
+  std::size_t forgotten = 0;
+  for (auto cell = cells_.begin(); cell != cells_.end();) {
+    if (!cell->second.decided && cell->second.last_scan < first_mark) {
+      cell = cells_.erase(cell);
+      ++forgotten;
+    } else {
+      ++cell;
+    }
+  }
+  return forgotten;
 }
 
 int BackgroundMemory::votesAt(const geometry::Point& point) const
@@ -165,7 +180,7 @@ std::size_t BackgroundMemory::rememberInflatedOutline(const geometry::Polygon& i
     }
   }
   // Decided (an object found unpushable): as sure as a wall seen for long.
-  mark(common::Span<const geometry::Point>(cells.data(), cells.size()), {}, max_votes_);
+  mark(common::Span<const geometry::Point>(cells.data(), cells.size()), {}, max_votes_, true);
   return cells.size();
 }
 

@@ -52,6 +52,14 @@ class BackgroundMemory {
   /// new; an outline with a non-finite vertex marks nothing.
   std::size_t rememberOutline(const geometry::Polygon& outline);
 
+  /// Forgets every cell last marked before mark number `first_mark` (marks are counted by markCount()),
+  /// except the cells of objects found unpushable. Returns how many went.
+  std::size_t forgetMarkedBefore(std::uint32_t first_mark);
+
+  /// How many times cells were marked so far (remember, rememberOutline and rememberInflatedOutline each
+  /// count one).
+  std::uint32_t markCount() const { return scans_; }
+
   /// Centres of the remembered cells inside the square [minimum, maximum).
   std::vector<geometry::Point> cellsWithin(const geometry::Point& minimum,
                                            const geometry::Point& maximum) const;
@@ -62,12 +70,14 @@ class BackgroundMemory {
   int votesAt(const geometry::Point& point) const;
 
  private:
-  void mark(common::Span<const geometry::Point> points, common::Span<const float> heights_m, int votes);
+  void mark(common::Span<const geometry::Point> points, common::Span<const float> heights_m, int votes,
+            bool decided = false);
   geometry::Point centreOf(std::uint64_t cell) const;
 
   struct Cell {
     std::uint8_t votes = 0;
     std::uint8_t top_cm = 0;      // the highest return seen in it, centimetres above the ground
+    bool decided = false;         // an unpushable object's: kept by forgetMarkedBefore
     std::uint32_t last_scan = 0;  // the scan that last gave it a vote
   };
 

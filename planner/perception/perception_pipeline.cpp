@@ -87,10 +87,9 @@ PerceptionResult runPerception(const PerceptionInput& input, const PerceptionSet
   result.stats.outside_height_band_points = filtered.counts.outside_height_band;
 
   stage_start = Clock::now();
-  ClassifiedPoints classified =
-      input.detector_polygons
-          ? classifyByDetector(filtered.obstacle_points, *input.detector_polygons)
-          : classifyByReflectivity(filtered.obstacle_points, settings.movable_reflectivity_threshold);
+  ClassifiedPoints classified = input.detector_polygons
+                                    ? classifyByDetector(filtered.obstacle_points, *input.detector_polygons)
+                                    : classifyByReflectivity(filtered.obstacle_points, tagReading(settings));
   result.stats.classification_ms = millisecondsSince(stage_start);
   result.stats.background_points = classified.background.size();
   result.stats.movable_points = classified.movable.size();

@@ -96,6 +96,11 @@ const common::ParameterTable<PerceptionSettings>& perceptionParameters()
                "Douglas-Peucker tolerance for the obstacle outlines")
           .add("min_polygon_area_m2", &S::min_polygon_area_m2, "m^2", Range::positive(),
                "smaller outlines and enclosed free-space holes are dropped")
+          .add(
+              "tag_neighbourhood_m", &S::tag_neighbourhood_m, "m", Range::nonNegative(),
+              "a return whose tag (reflectivity) disagrees with more than twice as many returns in the cells "
+              "this wide around it takes theirs (0 = each by its own): the lidar misses a tag's return now "
+              "and then and reads a bright wall as a tag")
           .add("remember_background", &S::remember_background, "", Range::any(),
                "walls seen once stay in the layer after they leave the scan (never movable objects)")
           .add("gap_fill_azimuth_step_deg", &S::gap_fill_azimuth_step_deg, "deg", Range::nonNegative(),
@@ -112,7 +117,11 @@ const common::ParameterTable<PerceptionSettings>& perceptionParameters()
                "... when the rays go this far past the cell: the lidar's range noise and the pose's jitter")
           .add("background_votes", &S::background_votes, "", Range::atLeast(1),
                "a remembered cell gains a vote each scan that hits it (up to this many) and loses one each "
-               "scan that sees through it; forgotten at none");
+               "scan that sees through it; forgotten at none")
+          .add("no_path_forget_limit", &S::no_path_forget_limit, "", Range::nonNegative(),
+               "with no path to the goal left, the remembered background out of the latest scan's sight is "
+               "forgotten, at most this many times per goal, each after the vehicle moved 1 m (0 = never): "
+               "the estimator's drift draws remembered walls across doors");
   return table;
 }
 
@@ -130,6 +139,14 @@ PerceptionSettings loadPerceptionSettings(const common::ConfigNode& root)
     node.fail("cell_size_m", "gives more than 20000 cells per side of the layer; use larger cells");
   }
   return settings;
+}
+
+TagReading tagReading(const PerceptionSettings& settings)
+{
+  TagReading reading;
+  reading.threshold = settings.movable_reflectivity_threshold;
+  reading.neighbourhood_m = settings.tag_neighbourhood_m;
+  return reading;
 }
 
 PerceptionSettings withLidarFilter(PerceptionSettings settings, const common::LidarFilterSettings& lidar)

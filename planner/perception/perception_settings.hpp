@@ -8,6 +8,7 @@
 #include "common/config.hpp"
 #include "common/parameters.hpp"
 #include "common/vehicle.hpp"
+#include "planner/perception/classification.hpp"
 
 namespace ifar::perception {
 
@@ -21,6 +22,9 @@ struct PerceptionSettings {
   /// Points with calibrated reflectivity at or above this are movable (retro-reflective tags read
   /// 101..255 on a VLP-16); used when no detector polygons are given.
   float movable_reflectivity_threshold = 101.0F;
+  /// A point's tag is its neighbourhood's when most returns within cells this wide around it disagree
+  /// with it (metres; 0 = each point by its own reflectivity; classification.hpp, TagReading).
+  double tag_neighbourhood_m = 0.15;
   /// The vehicle-centred local layer: square side and cell size (metres). Twice the lidar's range, so
   /// the layer holds all the sensor can see: where it cuts a remembered wall, the cut corner is out of
   /// sight and behind the vehicle (a cut that moves with the vehicle makes the route flip between ways).
@@ -50,6 +54,10 @@ struct PerceptionSettings {
   /// that sees through it, forgotten at none. A wall seen for long outlasts a few stray rays; a cell one
   /// bad pose drew goes after a scan or two.
   int background_votes = 5;
+  /// With no path to the goal left, the remembered background out of the latest scan's sight is forgotten,
+  /// at most this many times per goal (each after the vehicle moved): the estimator's drift and jumps draw
+  /// remembered walls across doors that no ray of a stopped vehicle passes through.
+  int no_path_forget_limit = 3;
 
   /// Cells along one side of the layer.
   int layerCells() const;
@@ -65,6 +73,9 @@ const common::ParameterTable<PerceptionSettings>& perceptionParameters();
 /// Reads the `perception` child of `root` (every key required and in range) and rejects unknown keys
 /// inside it. Throws common::ConfigError naming file and key. The lidar filter keeps its defaults.
 PerceptionSettings loadPerceptionSettings(const common::ConfigNode& root);
+
+/// How the reflectivity classification reads tags under `settings`.
+TagReading tagReading(const PerceptionSettings& settings);
 
 /// `settings` with the point filter of the vehicle's lidar.
 PerceptionSettings withLidarFilter(PerceptionSettings settings, const common::LidarFilterSettings& lidar);

@@ -191,5 +191,28 @@ TEST(BackgroundMemory, NoRaysNoForgetting)
   EXPECT_EQ(memory.votesAt(cells[1]), 1);
 }
 
+TEST(BackgroundMemory, ForgettingWhatWasMarkedBeforeAScanKeepsThatScanAndUnpushableObjects)
+{
+  BackgroundMemory memory(1.0, 5);
+  const std::vector<geometry::Point> old_wall = {geometry::Point(0.5, 0.5), geometry::Point(1.5, 0.5)};
+  memory.remember(spanOf(old_wall));
+  const geometry::Polygon unpushable = {geometry::Point(10, 10), geometry::Point(14, 10),
+                                        geometry::Point(14, 14), geometry::Point(10, 14)};
+  const std::size_t object_cells = memory.rememberInflatedOutline(unpushable, 1.0);
+  ASSERT_GT(object_cells, 0U);
+  const std::uint32_t latest_scan = memory.markCount() + 1;
+  const std::vector<geometry::Point> seen_now = {geometry::Point(1.5, 0.5), geometry::Point(5.5, 5.5)};
+  memory.remember(spanOf(seen_now));
+  EXPECT_EQ(memory.markCount(), latest_scan);
+  EXPECT_EQ(memory.size(), 3U + object_cells);
+
+  EXPECT_EQ(memory.forgetMarkedBefore(latest_scan), 1U);  // only (0.5, 0.5): (1.5, 0.5) was seen again
+  EXPECT_EQ(memory.votesAt(geometry::Point(0.5, 0.5)), 0);
+  EXPECT_EQ(memory.votesAt(geometry::Point(1.5, 0.5)), 2);
+  EXPECT_EQ(memory.votesAt(geometry::Point(5.5, 5.5)), 1);
+  EXPECT_EQ(memory.votesAt(geometry::Point(12.5, 12.5)), 5);
+  EXPECT_EQ(memory.size(), 2U + object_cells);
+}
+
 }  // namespace
 }  // namespace ifar::perception

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <random>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -93,9 +94,11 @@ int framesUntilAPath(Planner& planner, int limit, std::int64_t& utime)
   return limit;
 }
 
+/// Carving alone: no forgetting of the memory for want of a path.
 PlannerSettings withCarving(bool carving)
 {
   PlannerSettings settings;
+  settings.perception.no_path_forget_limit = 0;
   if (!carving) {
     settings.perception.carve_range_m = 0.0;
   }
@@ -189,6 +192,41 @@ TEST(PlannerEstimatorRobustness, ASpoofedPoseBurstLeavesThePlannerWithAPathAgain
       EXPECT_LE(frames, 5) << "a path again within a few frames of sane poses";
     } else {
       EXPECT_EQ(frames, kLimit) << "without carving the phantom walls stay";
+    }
+  }
+}
+
+// The same burst with carving off: the phantom walls leave no path, and the memory out of the latest
+// scan's sight is forgotten (what the scan sees stays); the path is back within two frames. Without
+// that, the planner stays at "no path".
+TEST(PlannerEstimatorRobustness, WithNoPathLeftTheWallsRememberedOutOfSightAreForgotten)
+{
+  const Eigen::Isometry3d far_away = vehiclePose(30.0, 18.0, 2.0);
+  for (const int limit : {3, 0}) {
+    PlannerSettings settings = withCarving(false);
+    settings.perception.no_path_forget_limit = limit;
+    Planner planner{settings};
+    ASSERT_TRUE(planner.setGoal(kGoalInRoomB));
+    std::int64_t utime = 0;
+    bool forgotten = false;
+    const auto frame = [&](const Eigen::Isometry3d& start, const Eigen::Isometry3d& end) {
+      FrameResult result = planner.processFrame(scanPlacedAt(kInRoomA, start, end, utime));
+      utime += kFramePeriodUs;
+      forgotten = forgotten || result.status.message.find("remembered wall cells") != std::string::npos;
+      return result;
+    };
+    ASSERT_TRUE(frame(kInRoomA, kInRoomA).path.valid);
+    frame(kInRoomA, far_away);
+    frame(far_away, far_away);
+    const FrameResult back = frame(far_away, kInRoomA);
+    EXPECT_EQ(forgotten, limit > 0);
+    constexpr int kLimit = 6;
+    const int frames = framesUntilAPath(planner, kLimit, utime);
+    if (limit > 0) {
+      EXPECT_LE(frames, 2) << "the walls out of sight are gone, the latest scan's stay";
+    } else {
+      EXPECT_FALSE(back.path.valid) << back.status.message;
+      EXPECT_EQ(frames, kLimit);
     }
   }
 }

@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include "sim/generators/generators.hpp"
 #include "sim/simulator/builtin_worlds.hpp"
 #include "sim/world/world_file.hpp"
 #include "system/graph_picture.hpp"
@@ -194,6 +195,22 @@ TEST(RunnerScenario, GoalOutsideTheWorldEndsWithTheExecutivesStop)
   EXPECT_NE(summary.reason.find("no path"), std::string::npos) << summary.reason;
   EXPECT_LT(summary.sim_time_s, 10.0);  // three seconds after the stop, not the time limit
   EXPECT_LT(summary.distance_m, 0.1);
+}
+
+// A field vehicle's sensing (drift, jitter, jumps and latency of the pose; range noise, dropouts and
+// missed or false tags of the lidar; wheel slip; force noise): from the start room of the generated office
+// through its door, along the corridor and through the door of the room across, about 10 m.
+TEST(RunnerScenario, AShortOfficeRouteArrivesUnderFieldSensing)
+{
+  const sim::WorldResult office = sim::generateWorld(*sim::parseWorldKind("office"), 1);
+  ASSERT_TRUE(office.ok()) << office.error();
+  RunRequest request = loadRunSettings(kSourceDir + "/config", "field");
+  request.world = office.world();
+  request.goal = geometry::Point(3.0, 15.0);
+  request.max_sim_time_s = 200.0;
+  const RunSummary summary = runScenario(request, {});
+  EXPECT_TRUE(summary.arrived) << summary.reason;
+  EXPECT_EQ(summary.undecided_saturated_pushes, 0);
 }
 
 TEST(RunnerScenario, ProgressOncePerSimulatedSecondAndTimeout)
