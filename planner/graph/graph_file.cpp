@@ -3,6 +3,7 @@
 #include <cinttypes>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <vector>
@@ -104,7 +105,8 @@ std::string saveGraph(const DvGraph& graph, const std::string& path)
   return {};
 }
 
-GraphLoadResult parseGraph(const std::string& text, const std::string& source_name)
+GraphLoadResult parseGraph(const std::string& text, const std::string& source_name,
+                           const GraphReadLimits& limits)
 {
   GraphLoadResult result;
   const auto fail = [&](int line, const std::string& reason) {
@@ -153,6 +155,10 @@ GraphLoadResult parseGraph(const std::string& text, const std::string& source_na
   std::size_t slots = 0;
   if (!next() || !readCount(line, "slots", slots)) {
     return fail(line_number, "expected 'slots <count>'");
+  }
+  if (slots > limits.max_slots) {
+    return fail(line_number, "slots " + std::to_string(slots) + " beyond the reader's limit of " +
+                                 std::to_string(limits.max_slots));
   }
   std::size_t count = 0;
   if (!next() || !readCount(line, "vertices", count) || count > slots) {
@@ -256,8 +262,23 @@ GraphLoadResult parseGraph(const std::string& text, const std::string& source_na
   return result;
 }
 
-GraphLoadResult loadGraph(const std::string& path)
+GraphLoadResult loadGraph(const std::string& path, const GraphReadLimits& limits)
 {
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(path, error)) {
+    GraphLoadResult result;
+    result.error = path + (std::filesystem::exists(path, error) ? ": not a regular file" : ": cannot open");
+    return result;
+  }
+  const std::uintmax_t bytes = std::filesystem::file_size(path, error);
+  if (error || bytes > limits.max_file_bytes) {
+    GraphLoadResult result;
+    result.error = path + ": " +
+                   (error ? "cannot read its size"
+                          : std::to_string(bytes) + " bytes, beyond the reader's limit of " +
+                                std::to_string(limits.max_file_bytes));
+    return result;
+  }
   std::ifstream input(path, std::ios::binary);
   if (!input) {
     GraphLoadResult result;

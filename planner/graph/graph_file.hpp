@@ -14,6 +14,8 @@
 // Vertex ids are kept (ids strictly increasing in the file). Numbers are written with 17 significant
 // digits so a round trip is exact. Loading validates everything and reports the first problem.
 
+#include <cstddef>
+#include <cstdint>
 #include <string>
 
 #include "planner/graph/dv_graph.hpp"
@@ -25,16 +27,25 @@ constexpr int kGraphFileVersion = 1;
 /// Empty on success, else the reason (file named).
 std::string saveGraph(const DvGraph& graph, const std::string& path);
 
+/// What a reader accepts before it allocates: the slots a file declares are made before its vertices
+/// are read, so a header cannot ask for more than this.
+struct GraphReadLimits {
+  std::size_t max_slots = std::size_t{1} << 22U;  // 4.2 million: ten times a 1024 x 1024 map's graph
+  std::uintmax_t max_file_bytes = std::uintmax_t{1} << 30U;  // 1 GiB
+};
+
 struct GraphLoadResult {
   DvGraph graph;
   std::string error;  // "<file>:<line>: <reason>" or "<file>: <reason>"; empty on success
   bool ok() const { return error.empty(); }
 };
 
-GraphLoadResult loadGraph(const std::string& path);
+/// Only a regular file of at most limits.max_file_bytes is read.
+GraphLoadResult loadGraph(const std::string& path, const GraphReadLimits& limits = {});
 
 /// The same, on text in memory (`source_name` stands in for the file name in messages).
 std::string serializeGraph(const DvGraph& graph);
-GraphLoadResult parseGraph(const std::string& text, const std::string& source_name);
+GraphLoadResult parseGraph(const std::string& text, const std::string& source_name,
+                           const GraphReadLimits& limits = {});
 
 }  // namespace ifar::graph

@@ -1,5 +1,6 @@
 #include <cstdio>
 #include <fstream>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -118,6 +119,32 @@ TEST(GraphFile, InvalidContentRejectedWithReason)
 TEST(GraphFile, MissingFileNamed)
 {
   EXPECT_EQ(loadGraph("/nonexistent/graph.dvg").error, "/nonexistent/graph.dvg: cannot open");
+}
+
+// A header may not ask for more than the reader allows: 10^10 slots would be gigabytes before the first
+// vertex is read, and a device or an oversized file is refused before it is read.
+TEST(GraphFile, DeclaredSizesAndFilesBeyondTheLimitsAreRefused)
+{
+  EXPECT_EQ(parseGraph(resealed("ifar-dv-graph 1\nslots 10000000000\nvertices 0\n"), "g").error,
+            "g:2: slots 10000000000 beyond the reader's limit of 4194304");
+  const std::string text = serializeGraph(sampleGraph());
+  const std::size_t slots = sampleGraph().vertexSlots().size();
+  GraphReadLimits exact;
+  exact.max_slots = slots;
+  EXPECT_TRUE(parseGraph(text, "g", exact).ok());
+  exact.max_slots = slots - 1;
+  EXPECT_EQ(
+      parseGraph(text, "g", exact).error,
+      "g:2: slots " + std::to_string(slots) + " beyond the reader's limit of " + std::to_string(slots - 1));
+  EXPECT_EQ(loadGraph("/dev/zero").error, "/dev/zero: not a regular file");
+  const std::string path = ::testing::TempDir() + "graph_limit.dvg";
+  ASSERT_EQ(saveGraph(sampleGraph(), path), "");
+  GraphReadLimits tiny;
+  tiny.max_file_bytes = 10;
+  const std::string error = loadGraph(path, tiny).error;
+  EXPECT_NE(error.find("bytes, beyond the reader's limit of 10"), std::string::npos) << error;
+  EXPECT_TRUE(loadGraph(path).ok());
+  std::remove(path.c_str());
 }
 
 }  // namespace
