@@ -1,5 +1,7 @@
 #include "common/geometry/polygon.hpp"
 
+#include "common/geometry/box_sweep.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -167,26 +169,34 @@ bool isSimple(const Polygon& polygon)
   if (count < 3) {
     return false;
   }
-  for (std::size_t first = 0; first < count; ++first) {
-    const Segment first_edge = polygonEdge(polygon, first);
-    if (first_edge.length() <= kEpsilon) {
+  std::vector<Eigen::AlignedBox2d> boxes;
+  boxes.reserve(count);
+  for (std::size_t index = 0; index < count; ++index) {
+    const Segment edge = polygonEdge(polygon, index);
+    if (!(edge.length() > kEpsilon)) {
       return false;
     }
-    for (std::size_t second = first + 1; second < count; ++second) {
-      const Segment second_edge = polygonEdge(polygon, second);
-      const bool adjacent = second == first + 1 || (first == 0 && second == count - 1);
-      if (!adjacent) {
-        if (segmentsIntersect(first_edge, second_edge)) {
-          return false;
-        }
-        continue;
-      }
-      // Adjacent edges share one vertex; any other common point means they fold back.
-      const Point shared = second == first + 1 ? first_edge.end : first_edge.start;
-      const auto meeting = segmentIntersectionPoint(first_edge, second_edge);
-      if (!meeting || (*meeting - shared).norm() > kEpsilon) {
+    Eigen::AlignedBox2d box(edge.start);
+    box.extend(edge.end);
+    boxes.push_back(box);
+  }
+  // Only edges whose boxes come within the intersection tolerance can meet.
+  for (const auto& [first, second] : overlappingBoxPairs(
+           common::Span<const Eigen::AlignedBox2d>(boxes.data(), boxes.size()), 2.0 * kEpsilon)) {
+    const Segment first_edge = polygonEdge(polygon, first);
+    const Segment second_edge = polygonEdge(polygon, second);
+    const bool adjacent = second == first + 1 || (first == 0 && second == count - 1);
+    if (!adjacent) {
+      if (segmentsIntersect(first_edge, second_edge)) {
         return false;
       }
+      continue;
+    }
+    // Adjacent edges share one vertex; any other common point means they fold back.
+    const Point shared = second == first + 1 ? first_edge.end : first_edge.start;
+    const auto meeting = segmentIntersectionPoint(first_edge, second_edge);
+    if (!meeting || (*meeting - shared).norm() > kEpsilon) {
+      return false;
     }
   }
   return true;

@@ -1,7 +1,14 @@
 #include "sim/world/world_validation.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
+#include <tuple>
+#include <utility>
+
+#include <Eigen/Geometry>
+
+#include "common/geometry/box_sweep.hpp"
 
 #include "sim/world/world_geometry.hpp"
 
@@ -146,16 +153,48 @@ std::vector<WorldProblem> findWorldProblems(const World& world)
   for (const auto& object : world.objects) {
     placed.push_back(placedOutline(object));
   }
-  for (std::size_t i = 0; i < world.objects.size(); ++i) {
-    for (const auto& obstacle : world.obstacles) {
-      if (interiorsOverlap(placed[i], obstacle.outline)) {
-        problems.push_back({objectEntity(world.objects[i]), "overlaps " + obstacleEntity(obstacle)});
-      }
+  // Objects first, then obstacles: only pairs whose boxes meet are tested, in the order of the objects
+  // and, for each, its obstacles before the objects after it.
+  std::vector<Eigen::AlignedBox2d> boxes;
+  boxes.reserve(placed.size() + world.obstacles.size());
+  const auto boxOf = [](const geometry::Polygon& outline) {
+    Eigen::AlignedBox2d box;
+    for (const geometry::Point& vertex : outline) {
+      box.extend(vertex);
     }
-    for (std::size_t j = i + 1; j < world.objects.size(); ++j) {
-      if (interiorsOverlap(placed[i], placed[j])) {
-        problems.push_back({objectEntity(world.objects[i]), "overlaps " + objectEntity(world.objects[j])});
+    return box;
+  };
+  for (const geometry::Polygon& outline : placed) {
+    boxes.push_back(boxOf(outline));
+  }
+  for (const auto& obstacle : world.obstacles) {
+    boxes.push_back(boxOf(obstacle.outline));
+  }
+  const std::size_t objects = placed.size();
+  std::vector<std::pair<std::size_t, std::size_t>> candidates;  // (object, other: obstacles after objects)
+  for (const auto& [first, second] : geometry::overlappingBoxPairs(
+           common::Span<const Eigen::AlignedBox2d>(boxes.data(), boxes.size()), geometry::kEpsilon)) {
+    if (first < objects) {
+      candidates.emplace_back(first, second);
+    }
+  }
+  std::sort(candidates.begin(), candidates.end(), [&](const auto& a, const auto& b) {
+    const auto rank = [&](const std::pair<std::size_t, std::size_t>& pair) {
+      // An obstacle ranks before any object after the same object, in the obstacles' order.
+      return std::make_tuple(pair.first, pair.second >= objects ? 0 : 1,
+                             pair.second >= objects ? pair.second - objects : pair.second);
+    };
+    return rank(a) < rank(b);
+  });
+  for (const auto& [object, other] : candidates) {
+    if (other >= objects) {
+      const StaticObstacle& obstacle = world.obstacles[other - objects];
+      if (interiorsOverlap(placed[object], obstacle.outline)) {
+        problems.push_back({objectEntity(world.objects[object]), "overlaps " + obstacleEntity(obstacle)});
       }
+    } else if (interiorsOverlap(placed[object], placed[other])) {
+      problems.push_back(
+          {objectEntity(world.objects[object]), "overlaps " + objectEntity(world.objects[other])});
     }
   }
 
