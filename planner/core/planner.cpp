@@ -200,6 +200,7 @@ FrameResult Planner::processFrame(const FrameInput& frame)
   input.motion = frame.motion;
   input.detector_polygons = frame.detector_polygons;
   std::vector<geometry::Point> remembered;
+  std::vector<geometry::Point> kept;
   {
     const auto end = frame.motion.vehicle_at_end.translation();
     const geometry::Point half_layer = geometry::Point::Constant(settings_.perception.layer_size_m / 2.0);
@@ -210,9 +211,10 @@ FrameResult Planner::processFrame(const FrameInput& frame)
     }
     for (const perception::BackgroundMemory* memory : {&sealed_, &known_}) {
       const std::vector<geometry::Point> cells = memory->cellsWithin(minimum, maximum);
-      remembered.insert(remembered.end(), cells.begin(), cells.end());
+      kept.insert(kept.end(), cells.begin(), cells.end());
     }
     input.remembered_background = common::Span<const geometry::Point>(remembered.data(), remembered.size());
+    input.kept_background = common::Span<const geometry::Point>(kept.data(), kept.size());
   }
   perception::PerceptionResult perceived = perception::runPerception(input, settings_.perception);
   const Clock::time_point memory_start = Clock::now();

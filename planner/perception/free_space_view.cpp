@@ -133,4 +133,22 @@ bool FreeSpaceView::seesThrough(const geometry::Point& centre, double cell_size_
   return true;
 }
 
+bool FreeSpaceView::reaches(const geometry::Point& centre, double cell_size_m) const
+{
+  const double half_diagonal = cell_size_m * std::sqrt(0.5);
+  double range = 0.0;
+  const auto [first, count] = binsAcross(centre, half_diagonal, range);
+  if (count == 0) {
+    return false;
+  }
+  const double needed = range - half_diagonal;
+  for (std::size_t step = 0; step < count; ++step) {
+    const Bin& bin = bins_[(first + step) % kBins];
+    if (!(std::max(bin.level_reach, bin.climbing_reach) >= needed)) {
+      return false;
+    }
+  }
+  return true;
+}
+
 }  // namespace ifar::perception

@@ -36,6 +36,11 @@ class FreeSpaceView {
   /// (a ray over a low obstacle does not show it gone). A cell holding the origin is never seen through.
   bool seesThrough(const geometry::Point& centre, double cell_size_m, double top_m) const;
 
+  /// Whether every bin across the square cell of side `cell_size_m` centred at `centre` holds a ray that
+  /// got at least to the cell's near side: the scan looked at the cell (hit it or passed it), nothing
+  /// nearer hid it. A cell holding the origin is never reached.
+  bool reaches(const geometry::Point& centre, double cell_size_m) const;
+
   const geometry::Point& origin() const { return origin_; }
   std::size_t rays() const { return rays_; }
   bool empty() const { return rays_ == 0; }

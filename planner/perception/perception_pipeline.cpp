@@ -38,6 +38,25 @@ FreeSpaceSettings freeSpaceSettings(const PerceptionSettings& settings)
   return free_space;
 }
 
+/// Appends the remembered cells to `background`, except those within scan_trust_range_m that this scan's
+/// rays reached: there the scan itself says what stands, and what the memory adds is what earlier poses,
+/// each a little off, drew beside it (a jamb's returns a cell into the doorway, one scan in three).
+void appendRememberedOutOfView(common::Span<const geometry::Point> remembered, const FreeSpaceView& view,
+                               const PerceptionSettings& settings, std::vector<geometry::Point>& background)
+{
+  const double range = settings.scan_trust_range_m;
+  if (!(range > 0.0) || view.empty()) {
+    background.insert(background.end(), remembered.begin(), remembered.end());
+    return;
+  }
+  for (const geometry::Point& cell : remembered) {
+    if ((cell - view.origin()).squaredNorm() < range * range && view.reaches(cell, settings.cell_size_m)) {
+      continue;
+    }
+    background.push_back(cell);
+  }
+}
+
 }  // namespace
 
 const char* toString(PerceptionStatus status)
@@ -110,8 +129,9 @@ PerceptionResult runPerception(const PerceptionInput& input, const PerceptionSet
                       grazingGapSettings(settings));
   result.stats.gap_fill_points = gap_fill.size();
   classified.background.insert(classified.background.end(), gap_fill.begin(), gap_fill.end());
-  classified.background.insert(classified.background.end(), input.remembered_background.begin(),
-                               input.remembered_background.end());
+  appendRememberedOutOfView(input.remembered_background, result.free_space, settings, classified.background);
+  classified.background.insert(classified.background.end(), input.kept_background.begin(),
+                               input.kept_background.end());
 
   stage_start = Clock::now();
   result.layer = buildLocalLayer(classified, centre, settings);

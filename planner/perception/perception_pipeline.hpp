@@ -26,6 +26,8 @@ struct PerceptionInput {
   /// Background seen in earlier scans (world frame, e.g. BackgroundMemory cell centres): drawn into the
   /// layer with this scan's background points. Only used during the call.
   common::Span<const geometry::Point> remembered_background;
+  /// Background known otherwise (passages sealed after stalls, a prior map): drawn as it is.
+  common::Span<const geometry::Point> kept_background;
 };
 
 enum class PerceptionStatus {

@@ -118,6 +118,12 @@ const common::ParameterTable<PerceptionSettings>& perceptionParameters()
           .add("background_votes", &S::background_votes, "", Range::atLeast(1),
                "a remembered cell gains a vote each scan that hits it (up to this many) and loses one each "
                "scan that sees through it; forgotten at none")
+          .add(
+              "scan_trust_range_m", &S::scan_trust_range_m, "m", Range::nonNegative(),
+              "within this range of the lidar, remembered background is drawn only where the scan's rays did "
+              "not reach (0 = everywhere): where it looked, the scan says what stands, and the memory adds "
+              "what "
+              "earlier, slightly wrong poses drew beside it")
           .add("no_path_forget_limit", &S::no_path_forget_limit, "", Range::nonNegative(),
                "with no path to the goal left, the remembered background out of the latest scan's sight is "
                "forgotten, at most this many times per goal, each after the vehicle moved 1 m (0 = never): "

@@ -54,6 +54,9 @@ struct PerceptionSettings {
   /// that sees through it, forgotten at none. A wall seen for long outlasts a few stray rays; a cell one
   /// bad pose drew goes after a scan or two.
   int background_votes = 5;
+  /// Within this range of the sensor (metres; 0 = off), remembered background is drawn only where this
+  /// scan's rays did not reach: the scan says what stands where it looked.
+  double scan_trust_range_m = 8.0;
   /// With no path to the goal left, the remembered background out of the latest scan's sight is forgotten,
   /// at most this many times per goal (each after the vehicle moved): the estimator's drift and jumps draw
   /// remembered walls across doors that no ray of a stopped vehicle passes through.

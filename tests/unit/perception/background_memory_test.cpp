@@ -191,6 +191,18 @@ TEST(BackgroundMemory, NoRaysNoForgetting)
   EXPECT_EQ(memory.votesAt(cells[1]), 1);
 }
 
+// A cell the rays passed or ended at is reached; one behind where they ended is not, nor one where no
+// ray went, nor the sensor's own.
+TEST(FreeSpaceView, ReachesTheCellsTheRaysGotTo)
+{
+  const FreeSpaceView view = levelScan(10.0);
+  EXPECT_TRUE(view.reaches(Point(5.0, 0.05), 0.15));    // passed
+  EXPECT_TRUE(view.reaches(Point(10.05, 0.05), 0.15));  // ended in it
+  EXPECT_FALSE(view.reaches(Point(10.5, 0.05), 0.15));  // behind the wall
+  EXPECT_FALSE(view.reaches(Point(0.01, 0.01), 0.15));  // holds the sensor
+  EXPECT_FALSE(FreeSpaceView{}.reaches(Point(5.0, 0.05), 0.15));
+}
+
 TEST(BackgroundMemory, ForgettingWhatWasMarkedBeforeAScanKeepsThatScanAndUnpushableObjects)
 {
   BackgroundMemory memory(1.0, 5);

@@ -278,6 +278,41 @@ TEST(PerceptionPipeline, ClosedRoomEnclosesTheVehicleInAHole)
   EXPECT_EQ(polygonsOf(result.layer, ObstacleClass::Background, BoundaryKind::Outer).size(), 1U);
 }
 
+// Remembered walls within scan_trust_range_m that this scan's rays reached are left out (the scan says
+// what stands there); beyond that range, behind what the rays hit, and what is kept otherwise (sealed
+// passages, a prior map) are drawn.
+TEST(PerceptionPipeline, RememberedWallsWhereTheScanLookedCloseByAreLeftOut)
+{
+  std::vector<PrismObstacle> walls = synthetic::roomWithBoxes();
+  walls.resize(4);
+  synthetic::RevolutionSettings revolution;
+  revolution.ceiling_height_m = 3.0;
+  const std::vector<SensorPoint> points =
+      synthetic::simulateRevolution(walls, planarPose(0.0, 0.0, 0.0) * mount(), revolution);
+  const std::vector<geometry::Point> remembered = {geometry::Point(3.05, 0.05), geometry::Point(12.05, 0.05),
+                                                   geometry::Point(17.05, 0.05)};
+  const std::vector<geometry::Point> kept = {geometry::Point(0.05, 3.05)};
+  PerceptionInput input;
+  input.points = points;
+  input.mount = mount();
+  input.remembered_background = common::Span<const geometry::Point>(remembered.data(), remembered.size());
+  input.kept_background = common::Span<const geometry::Point>(kept.data(), kept.size());
+  const auto occupied = [](const PerceptionResult& result, const geometry::Point& point) {
+    const auto index = result.layer.grid.indexOf(point);
+    return index && result.layer.background_occupancy[*index] != 0;
+  };
+  for (const double range : {8.0, 0.0}) {
+    PerceptionSettings settings;
+    settings.scan_trust_range_m = range;
+    const PerceptionResult result = runPerception(input, settings);
+    ASSERT_EQ(result.status, PerceptionStatus::Ok) << result.message;
+    EXPECT_EQ(occupied(result, remembered[0]), range == 0.0) << "in view, " << range;
+    EXPECT_TRUE(occupied(result, remembered[1])) << "beyond the range";
+    EXPECT_TRUE(occupied(result, remembered[2])) << "behind the wall";
+    EXPECT_TRUE(occupied(result, kept[0])) << "kept";
+  }
+}
+
 // The cells along a corridor wall's inflated face from y_from to y_to that the layer leaves free.
 int freeCellsAlongWall(const LocalLayer& layer, double face_x, double y_from, double y_to)
 {

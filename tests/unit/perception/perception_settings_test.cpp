@@ -17,6 +17,7 @@ perception:
   min_polygon_area_m2: 0.1
   tag_neighbourhood_m: 0.3
   no_path_forget_limit: 2
+  scan_trust_range_m: 4.0
   remember_background: false
   gap_fill_azimuth_step_deg: 0.5
   gap_fill_min_incidence_deg: 4.0
@@ -53,6 +54,7 @@ TEST(PerceptionSettings, ReadsEveryKey)
   EXPECT_FALSE(settings.remember_background);
   EXPECT_DOUBLE_EQ(settings.tag_neighbourhood_m, 0.3);
   EXPECT_EQ(settings.no_path_forget_limit, 2);
+  EXPECT_DOUBLE_EQ(settings.scan_trust_range_m, 4.0);
   EXPECT_DOUBLE_EQ(settings.gap_fill_azimuth_step_deg, 0.5);
   EXPECT_DOUBLE_EQ(settings.gap_fill_min_incidence_deg, 4.0);
   EXPECT_DOUBLE_EQ(settings.carve_range_m, 15.0);
