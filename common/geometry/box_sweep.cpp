@@ -1,7 +1,6 @@
 #include "common/geometry/box_sweep.hpp"
 
 #include <algorithm>
-#include <numeric>
 
 namespace ifar::geometry {
 
