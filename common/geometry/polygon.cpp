@@ -1,10 +1,10 @@
 #include "common/geometry/polygon.hpp"
 
-#include "common/geometry/box_sweep.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
+
+#include "common/geometry/box_sweep.hpp"
 
 namespace ifar::geometry {
 namespace {
@@ -45,6 +45,15 @@ double signedArea(const Polygon& polygon)
 double area(const Polygon& polygon)
 {
   return std::abs(signedArea(polygon));
+}
+
+Eigen::AlignedBox2d boundingBox(const Polygon& polygon)
+{
+  Eigen::AlignedBox2d box;
+  for (const Point& vertex : polygon) {
+    box.extend(vertex);
+  }
+  return box;
 }
 
 Point centroid(const Polygon& polygon)

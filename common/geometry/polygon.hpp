@@ -3,6 +3,8 @@
 
 #include <vector>
 
+#include <Eigen/Geometry>
+
 #include "common/geometry/point.hpp"
 #include "common/geometry/segment.hpp"
 
@@ -13,6 +15,8 @@ using Polygon = std::vector<Point>;
 /// Shoelace area: positive for counter-clockwise vertex order, 0 for fewer than 3 vertices.
 double signedArea(const Polygon& polygon);
 double area(const Polygon& polygon);
+/// The smallest axis-aligned box holding every vertex (empty for no vertices).
+Eigen::AlignedBox2d boundingBox(const Polygon& polygon);
 Point centroid(const Polygon& polygon);
 double perimeter(const Polygon& polygon);
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "planner/perception/cell_key.hpp"
+
 namespace ifar::perception {
 namespace {
 
@@ -10,12 +12,6 @@ namespace {
 constexpr double kLargestCellIndex = 2147483647.0;
 // Heights are kept in centimetres in a byte: 2.55 m is above any obstacle band, and stands for "tall".
 constexpr double kTallest = 255.0;
-
-std::uint64_t key(std::int64_t column, std::int64_t row)
-{
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(column)) << 32U) |
-         static_cast<std::uint64_t>(static_cast<std::uint32_t>(row));
-}
 
 }  // namespace
 
@@ -46,7 +42,7 @@ void BackgroundMemory::mark(common::Span<const geometry::Point> points, common::
         std::abs(row) > kLargestCellIndex) {
       continue;
     }
-    Cell& cell = cells_[key(static_cast<std::int64_t>(column), static_cast<std::int64_t>(row))];
+    Cell& cell = cells_[packCellKey(static_cast<std::int64_t>(column), static_cast<std::int64_t>(row))];
     const double height_cm =
         with_heights && std::isfinite(heights_m[index]) ? 100.0 * heights_m[index] : kTallest;
     cell.top_cm = std::max(cell.top_cm, static_cast<std::uint8_t>(std::clamp(height_cm, 0.0, kTallest)));
@@ -109,7 +105,8 @@ int BackgroundMemory::votesAt(const geometry::Point& point) const
       std::abs(row) > kLargestCellIndex) {
     return 0;
   }
-  const auto found = cells_.find(key(static_cast<std::int64_t>(column), static_cast<std::int64_t>(row)));
+  const auto found =
+      cells_.find(packCellKey(static_cast<std::int64_t>(column), static_cast<std::int64_t>(row)));
   return found == cells_.end() ? 0 : found->second.votes;
 }
 

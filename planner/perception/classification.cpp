@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <unordered_map>
 
+#include "planner/perception/cell_key.hpp"
+
 namespace ifar::perception {
 
 namespace {
@@ -13,12 +15,6 @@ struct TagCounts {
   std::uint32_t tagged = 0;
   std::uint32_t untagged = 0;
 };
-
-std::uint64_t cellKey(std::int64_t column, std::int64_t row)
-{
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(column)) << 32U) |
-         static_cast<std::uint32_t>(row);
-}
 
 /// Each point's tag after its neighbourhood's vote (TagReading).
 std::vector<bool> votedTags(common::Span<const WorldPoint> points, const TagReading& reading)
@@ -42,7 +38,7 @@ std::vector<bool> votedTags(common::Span<const WorldPoint> points, const TagRead
       continue;
     }
     const auto [column, row] = cellOf(points[index]);
-    TagCounts& counts = cells[cellKey(column, row)];
+    TagCounts& counts = cells[packCellKey(column, row)];
     (tagged[index] ? counts.tagged : counts.untagged) += 1;
   }
   std::vector<bool> voted = tagged;
@@ -54,7 +50,7 @@ std::vector<bool> votedTags(common::Span<const WorldPoint> points, const TagRead
     TagCounts around;
     for (std::int64_t dc = -1; dc <= 1; ++dc) {
       for (std::int64_t dr = -1; dr <= 1; ++dr) {
-        const auto found = cells.find(cellKey(column + dc, row + dr));
+        const auto found = cells.find(packCellKey(column + dc, row + dr));
         if (found != cells.end()) {
           around.tagged += found->second.tagged;
           around.untagged += found->second.untagged;
@@ -100,10 +96,7 @@ ClassifiedPoints classifyByDetector(common::Span<const WorldPoint> points,
   std::vector<Eigen::AlignedBox2d> boxes;
   boxes.reserve(detector_polygons.size());
   for (const geometry::Polygon& polygon : detector_polygons) {
-    Eigen::AlignedBox2d box;
-    for (const geometry::Point& vertex : polygon) {
-      box.extend(vertex);
-    }
+    const Eigen::AlignedBox2d box = geometry::boundingBox(polygon);
     // Padded so points on a box edge reach the exact (tolerant) polygon test.
     const geometry::Vector padding = geometry::Vector::Constant(geometry::kEpsilon);
     boxes.push_back(box.isEmpty() ? box : Eigen::AlignedBox2d(box.min() - padding, box.max() + padding));

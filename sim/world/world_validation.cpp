@@ -157,18 +157,11 @@ std::vector<WorldProblem> findWorldProblems(const World& world)
   // and, for each, its obstacles before the objects after it.
   std::vector<Eigen::AlignedBox2d> boxes;
   boxes.reserve(placed.size() + world.obstacles.size());
-  const auto boxOf = [](const geometry::Polygon& outline) {
-    Eigen::AlignedBox2d box;
-    for (const geometry::Point& vertex : outline) {
-      box.extend(vertex);
-    }
-    return box;
-  };
   for (const geometry::Polygon& outline : placed) {
-    boxes.push_back(boxOf(outline));
+    boxes.push_back(geometry::boundingBox(outline));
   }
   for (const auto& obstacle : world.obstacles) {
-    boxes.push_back(boxOf(obstacle.outline));
+    boxes.push_back(geometry::boundingBox(obstacle.outline));
   }
   const std::size_t objects = placed.size();
   std::vector<std::pair<std::size_t, std::size_t>> candidates;  // (object, other: obstacles after objects)

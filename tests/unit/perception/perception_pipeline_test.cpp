@@ -254,15 +254,20 @@ TEST(PerceptionPipeline, SimulatedRoomRevolution)
   EXPECT_EQ(polygonsOf(result.layer, ObstacleClass::Movable, BoundaryKind::Outer).size(), 3U);
 }
 
-TEST(PerceptionPipeline, ClosedRoomEnclosesTheVehicleInAHole)
+/// One revolution from the centre of the 32 m room of synthetic::roomWithBoxes with its walls only.
+std::vector<SensorPoint> emptyRoomScan()
 {
-  // Walls only: nothing casts a shadow, so the inflated walls close into a ring around the vehicle.
   std::vector<PrismObstacle> walls = synthetic::roomWithBoxes();
   walls.resize(4);
   synthetic::RevolutionSettings revolution;
   revolution.ceiling_height_m = 3.0;
-  const std::vector<SensorPoint> points =
-      synthetic::simulateRevolution(walls, planarPose(0.0, 0.0, 0.0) * mount(), revolution);
+  return synthetic::simulateRevolution(walls, planarPose(0.0, 0.0, 0.0) * mount(), revolution);
+}
+
+TEST(PerceptionPipeline, ClosedRoomEnclosesTheVehicleInAHole)
+{
+  // Walls only: nothing casts a shadow, so the inflated walls close into a ring around the vehicle.
+  const std::vector<SensorPoint> points = emptyRoomScan();
   PerceptionInput input;
   input.points = points;
   input.mount = mount();
@@ -283,12 +288,7 @@ TEST(PerceptionPipeline, ClosedRoomEnclosesTheVehicleInAHole)
 // passages, a prior map) are drawn.
 TEST(PerceptionPipeline, RememberedWallsWhereTheScanLookedCloseByAreLeftOut)
 {
-  std::vector<PrismObstacle> walls = synthetic::roomWithBoxes();
-  walls.resize(4);
-  synthetic::RevolutionSettings revolution;
-  revolution.ceiling_height_m = 3.0;
-  const std::vector<SensorPoint> points =
-      synthetic::simulateRevolution(walls, planarPose(0.0, 0.0, 0.0) * mount(), revolution);
+  const std::vector<SensorPoint> points = emptyRoomScan();
   const std::vector<geometry::Point> remembered = {geometry::Point(3.05, 0.05), geometry::Point(12.05, 0.05),
                                                    geometry::Point(17.05, 0.05)};
   const std::vector<geometry::Point> kept = {geometry::Point(0.05, 3.05)};
