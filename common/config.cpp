@@ -129,8 +129,9 @@ std::vector<std::string> splitKey(const std::string& key)
 constexpr std::size_t kMaxExpandedNodes = 4'000'000;
 
 /// yaml-cpp keeps both entries of a key given twice in one map and lookups see the first: an edit
-/// appended to a file would be silently ignored, so a repeated key is an error naming its line. Counts
-/// the nodes it walks into `walked` and refuses a document with more than kMaxExpandedNodes.
+/// appended to a file would be silently ignored, so a repeated key is an error naming its line. A list or
+/// a map used as a key (YAML's "? " complex keys) names no setting and is an error as well. Counts the
+/// nodes it walks into `walked` and refuses a document with more than kMaxExpandedNodes.
 void rejectDuplicateKeys(const YAML::Node& node, const std::string& path, const std::string& source_name,
                          std::size_t& walked)
 {
@@ -142,6 +143,11 @@ void rejectDuplicateKeys(const YAML::Node& node, const std::string& path, const 
   if (node.IsMap()) {
     std::set<std::string> seen;
     for (const auto& entry : node) {
+      if (entry.first.IsSequence() || entry.first.IsMap()) {
+        throw ConfigError(source_name + ":" + std::to_string(entry.first.Mark().line + 1) + ": a key " +
+                          (path.empty() ? std::string("at the top level") : "under '" + path + "'") + " is " +
+                          describeValue(entry.first) + ", not a name");
+      }
       const std::string key = entry.first.Scalar();
       const std::string full_path = joinPath(path, key);
       if (!seen.insert(key).second) {

@@ -138,6 +138,20 @@ TEST(Config, AKeyGivenTwiceInOneMapNamesItsSecondLine)
   EXPECT_NO_THROW(ConfigNode::loadString("a:\n  votes: 1\nb:\n  votes: 2\n", "d.yaml"));
 }
 
+// Found by scripts/fuzz-files (launch_file_fuzzer): a "? " complex key got past loading, and reading the
+// keys (rejectUnknownKeys, keys(), acceptAllUnder) threw yaml-cpp's bad conversion instead of a ConfigError.
+TEST(Config, AListOrMapUsedAsAKeyIsAnErrorNamingItsLine)
+{
+  EXPECT_EQ(errorOf([] { ConfigNode::loadString("name: x\n? [a, b]\n: 1\n", "k.yaml"); }),
+            "k.yaml:2: a key at the top level is a list, not a name");
+  EXPECT_EQ(errorOf([] {
+              ConfigNode::loadString("processes:\n  - name: a\n    ? respawn: true\n    : 2\n", "k.yaml");
+            }),
+            "k.yaml:3: a key under 'processes[0]' is a map, not a name");
+  EXPECT_EQ(errorOf([] { ConfigNode::loadString("graph: {? {votes: 1} : 2}\n", "k.yaml"); }),
+            "k.yaml:1: a key under 'graph' is a map, not a name");
+}
+
 TEST(Config, TopLevelMustBeAMap)
 {
   EXPECT_EQ(errorOf([] { ConfigNode::loadString("- 1\n- 2\n", "l.yaml"); }),
