@@ -1,5 +1,6 @@
 #include "common/config.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -169,11 +170,13 @@ void rejectDuplicateKeys(const YAML::Node& node, const std::string& path, const 
 
 ConfigNode::ConfigNode(const YAML::Node& node, std::string path,
                        std::shared_ptr<const std::string> source_name,
-                       std::shared_ptr<std::set<std::string>> read_keys)
+                       std::shared_ptr<std::set<std::string>> read_keys,
+                       std::shared_ptr<std::map<std::string, std::string>> origins)
     : node_(node),
       path_(std::move(path)),
       source_name_(std::move(source_name)),
-      read_keys_(std::move(read_keys))
+      read_keys_(std::move(read_keys)),
+      origins_(std::move(origins))
 {
 }
 
@@ -211,12 +214,65 @@ ConfigNode ConfigNode::loadString(const std::string& text, const std::string& so
   std::size_t walked = 0;
   rejectDuplicateKeys(root, "", source_name, walked);
   return ConfigNode(root, "", std::make_shared<const std::string>(source_name),
-                    std::make_shared<std::set<std::string>>());
+                    std::make_shared<std::set<std::string>>(),
+                    std::make_shared<std::map<std::string, std::string>>());
+}
+
+const std::string& ConfigNode::sourceOf(const std::string& full_path) const
+{
+  const std::string* source = source_name_.get();
+  std::size_t longest = 0;  // the closest set() wins: --set a={b: 1} --set a.b=2 names the second
+  for (const auto& [path, origin] : *origins_) {
+    const bool at_or_under =
+        full_path == path ||
+        (full_path.size() > path.size() && full_path.compare(0, path.size(), path) == 0 &&
+         (full_path[path.size()] == '.' || full_path[path.size()] == '['));
+    if (at_or_under && path.size() > longest) {
+      source = &origin;
+      longest = path.size();
+    }
+  }
+  return *source;
 }
 
 std::string ConfigNode::describe(const std::string& key) const
 {
-  return *source_name_ + ": key '" + joinPath(path_, key) + "'";
+  const std::string full_path = joinPath(path_, key);
+  return sourceOf(full_path) + ": key '" + full_path + "'";
+}
+
+void ConfigNode::set(const std::string& key, const std::string& value_yaml, const std::string& origin)
+{
+  const std::vector<std::string> parts = splitKey(key);
+  if (key.empty() || key.back() == '.' ||
+      std::any_of(parts.begin(), parts.end(), [](const std::string& part) { return part.empty(); })) {
+    throw ConfigError(origin + ": '" + key + "' is not a key path (names joined by '.', e.g. lidar.port)");
+  }
+  YAML::Node value;
+  try {
+    value = YAML::Load(value_yaml);
+  } catch (const YAML::ParserException& error) {
+    throw ConfigError(origin + ": the value is not YAML: " + error.msg);
+  }
+  std::size_t walked = 0;
+  rejectDuplicateKeys(value, joinPath(path_, key), origin, walked);
+  YAML::Node current = node_;
+  std::string full_path = path_;
+  for (std::size_t index = 0; index + 1 < parts.size(); ++index) {
+    YAML::Node next = current[parts[index]];  // a new entry only once it is given a value
+    full_path = joinPath(full_path, parts[index]);
+    if (!next.IsDefined() || next.IsNull()) {
+      next = YAML::Node(YAML::NodeType::Map);
+    } else if (!next.IsMap()) {
+      std::string message = origin;
+      message += ": key '" + full_path + "' holds " + describeValue(next);
+      message += " in " + *source_name_ + ", not a map of settings";
+      throw ConfigError(message);
+    }
+    current.reset(next);  // operator= would overwrite the referenced node's value in the tree
+  }
+  current[parts.back()] = value;
+  (*origins_)[joinPath(path_, key)] = origin;
 }
 
 void ConfigNode::fail(const std::string& key, const std::string& problem) const
@@ -297,7 +353,7 @@ ConfigNode ConfigNode::child(const std::string& key) const
   if (!value.IsMap()) {
     fail(key, "expected a map, got " + describeValue(value));
   }
-  return ConfigNode(value, full_path, source_name_, read_keys_);
+  return ConfigNode(value, full_path, source_name_, read_keys_, origins_);
 }
 
 std::vector<ConfigNode> ConfigNode::sequence(const std::string& key) const
@@ -314,7 +370,7 @@ std::vector<ConfigNode> ConfigNode::sequence(const std::string& key) const
   for (std::size_t index = 0; index < value.size(); ++index) {
     const std::string element_path = full_path + "[" + std::to_string(index) + "]";
     read_keys_->insert(element_path);
-    elements.push_back(ConfigNode(value[index], element_path, source_name_, read_keys_));
+    elements.push_back(ConfigNode(value[index], element_path, source_name_, read_keys_, origins_));
   }
   return elements;
 }
@@ -359,7 +415,7 @@ void ConfigNode::rejectUnknownKeys() const
   collectUnread(node_, path_, unread);
   if (!unread.empty()) {
     std::string message =
-        *source_name_ + ": key '" + unread.front() + "': unknown key (no setting has this name";
+        sourceOf(unread.front()) + ": key '" + unread.front() + "': unknown key (no setting has this name";
     if (unread.size() > 1) {
       message += "; " + std::to_string(unread.size() - 1) + " more unknown key(s)";
     }

@@ -12,6 +12,7 @@
 //
 // A ConfigNode is a cheap handle; children share the record of which keys were read.
 
+#include <map>
 #include <memory>
 #include <set>
 #include <stdexcept>
@@ -76,16 +77,28 @@ class ConfigNode {
   /// Throws ConfigError "<file>: key '<path>': <problem>".
   [[noreturn]] void fail(const std::string& key, const std::string& problem) const;
 
+  /// Replaces the value at a dotted key path with `value_yaml` (YAML text: a scalar, or a flow list or
+  /// map; "" is null, which reads as absent), making missing maps on the way: an override from the
+  /// command line, applied before anything reads the config, so the key is then read and checked like the
+  /// file's own. Messages about the key or anything under it name `origin` instead of the file, e.g.
+  /// "--set lidar.port=70000: key 'lidar.port': must be in [1, 65535], got 70000". Throws ConfigError
+  /// naming `origin` when the value is not YAML or a key on the way holds something other than a map.
+  void set(const std::string& key, const std::string& value_yaml, const std::string& origin);
+
  private:
   ConfigNode(const YAML::Node& node, std::string path, std::shared_ptr<const std::string> source_name,
-             std::shared_ptr<std::set<std::string>> read_keys);
+             std::shared_ptr<std::set<std::string>> read_keys,
+             std::shared_ptr<std::map<std::string, std::string>> origins);
   YAML::Node lookup(const std::string& key, std::string& full_path) const;
+  /// Where the key at `full_path` came from: the `origin` of a set() at or above it, else the file.
+  const std::string& sourceOf(const std::string& full_path) const;
   void collectUnread(const YAML::Node& node, const std::string& path, std::vector<std::string>& out) const;
 
   YAML::Node node_;
   std::string path_;
   std::shared_ptr<const std::string> source_name_;
   std::shared_ptr<std::set<std::string>> read_keys_;
+  std::shared_ptr<std::map<std::string, std::string>> origins_;  // full key path -> set()'s origin
 };
 
 }  // namespace ifar::common

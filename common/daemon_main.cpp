@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "common/command_line.hpp"
 #include "common/logging.hpp"
@@ -37,6 +38,17 @@ int printConfig(const DaemonDescription& description, const ConfigNode& config)
   config.rejectUnknownKeys();
   std::cout << text << std::flush;
   return 0;
+}
+
+/// One --set KEY=VALUE applied to `config`; ConfigError naming the option when it is not KEY=VALUE.
+void applySetting(ConfigNode& config, const std::string& assignment)
+{
+  const std::size_t equals = assignment.find('=');
+  const std::string origin = "--set " + assignment;
+  if (equals == std::string::npos) {
+    throw ConfigError(origin + ": expected KEY=VALUE, e.g. --set lidar.port=2400");
+  }
+  config.set(assignment.substr(0, equals), assignment.substr(equals + 1), origin);
 }
 
 }  // namespace
@@ -73,6 +85,7 @@ int runDaemon(int argc, char** argv, const DaemonDescription& description,
   std::string log_level;
   std::string log_directory = "logs";
   std::string lcm_url;
+  std::vector<std::string> settings;
   bool print_config = false;
   app.add_option("--config", config_path, "YAML configuration file")->capture_default_str();
   app.add_flag("--print-config", print_config,
@@ -82,6 +95,11 @@ int runDaemon(int argc, char** argv, const DaemonDescription& description,
   app.add_option("--log-dir", log_directory, "folder for the rotating log file (\"\" = console only)")
       ->capture_default_str();
   app.add_option("--lcm-url", lcm_url, "LCM URL (overrides the config's lcm_url and LCM_DEFAULT_URL)");
+  app.add_option("--set", settings,
+                 "set a key of the config as if the file said so, checked like the file's keys; KEY is a "
+                 "dotted path, VALUE YAML (repeatable), e.g. --set lidar.port=2400")
+      ->type_name("KEY=VALUE")
+      ->allow_extra_args(false);
   if (add_options) {
     add_options(app);
   }
@@ -93,6 +111,9 @@ int runDaemon(int argc, char** argv, const DaemonDescription& description,
   try {
     ConfigNode config = config_path.empty() ? ConfigNode::loadString("", "(no configuration file)")
                                             : ConfigNode::loadFile(config_path);
+    for (const std::string& assignment : settings) {
+      applySetting(config, assignment);
+    }
     if (print_config) {
       return printConfig(description, config);
     }

@@ -1,8 +1,11 @@
 #pragma once
 // The start-up every daemon shares: --help, --config FILE, --log-level LEVEL, --lcm-url URL,
+// --set KEY=VALUE (repeatable: a key of the config replaced before the daemon reads it, so it is checked
+// like the file's own; a launch file gives each stack its own ports this way, e.g. --set lidar.port=23781),
 // --print-config (the effective configuration as YAML with each key's meaning, then exit 0); the config
-// loaded strictly; the named logger made; bad config reported as "error: <file>: key '<k>': ..." and
-// exit code 2; any escaping exception logged and exit code 1.
+// loaded strictly; the named logger made; bad config reported as "error: <file>: key '<k>': ..." (or
+// "error: --set <k>=<v>: key '<k>': ..." for a --set one) and exit code 2; any escaping exception logged and
+// exit code 1.
 //
 //   int main(int argc, char** argv) {
 //     return ifar::common::runDaemon(argc, argv, {"planner", "DV-graph planner", "config/planner.yaml"},

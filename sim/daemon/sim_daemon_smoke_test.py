@@ -10,15 +10,12 @@ import tempfile
 import time
 
 SOURCE = os.environ.get("IFAR_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
-UDP_PORT = 23968
+UDP_PORT = 23713  # this test's own lidar port, next to its LCM port
 LCM_URL = "udpm://239.255.76.67:7713?ttl=0"
 
 
 def main():
     with tempfile.TemporaryDirectory() as folder:
-        config = os.path.join(folder, "sim.yaml")
-        with open(os.path.join(SOURCE, "config", "sim.yaml")) as original, open(config, "w") as copy:
-            copy.write(original.read().replace("port: 2368", "port: %d" % UDP_PORT))
         log = os.path.join(folder, "sim.lcmlog")
         env = dict(os.environ, LCM_DEFAULT_URL=LCM_URL)
         receiver = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
@@ -27,8 +24,8 @@ def main():
         logger = subprocess.Popen(["lcm-logger", "--lcm-url=" + LCM_URL, "-f", log],
                                   stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
         time.sleep(0.3)
-        simulator = subprocess.Popen(["ifar-sim", "--config", config, "--builtin", "push_light"], cwd=SOURCE,
-                                     env=env)
+        simulator = subprocess.Popen(["ifar-sim", "--set", "lidar.port=%d" % UDP_PORT, "--builtin", "push_light",
+                                      "--log-dir", folder], cwd=SOURCE, env=env)
         packets = []
         first = last = None
         deadline = time.time() + 3.0

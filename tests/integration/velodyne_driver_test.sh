@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Integration test of ifar-velodyne-driver over a real LCM bus (distinct multicast port, ttl=0):
+# Integration test of ifar-velodyne-driver over a real LCM bus (its own multicast port, ttl=0, and data port):
 #  1. --pcap replay of the real VLP-16 capture: lcm-logger must record all 84 packets on VELODYNE_PACKET,
 #     byte for byte, and the final VELODYNE_STATUS must count 84 published and 0 bad.
 #  2. live UDP: garbage datagrams and valid packets sent to the driver's port; it must keep running,
@@ -20,6 +20,7 @@ if [[ ! -f "$capture" ]]; then
   exit 77
 fi
 export LCM_DEFAULT_URL="udpm://239.255.76.67:7711?ttl=0"
+port=23711  # this test's own data port (--set data_port), next to its LCM port
 work="$(mktemp -d)"
 pids=()
 cleanup() {
@@ -85,12 +86,11 @@ print("pcap replay: 84 packets arrived unchanged; status", status)
 PYTHON
 
 echo "== 2. live UDP with bad input"
-port=$((20000 + RANDOM % 20000))
-sed -e "s/^data_port: .*/data_port: $port/" "$config" > "$work/velodyne.yaml"
 lcm-logger -f "$work/live.lcm" >/dev/null 2>&1 &
 logger_pid=$!
 pids+=($logger_pid)
-ifar-velodyne-driver --config "$work/velodyne.yaml" --log-dir "" --log-level debug > "$work/driver.log" 2>&1 &
+ifar-velodyne-driver --config "$config" --set data_port=$port --log-dir "" --log-level debug \
+  > "$work/driver.log" 2>&1 &
 driver_pid=$!
 pids+=($driver_pid)
 sleep 1
@@ -153,17 +153,15 @@ assert p99 < 50000, "p99 latency above 50 ms: the driver is stalling"
 PYTHON
 
 echo "== 3. isolation"
-port=$((20000 + RANDOM % 20000))
-sed -e "s/^data_port: .*/data_port: $port/" -e 's/^sensor_address: .*/sensor_address: "127.0.0.2"/' "$config" \
-  > "$work/velodyne-own.yaml"
+own=(--config "$config" --set data_port=$port --set sensor_address=127.0.0.2 --log-dir "")
 lcm-logger -f "$work/own.lcm" >/dev/null 2>&1 &
 logger_pid=$!
 pids+=($logger_pid)
-ifar-velodyne-driver --config "$work/velodyne-own.yaml" --log-dir "" > "$work/own.log" 2>&1 &
+ifar-velodyne-driver "${own[@]}" > "$work/own.log" 2>&1 &
 driver_pid=$!
 pids+=($driver_pid)
 sleep 1
-if ifar-velodyne-driver --config "$work/velodyne-own.yaml" --log-dir "" > "$work/second.log" 2>&1; then
+if ifar-velodyne-driver "${own[@]}" > "$work/second.log" 2>&1; then
   echo "FAIL: a second driver started on port $port"; exit 1
 fi
 grep -q "cannot bind 0.0.0.0:$port: Address already in use" "$work/second.log" \

@@ -95,7 +95,8 @@ const char* const kSeparateOnPurpose = R"(## One home per fact
     `perception.layer_size_m` twice the lidar's range: both are stated where they are used.
   - The VLP-16 data port appears three times (sim.yaml `lidar.port`, velodyne.yaml `data_port`,
     planner.yaml `daemon.data_port`): three processes' views of one UDP port; the simulator stands in for
-    the sensor, whose port is set in the sensor itself.
+    the sensor, whose port is set in the sensor itself. config/launch/sim_demo.yaml gives all three the
+    value of IFAR_LIDAR_PORT with `--set` (every daemon takes `--set KEY=VALUE` over its file's key).
 )";
 
 std::string document()

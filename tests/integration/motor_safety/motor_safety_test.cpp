@@ -128,12 +128,6 @@ class MotorSafetyTest : public ::testing::Test {
     folder_ = directory_->path().string();
     ASSERT_FALSE(folder_.empty());
     std::ofstream(folder_ + "/hall.yaml") << kWorld;
-    // The project's sim.yaml without the lidar (no UDP packets to port 2368 from this test).
-    std::string sim = readText(std::string(IFAR_SOURCE_DIR) + "/config/sim.yaml");
-    const std::size_t lidar = sim.find("lidar:\n  enabled: true");
-    ASSERT_NE(lidar, std::string::npos) << "config/sim.yaml changed: update this test";
-    sim.replace(lidar, 22, "lidar:\n  enabled: false");
-    std::ofstream(folder_ + "/sim.yaml") << sim;
   }
   void TearDown() override
   {
@@ -154,8 +148,9 @@ class MotorSafetyTest : public ::testing::Test {
     lcm_->subscribe("CAN_VEHICLE", &BusRecord::onFrame, &record_);
     lcm_->subscribe("SIM_GROUND_TRUTH", &BusRecord::onTruth, &record_);
     const std::string bin = std::string(IFAR_BINARY_DIR) + "/bin/";
+    // The project's sim.yaml without the lidar: no VLP-16 packets from this test.
     sim_ = std::make_unique<ChildProcess>(
-        std::vector<std::string>{bin + "ifar-sim", folder_ + "/hall.yaml", "--config", folder_ + "/sim.yaml",
+        std::vector<std::string>{bin + "ifar-sim", folder_ + "/hall.yaml", "--set", "lidar.enabled=false",
                                  "--lcm-url", url, "--log-dir", folder_},
         ChildOptions{folder_ + "/sim.out", IFAR_SOURCE_DIR, {}});
     motor_ = std::make_unique<ChildProcess>(

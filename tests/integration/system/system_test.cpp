@@ -1,8 +1,10 @@
 // The whole stack as real processes over UDP multicast (issue #7 checks): `ifar launch
 // config/launch/sim_demo.yaml` starts ifar-sim, the Velodyne, force and motor drivers, the planner, the
 // executive, lcm-logger and a goal sender that ends the launch when the executive reports the goal
-// reached. Each test runs on its own LCM port and log folder; the tests run one at a time (RUN_SERIAL)
-// because the stack runs in real time and the simulator sends its VLP-16 packets to UDP port 2368.
+// reached. Each test runs on its own LCM port, lidar UDP port (IFAR_LIDAR_PORT: 237NN next to LCM port
+// 77NN) and log folder, so no stack hears another's; the tests still run one at a time (RUN_SERIAL): each
+// stack runs in real time with about ten processes, and two at once on a two-core machine would stretch
+// the stop latencies they measure.
 
 #include <dirent.h>
 #include <signal.h>
@@ -63,16 +65,16 @@ std::string readText(const std::string& path)
 }
 
 /// The launched stack: `ifar-launch config/launch/sim_demo.yaml` from the repository, with the launch
-/// file's variables set (and IFAR_LOG_DIR the test's folder); stopped with SIGTERM (then SIGKILL) if
-/// still running when destroyed.
+/// file's variables set (IFAR_LOG_DIR the test's folder, IFAR_LIDAR_PORT `lidar_port`); stopped with
+/// SIGTERM (then SIGKILL) if still running when destroyed.
 class LaunchedStack {
  public:
-  LaunchedStack(const std::string& folder, const std::string& lcm_url,
+  LaunchedStack(const std::string& folder, const std::string& lcm_url, int lidar_port,
                 std::map<std::string, std::string> variables, double duration_s)
       : folder_(folder),
         launch_({std::string(IFAR_BINARY_DIR) + "/bin/ifar-launch", "config/launch/sim_demo.yaml",
                  "--duration", std::to_string(duration_s), "--no-colour"},
-                optionsFor(folder, lcm_url, std::move(variables)))
+                optionsFor(folder, lcm_url, lidar_port, std::move(variables)))
   {
   }
 
@@ -121,6 +123,7 @@ class LaunchedStack {
 
  private:
   static ifar::test_support::ChildOptions optionsFor(const std::string& folder, const std::string& lcm_url,
+                                                     int lidar_port,
                                                      std::map<std::string, std::string> variables)
   {
     // Every variable of the launch file is set, so none leaks in from the environment of the test.
@@ -130,6 +133,7 @@ class LaunchedStack {
                                                          {"IFAR_GOAL_WAIT_S", "170"}};
     variables.insert(defaults.begin(), defaults.end());  // keeps the test's own values
     variables["IFAR_LOG_DIR"] = folder;
+    variables["IFAR_LIDAR_PORT"] = std::to_string(lidar_port);
     variables["LCM_DEFAULT_URL"] = lcm_url;
     // The launch file and the configs it names are relative to the repository.
     return ifar::test_support::ChildOptions{folder + "/launch.out", IFAR_SOURCE_DIR, std::move(variables)};
@@ -268,7 +272,8 @@ class SystemTest : public ::testing::Test {
 
 TEST_F(SystemTest, DemoArrivesAfterPushingTheBox)
 {
-  LaunchedStack stack(folder_, "udpm://239.255.76.67:7781?ttl=0", {{"IFAR_GOAL_WAIT_S", "150"}}, 170.0);
+  LaunchedStack stack(folder_, "udpm://239.255.76.67:7781?ttl=0", 23781, {{"IFAR_GOAL_WAIT_S", "150"}},
+                      170.0);
   ASSERT_TRUE(stack.started());
   ASSERT_TRUE(stack.waitFor(185.0)) << "the launch did not end";
   EXPECT_EQ(stack.exitCode(), 0) << "goal not reached:\n" << stack.launchOutput();
@@ -282,7 +287,7 @@ TEST_F(SystemTest, DemoArrivesAfterPushingTheBox)
 TEST_F(SystemTest, HeavyBoxIsMarkedUnpushableAndTheVehicleGoesAround)
 {
   const std::string world = std::string(IFAR_SOURCE_DIR) + "/config/worlds/demo_room_heavy.yaml";
-  LaunchedStack stack(folder_, "udpm://239.255.76.67:7782?ttl=0",
+  LaunchedStack stack(folder_, "udpm://239.255.76.67:7782?ttl=0", 23782,
                       {{"IFAR_WORLD", world}, {"IFAR_GOAL_WAIT_S", "200"}}, 220.0);
   ASSERT_TRUE(stack.started());
   ASSERT_TRUE(stack.waitFor(235.0)) << "the launch did not end";
@@ -365,6 +370,7 @@ struct StopWatcher {
 TEST_F(SystemTest, KillingThePlannerStopsTheVehicleAndTheRunCompletesAfterRespawn)
 {
   const std::string url = "udpm://239.255.76.67:7783?ttl=0";
+  const int lidar_port = 23783;
   lcm::LCM bus(url);
   if (!bus.good()) {
     GTEST_SKIP() << "LCM cannot start on " << url;
@@ -372,7 +378,7 @@ TEST_F(SystemTest, KillingThePlannerStopsTheVehicleAndTheRunCompletesAfterRespaw
   StopWatcher watcher;
   bus.subscribe("SIM_GROUND_TRUTH", &StopWatcher::onTruth, &watcher);
   bus.subscribe("VELOCITY_CMD", &StopWatcher::onCommand, &watcher);
-  LaunchedStack stack(folder_, url, {{"IFAR_GOAL_WAIT_S", "170"}}, 190.0);
+  LaunchedStack stack(folder_, url, lidar_port, {{"IFAR_GOAL_WAIT_S", "170"}}, 190.0);
   ASSERT_TRUE(stack.started());
 
   const std::optional<double> driving = watcher.waitUntilDriving(bus, 60.0);
@@ -430,6 +436,7 @@ double travelledBetween(const StopWatcher& watcher, std::int64_t from_utime, std
 TEST_F(SystemTest, AFrozenLidarDriverStopsTheVehicleAndItDrivesOnWhenTheLidarIsBack)
 {
   const std::string url = "udpm://239.255.76.67:7784?ttl=0";
+  const int lidar_port = 23784;
   lcm::LCM bus(url);
   if (!bus.good()) {
     GTEST_SKIP() << "LCM cannot start on " << url;
@@ -437,7 +444,7 @@ TEST_F(SystemTest, AFrozenLidarDriverStopsTheVehicleAndItDrivesOnWhenTheLidarIsB
   StopWatcher watcher;
   bus.subscribe("SIM_GROUND_TRUTH", &StopWatcher::onTruth, &watcher);
   bus.subscribe("VELOCITY_CMD", &StopWatcher::onCommand, &watcher);
-  LaunchedStack stack(folder_, url, {{"IFAR_GOAL_WAIT_S", "170"}}, 190.0);
+  LaunchedStack stack(folder_, url, lidar_port, {{"IFAR_GOAL_WAIT_S", "170"}}, 190.0);
   ASSERT_TRUE(stack.started());
   const std::optional<double> driving = watcher.waitUntilDriving(bus, 60.0);
   ASSERT_TRUE(driving.has_value()) << "the vehicle never drove:\n" << stack.launchOutput();

@@ -230,5 +230,61 @@ TEST(ConfigAliases, ModestAliasesStillLoad)
   EXPECT_DOUBLE_EQ(node.required<double>("speed"), 2.5);
 }
 
+TEST(ConfigSet, ReplacesAValueAndMakesTheMapsOnTheWay)
+{
+  auto root = ConfigNode::loadString(kPlanner, "planner.yaml");
+  root.set("graph.votes", "12", "--set graph.votes=12");
+  root.set("graph.weights", "[3, 4.5]", "--set graph.weights=[3, 4.5]");
+  root.set("lidar.port", "2400", "--set lidar.port=2400");
+  EXPECT_EQ(root.required<int>("graph.votes"), 12);
+  EXPECT_EQ(root.required<std::vector<double>>("graph.weights"), (std::vector<double>{3.0, 4.5}));
+  EXPECT_DOUBLE_EQ(root.required<double>("graph.radius"), 0.5);  // its neighbours stay
+  EXPECT_EQ(root.child("lidar").required<int>("port"), 2400);
+  EXPECT_EQ(root.sequence("layers").size(), 2U);
+}
+
+TEST(ConfigSet, MessagesAboutASetKeyNameWhereItCameFrom)
+{
+  auto root = ConfigNode::loadString("rate_hz: 2.5\ngraph: {votes: 10, radius: 0.5}\n", "planner.yaml");
+  root.set("graph.votes", "many", "--set graph.votes=many");
+  EXPECT_EQ(errorOf([&] { root.child("graph").required<int>("votes"); }),
+            "--set graph.votes=many: key 'graph.votes': expected integer, got 'many'");
+  EXPECT_EQ(root.child("graph").describe("radius"), "planner.yaml: key 'graph.radius'");
+
+  root.set("graph.vots", "3", "--set graph.vots=3");
+  root.required<double>("rate_hz");
+  root.required<double>("graph.radius");
+  EXPECT_EQ(errorOf([&] { root.rejectUnknownKeys(); }),
+            "--set graph.vots=3: key 'graph.vots': unknown key (no setting has this name)");
+}
+
+TEST(ConfigSet, TheClosestSetNamesAKey)
+{
+  auto root = ConfigNode::loadString("graph: {votes: 10}\n", "planner.yaml");
+  root.set("graph", "{votes: 3, radius: 0.5}", "first");
+  root.set("graph.votes", "x", "second");
+  EXPECT_EQ(root.describe("graph.radius"), "first: key 'graph.radius'");
+  EXPECT_EQ(root.describe("graph.votes"), "second: key 'graph.votes'");
+  EXPECT_EQ(root.describe("graphs"), "planner.yaml: key 'graphs'");
+}
+
+TEST(ConfigSet, RefusesABadKeyPathOrValueNamingWhereItCameFrom)
+{
+  auto root = ConfigNode::loadString(kPlanner, "planner.yaml");
+  EXPECT_EQ(errorOf([&] { root.set("rate_hz.max", "1", "origin"); }),
+            "origin: key 'rate_hz' holds '2.5' in planner.yaml, not a map of settings");
+  EXPECT_EQ(errorOf([&] { root.set("layers.cell", "1", "origin"); }),
+            "origin: key 'layers' holds a list in planner.yaml, not a map of settings");
+  for (const char* key : {"", "graph..votes", ".graph", "graph."}) {
+    EXPECT_EQ(errorOf([&] { root.set(key, "1", "origin"); }),
+              std::string("origin: '") + key + "' is not a key path (names joined by '.', e.g. lidar.port)");
+  }
+  EXPECT_NE(errorOf([&] { root.set("graph.votes", "[1", "origin"); }).find("origin: the value is not YAML: "),
+            std::string::npos);
+  EXPECT_NE(errorOf([&] { root.set("graph", "{a: 1, a: 2}", "origin"); }).find("given twice"),
+            std::string::npos);
+  EXPECT_EQ(root.required<int>("graph.votes"), 10);  // nothing changed
+}
+
 }  // namespace
 }  // namespace ifar::common

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "common/daemon_main.hpp"
@@ -32,8 +33,9 @@ class DaemonMain : public ::testing::Test {
     return path.string();
   }
 
-  /// Runs runDaemon with `arguments` (after the program name, console logging only); the body reads
-  /// nothing but what runDaemon reads, checks for unknown keys and records the URL it was given.
+  /// Runs runDaemon with `arguments` (after the program name, console logging only); the body reads one
+  /// key of its own (`rate_hz`, optional, greater than zero), checks for unknown keys and records the URL
+  /// it was given and the rate.
   int run(std::vector<std::string> arguments)
   {
     arguments.insert(arguments.begin(), {"ifar-test", "--log-dir", ""});
@@ -44,6 +46,7 @@ class DaemonMain : public ::testing::Test {
     return ifar::common::runDaemon(static_cast<int>(argv.size()), argv.data(),
                                    {"daemon-main-test", "test daemon", "", {}},
                                    [this](ifar::common::DaemonContext& context) {
+                                     rate_ = context.config.optionalPositive("rate_hz", 2.5);
                                      context.config.rejectUnknownKeys();
                                      url_ = context.lcm_url;
                                      return 0;
@@ -51,9 +54,10 @@ class DaemonMain : public ::testing::Test {
   }
 
   /// runDaemon with --print-config and a daemon whose settings are one key, `rate_hz`; stdout captured.
-  int printConfig(const std::string& config, std::string& printed)
+  int printConfig(const std::string& config, std::string& printed, const std::vector<std::string>& extra = {})
   {
     std::vector<std::string> arguments = {"ifar-test", "--log-dir", "", "--config", config, "--print-config"};
+    arguments.insert(arguments.end(), extra.begin(), extra.end());
     std::vector<char*> argv;
     for (std::string& argument : arguments) {
       argv.push_back(argument.data());
@@ -75,6 +79,7 @@ class DaemonMain : public ::testing::Test {
 
   fs::path directory_;
   std::string url_ = "(not recorded)";
+  double rate_ = 0.0;
 };
 
 TEST_F(DaemonMain, PrintConfigPrintsTheCommonKeysAndTheDaemonsThenExitsWithoutRunning)
@@ -133,6 +138,53 @@ TEST_F(DaemonMain, ABadLogLevelNamesWhereItCameFrom)
   EXPECT_EQ(run({"--config", good, "--log-level", "chatty"}), 2);
   EXPECT_NE(::testing::internal::GetCapturedStderr().find("--log-level: unknown log level 'chatty'"),
             std::string::npos);
+}
+
+// A launch file gives each stack its own ports this way, without a copy of the config.
+TEST_F(DaemonMain, SetReplacesAKeyOfTheConfigOrAddsOneTheFileLacks)
+{
+  const std::string config = writeConfig(std::string("lcm_url: ") + kConfigured + "\nrate_hz: 5\n");
+  EXPECT_EQ(
+      run({"--config", config, "--set", "rate_hz=7.5", "--set", std::string("lcm_url=") + kCommandLine}), 0);
+  EXPECT_EQ(rate_, 7.5);
+  EXPECT_EQ(url_, kCommandLine);
+
+  EXPECT_EQ(run({"--set", "rate_hz=4", "--set", "log_level=warn"}), 0);  // no configuration file at all
+  EXPECT_EQ(rate_, 4.0);
+}
+
+TEST_F(DaemonMain, ASetValueIsCheckedLikeTheFilesAndTheMessageNamesTheOption)
+{
+  const std::string config = writeConfig("rate_hz: 5\nlog_level: warn\n");
+  for (const auto& [assignment, expected] : std::vector<std::pair<std::string, std::string>>{
+           {"rate_hz=-1", "--set rate_hz=-1: key 'rate_hz': must be greater than zero"},
+           {"rate_hz=fast", "--set rate_hz=fast: key 'rate_hz': expected number, got 'fast'"},
+           {"rate_hx=1", "--set rate_hx=1: key 'rate_hx': unknown key"},
+           {"rate_hz", "--set rate_hz: expected KEY=VALUE"},
+           {"rate_hz.max=1", "--set rate_hz.max=1: key 'rate_hz' holds '5' in " + config + ", not a map"},
+           {"log_level=loud", "--set log_level=loud: key 'log_level': unknown log level 'loud'"}}) {
+    ::testing::internal::CaptureStderr();
+    EXPECT_EQ(run({"--config", config, "--set", assignment}), 2) << assignment;
+    const std::string error = ::testing::internal::GetCapturedStderr();
+    EXPECT_NE(error.find("ifar-daemon-main-test: error: " + expected), std::string::npos) << error;
+    EXPECT_EQ(url_, "(not recorded)");
+  }
+}
+
+// One value per --set: an argument after it is not swallowed as a second one.
+TEST_F(DaemonMain, SetTakesOneValueEachTime)
+{
+  ::testing::internal::CaptureStderr();
+  EXPECT_EQ(run({"--set", "rate_hz=7", "stray"}), 2);
+  EXPECT_NE(::testing::internal::GetCapturedStderr().find("stray"), std::string::npos);
+  EXPECT_EQ(url_, "(not recorded)");
+}
+
+TEST_F(DaemonMain, PrintConfigShowsTheSetValues)
+{
+  std::string printed;
+  EXPECT_EQ(printConfig(writeConfig("rate_hz: 5\n"), printed, {"--set", "rate_hz=7"}), 0);
+  EXPECT_NE(printed.find("\nrate_hz: 7.000000\n"), std::string::npos) << printed;
 }
 
 }  // namespace
