@@ -19,8 +19,8 @@ double millisecondsSince(Clock::time_point start)
 
 }  // namespace
 
-InteractionStage::InteractionStage(const interaction::InteractionSettings& settings)
-    : settings_(settings), cache_(settings)
+InteractionStage::InteractionStage(const interaction::InteractionSettings& settings, double outline_cell_m)
+    : settings_(settings), cache_(settings, outline_cell_m)
 {
 }
 

@@ -48,7 +48,8 @@ enum class AffordanceOutcome { Updated, Removed, UnknownObject };
 
 class InteractionStage {
  public:
-  explicit InteractionStage(const interaction::InteractionSettings& settings);
+  /// `outline_cell_m`: the raster cell the objects' and obstacles' outlines are traced on.
+  InteractionStage(const interaction::InteractionSettings& settings, double outline_cell_m);
 
   /// After the merge: keeps the waypoints alive, plans within the budget, updates the graph.
   InteractionStats update(const InteractionFrame& frame, const graph::ObstacleSet& obstacles,

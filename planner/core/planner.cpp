@@ -85,7 +85,7 @@ constexpr double kObjectBesidePassageM = 0.15;
 Planner::Planner(const PlannerSettings& settings)
     : settings_(completed(settings)),
       tracker_(trackerSettings(settings_)),
-      interaction_(settings_.interaction),
+      interaction_(settings_.interaction, settings_.perception.cell_size_m),
       background_memory_(settings_.perception.cell_size_m, settings_.perception.background_votes),
       sealed_(settings_.perception.cell_size_m),
       known_(settings_.perception.cell_size_m),

@@ -22,12 +22,8 @@ std::size_t foundCount(const ObjectInteractions& interactions)
 
 }  // namespace
 
-InteractionCache::InteractionCache(const InteractionSettings& settings, double tolerance_m,
-                                   double area_tolerance_m2, double keep_radius_m)
-    : settings_(settings),
-      tolerance_m_(tolerance_m),
-      area_tolerance_m2_(area_tolerance_m2),
-      keep_radius_m_(keep_radius_m)
+InteractionCache::InteractionCache(const InteractionSettings& settings, double outline_cell_m)
+    : settings_(settings), outline_cell_m_(outline_cell_m)
 {
 }
 
@@ -44,6 +40,7 @@ InteractionCache::Signature InteractionCache::signatureOf(const LocalScene& scen
   const Polygon& object = scene.movable[movable_index];
   signature.object_centroid = geometry::centroid(object);
   signature.object_area = geometry::area(object);
+  signature.object_perimeter = geometry::perimeter(object);
   if (window) {
     signature.window = *window;
   } else {
@@ -86,17 +83,20 @@ InteractionCache::Signature InteractionCache::signatureOf(const LocalScene& scen
 
 bool InteractionCache::sameSurroundings(const Signature& first, const Signature& second) const
 {
-  return std::abs(first.neighbour_area - second.neighbour_area) <= area_tolerance_m2_ &&
-         (first.neighbour_centroid - second.neighbour_centroid).norm() <= tolerance_m_ &&
+  return std::abs(first.neighbour_area - second.neighbour_area) <= kAreaToleranceM2 &&
+         (first.neighbour_centroid - second.neighbour_centroid).norm() <= shiftTolerance() &&
          first.physics.ground_friction == second.physics.ground_friction &&
          first.physics.mass_kg == second.physics.mass_kg;
 }
 
 bool InteractionCache::same(const Signature& first, const Signature& second) const
 {
-  return (first.object_centroid - second.object_centroid).norm() <= tolerance_m_ &&
+  // Half a cell along the outline: what the raster alone changes of the object's area.
+  const double raster_band_m2 =
+      0.5 * outline_cell_m_ * std::max(first.object_perimeter, second.object_perimeter);
+  return (first.object_centroid - second.object_centroid).norm() <= shiftTolerance() &&
          std::abs(first.object_area - second.object_area) <=
-             0.1 * std::max(first.object_area, second.object_area) &&
+             std::max(0.1 * std::max(first.object_area, second.object_area), raster_band_m2) &&
          sameSurroundings(first, second);
 }
 
@@ -109,7 +109,7 @@ bool InteractionCache::keepsPlans(const Entry& entry, const LocalScene& scene, s
   // loses part of its outline whenever the vehicle comes up to the door's light box; were that a change
   // of surroundings, the route would swing between the push through the door and the way round).
   return entry.valid && foundCount(fresh) < foundCount(entry.interactions) &&
-         (signature.object_centroid - entry.planned.object_centroid).norm() <= keep_radius_m_ &&
+         (signature.object_centroid - entry.planned.object_centroid).norm() <= kKeepRadiusM &&
          sameSurroundings(entry.planned, signatureOf(scene, movable_index, signature.physics,
                                                      entry.planned.window, Neighbours::StaticOnly));
 }

@@ -3,6 +3,7 @@
 // (physics estimate) changed. The planner daemon keeps one cache and asks it every frame, within its
 // per-frame budget; a cached answer costs a signature comparison.
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <map>
@@ -15,10 +16,14 @@ namespace ifar::interaction {
 
 class InteractionCache {
  public:
-  /// Changes smaller than `tolerance_m` (object and obstacle centroid shifts) and `area_tolerance_m2`
-  /// (obstacle area in the analysis window) reuse the plans.
-  explicit InteractionCache(const InteractionSettings& settings, double tolerance_m = 0.1,
-                            double area_tolerance_m2 = 0.5, double keep_radius_m = 0.3);
+  /// Centroid shifts of the object and its surroundings within kShiftToleranceM or a cell, object area
+  /// changes within a tenth or the raster's band, and changes of the surroundings' area within
+  /// kAreaToleranceM2 reuse the plans. `outline_cell_m`: the side of the raster cells the outlines were
+  /// traced on (0: exact outlines). Each side of a traced outline can move by a cell from one scan to the
+  /// next with nothing moved (a return's range noise or the pose's jitter puts it over a cell border), so
+  /// a centroid shift within a cell and an area change within half a cell along the outline are the
+  /// raster's, not the object's.
+  explicit InteractionCache(const InteractionSettings& settings, double outline_cell_m = 0.0);
 
   /// True when interactionsFor() would have to plan (unknown object, moved, new surroundings or physics).
   bool stale(std::int64_t object_id, const LocalScene& scene, std::size_t movable_index,
@@ -49,6 +54,7 @@ class InteractionCache {
   struct Signature {
     geometry::Point object_centroid = geometry::Point::Zero();
     double object_area = 0.0;
+    double object_perimeter = 0.0;
     double neighbour_area = 0.0;
     geometry::Point neighbour_centroid = geometry::Point::Zero();
     ObjectPhysics physics;
@@ -79,10 +85,15 @@ class InteractionCache {
   bool keepsPlans(const Entry& entry, const LocalScene& scene, std::size_t movable_index,
                   const Signature& signature, const ObjectInteractions& fresh) const;
 
+  static constexpr double kShiftToleranceM = 0.1;
+  static constexpr double kAreaToleranceM2 = 0.5;
+  /// A view with fewer pushes keeps the plans in hand while the object stays this close (keepsPlans).
+  static constexpr double kKeepRadiusM = 0.3;
+
+  double shiftTolerance() const { return std::max(kShiftToleranceM, outline_cell_m_); }
+
   InteractionSettings settings_;
-  double tolerance_m_;
-  double area_tolerance_m2_;
-  double keep_radius_m_;
+  double outline_cell_m_;
   std::map<std::int64_t, Entry> entries_;
 };
 

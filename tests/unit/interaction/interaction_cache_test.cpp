@@ -57,6 +57,35 @@ TEST(InteractionCacheTest, ReplansOnlyWhenObjectSurroundingsOrAffordanceChange)
   EXPECT_TRUE(cache.stale(5, scene, 0, physics));
 }
 
+// The layer traces outlines on 0.15 m cells: with nothing moved, a side of the box comes out a cell
+// further now and then (range noise or pose jitter puts a return over a cell border). Two sides a cell out
+// move the centroid 0.11 m and add 23 % area: the raster's doing, not the object's.
+TEST(InteractionCacheTest, AnOutlineACellOutOnTheRasterItWasTracedOnReusesThePlans)
+{
+  const double cell = 0.15;
+  InteractionCache exact(defaultSettings());
+  InteractionCache traced(defaultSettings(), cell);
+  const LocalScene scene = test::doorwayScene();
+  const ObjectPhysics physics{0.4, 20.0};
+  bool replanned = false;
+  exact.interactionsFor(5, scene, 0, physics, replanned);
+  traced.interactionsFor(5, scene, 0, physics, replanned);
+  ASSERT_TRUE(replanned);
+
+  LocalScene noisy = scene;
+  noisy.movable[0] = test::rectangle(-0.6, -0.8 - cell, 0.6 + cell, 0.8);
+  EXPECT_TRUE(exact.stale(5, noisy, 0, physics));
+  EXPECT_FALSE(traced.stale(5, noisy, 0, physics));
+
+  // Moved by two cells, or twice its area (a second box against it): planned again.
+  LocalScene moved = scene;
+  moved.movable[0] = test::rectangle(-0.6 + 2 * cell, -0.8, 0.6 + 2 * cell, 0.8);
+  EXPECT_TRUE(traced.stale(5, moved, 0, physics));
+  LocalScene doubled = scene;
+  doubled.movable[0] = test::rectangle(-0.6, -0.8, 1.8, 0.8);
+  EXPECT_TRUE(traced.stale(5, doubled, 0, physics));
+}
+
 TEST(InteractionCacheTest, ObstaclesSplitDifferentlyReuseThePlans)
 {
   InteractionCache cache(defaultSettings());
