@@ -1,4 +1,5 @@
-// ifar-velodyne-driver: VLP-16 packets from UDP (or a pcap file) onto LCM, raw, with a 1 Hz status.
+// ifar-velodyne-driver: VLP-16 packets from UDP (or a pcap file) onto LCM, raw, with a 1 Hz status; or,
+// with --pcap FILE --points OUT, a capture's points in a CSV or PCD file (no bus).
 
 #include <poll.h>
 
@@ -11,17 +12,20 @@
 #include "bus/run_loop.hpp"
 #include "common/daemon_main.hpp"
 #include "common/time.hpp"
+#include "drivers/velodyne/capture_points.hpp"
 #include "drivers/velodyne/driver_settings.hpp"
 #include "drivers/velodyne/packet_forwarder.hpp"
 #include "drivers/velodyne/pcap_reader.hpp"
+#include "drivers/velodyne/point_file.hpp"
 #include "drivers/velodyne/udp_receiver.hpp"
 
 namespace ifar::velodyne {
 namespace {
 
 struct ReplayOptions {
-  std::string pcap_path;  // "" = live UDP
-  double speed = 1.0;     // 0 = as fast as possible
+  std::string pcap_path;    // "" = live UDP
+  double speed = 1.0;       // 0 = as fast as possible
+  std::string points_path;  // "" = replay onto LCM; else write the pcap's points to this file instead
 };
 
 // Bounds how long the loop sleeps in poll() so timers and signals are served promptly.
@@ -41,14 +45,16 @@ class StatusClock {
   std::int64_t last_us_ = common::monotonicMicroseconds();
 };
 
-/// Checks one datagram and publishes it when it passes.
-void forwardDatagram(bus::RunLoop& loop, PacketForwarder& forwarder, std::uint16_t port,
+/// Checks one datagram and publishes it when it passes; true when it was published.
+bool forwardDatagram(bus::RunLoop& loop, PacketForwarder& forwarder, std::uint16_t port,
                      common::ByteView payload, std::int64_t receive_time_us)
 {
   if (const std::optional<ForwardedPacket> forwarded = forwarder.onDatagram(port, payload, receive_time_us)) {
     loop.publish(forwarded->channel, forwarded->packet);
     forwarder.notePublished(receive_time_us, common::nowMicroseconds());
+    return true;
   }
+  return false;
 }
 
 void publishStatus(bus::RunLoop& loop, const DriverSettings& settings, PacketForwarder& forwarder,
@@ -133,23 +139,27 @@ int runPcap(const ReplayOptions& replay, const DriverSettings& settings, bus::Ru
   bool have_first = false;
   std::int64_t first_capture_us = 0;
   std::int64_t start_monotonic_us = 0;
-  std::int64_t skipped = 0;
+  CaptureCounts counts;
+  bool file_ended = false;  // not stopped by a signal: the whole file was offered
   while (!loop.stopping()) {
     const PcapRecord record = reader.next(datagram);
     if (record == PcapRecord::kEndOfFile) {
+      file_ended = true;
       break;
     }
     if (record == PcapRecord::kTruncatedFile) {
       logger.warn("'{}' ends inside a record: stopping the replay there", replay.pcap_path);
+      file_ended = true;
       break;
     }
+    ++counts.records;
     if (record != PcapRecord::kUdpDatagram) {
-      ++skipped;
+      ++counts.skipped;
       continue;
     }
     if (datagram.destination_port != settings.data_port &&
         !(settings.position_packets && datagram.destination_port == settings.position_port)) {
-      ++skipped;
+      ++counts.skipped;
       continue;
     }
     if (!have_first) {
@@ -169,11 +179,19 @@ int runPcap(const ReplayOptions& replay, const DriverSettings& settings, bus::Ru
       }
     }
     // Host receive time of a replayed packet is the time it is sent on, as for a live sensor.
-    forwardDatagram(loop, forwarder, datagram.destination_port, datagram.payload, common::nowMicroseconds());
+    if (forwardDatagram(loop, forwarder, datagram.destination_port, datagram.payload,
+                        common::nowMicroseconds())) {
+      ++counts.published;
+    }
     loop.spinOnce(0);
   }
-  logger.info("replay finished: {} packets published, {} bad, {} records skipped",
-              forwarder.monitor().counts().packets_valid, forwarder.monitor().counts().bad_packets, skipped);
+  logger.info("replay finished: {} packets published, {} bad, {} records skipped", counts.published,
+              forwarder.monitor().counts().bad_packets, counts.skipped);
+  // A capture that gives nothing is an input to fix, not a replay that worked: scripts must see it fail.
+  if (file_ended && counts.published == 0) {
+    logger.error("{}", nothingToPublishMessage(replay.pcap_path, counts, forwarder, settings.data_port));
+    return 1;
+  }
   return 0;
 }
 
@@ -196,6 +214,9 @@ int main(int argc, char** argv)
       [&replay](common::DaemonContext& context) {
         const velodyne::DriverSettings settings = velodyne::loadDriverSettings(context.config);
         context.config.rejectUnknownKeys();
+        if (!replay.points_path.empty()) {
+          return velodyne::writeCapturePoints(replay.pcap_path, replay.points_path, settings, context.logger);
+        }
         bus::RunLoop loop(context.lcm_url, context.logger);
         bus::publishHeartbeats(loop, context.logger->name());
         velodyne::PacketForwarder forwarder(settings, context.logger);
@@ -209,9 +230,24 @@ int main(int argc, char** argv)
         return result;
       },
       [&replay](CLI::App& app) {
-        app.add_option("--pcap", replay.pcap_path,
-                       "replay this classic pcap file instead of listening on UDP")
-            ->check(CLI::ExistingFile);
+        CLI::Option* pcap = app.add_option("--pcap", replay.pcap_path,
+                                           "replay this classic pcap file instead of listening on UDP")
+                                ->check(CLI::ExistingFile);
+        app.add_option(
+               "--points", replay.points_path,
+               "with --pcap: write the points the driver would publish (its checks and sensor_model) to "
+               "this file instead of replaying, then exit (no LCM); .csv: a header row, then "
+               "x,y,z,intensity,ring,azimuth,distance,return_index,time_us per point; .pcd: ASCII PCD "
+               "with the same fields. x forward, y left, z up in metres, azimuth in degrees, time_us "
+               "in device microseconds past the hour")
+            ->type_name("FILE.csv|FILE.pcd")
+            ->needs(pcap)
+            ->check(CLI::Validator(
+                [](const std::string& path) {
+                  return velodyne::pointFileFormat(path) ? std::string()
+                                                         : "'" + path + "' must end in .csv or .pcd";
+                },
+                "", ""));
         app.add_option("--speed", replay.speed, "replay speed factor for --pcap (0 = as fast as possible)")
             ->check(CLI::NonNegativeNumber)
             ->capture_default_str();

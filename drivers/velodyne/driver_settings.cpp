@@ -17,6 +17,12 @@ const common::ParameterTable<DriverSettings>& driverParameters()
                "skipped, so a simulator or second sensor on the network cannot feed this vehicle; empty "
                "accepts every source")
           .add("data_port", &S::data_port, "", port, "VLP-16 data packets (1206-byte payloads)")
+          .choice(
+              "sensor_model", &S::sensor_model,
+              {{"auto", SensorModel::kAuto}, {"VLP-16", SensorModel::kVlp16}},
+              "auto: only packets whose product byte is 0x22 (VLP-16) are decoded; VLP-16: every packet is "
+              "decoded as VLP-16 whatever its product byte (for a sensor or capture that mislabels it; "
+              "another model's data would give wrong points), with one warning per byte seen")
           .add("position_packets", &S::position_packets, "", Range::any(),
                "also forward position packets (512 bytes) on position_channel")
           .add("position_port", &S::position_port, "", port, "VLP-16 position packets")

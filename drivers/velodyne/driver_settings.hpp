@@ -6,6 +6,7 @@
 
 #include "common/config.hpp"
 #include "common/parameters.hpp"
+#include "drivers/velodyne/packet_format.hpp"
 
 namespace ifar::velodyne {
 
@@ -13,7 +14,8 @@ struct DriverSettings {
   std::string bind_address = "0.0.0.0";  // local IPv4 address the sockets bind
   std::string sensor_address;            // IPv4 of the sensor; datagrams from elsewhere are refused; "" any
   std::uint16_t data_port = 2368;        // VLP-16 data packets
-  bool position_packets = false;         // also forward position packets
+  SensorModel sensor_model = SensorModel::kAuto;  // kVlp16: the product byte is a label (see inspectPacket)
+  bool position_packets = false;                  // also forward position packets
   std::uint16_t position_port = 8308;
   std::int64_t receive_buffer_bytes = 4 * 1024 * 1024;  // SO_RCVBUF: rides out scheduling stalls
   std::string data_channel = "VELODYNE_PACKET";

@@ -65,7 +65,7 @@ double wrapAzimuth(double units)
 DecodeResult decodePacket(common::ByteView payload, std::vector<Point>& points, const DecoderOptions& options)
 {
   DecodeResult result;
-  result.info = inspectPacket(payload);
+  result.info = inspectPacket(payload, options.sensor_model);
   if (result.info.status != PacketStatus::kOk) {
     return result;
   }

@@ -29,6 +29,7 @@ enum class AzimuthInterpolation : std::uint8_t {
 struct DecoderOptions {
   bool keep_no_return = false;  // keep distance-0 returns ("no return") as points at the origin
   AzimuthInterpolation interpolation = AzimuthInterpolation::kPacketMeanStep;
+  SensorModel sensor_model = SensorModel::kAuto;  // kVlp16: any product byte is decoded (see inspectPacket)
 };
 
 struct DecodeResult {

@@ -6,8 +6,10 @@
 // the product byte.
 
 #include <array>
+#include <bitset>
 #include <cstddef>
 #include <cstdint>
+#include <string>
 
 #include "common/byte_order.hpp"
 #include "common/span.hpp"
@@ -59,8 +61,19 @@ enum class ReturnMode : std::uint8_t {
   kDual = 0x39,
 };
 
+/// Product (model) bytes of Velodyne sensors that share this packet size; only the VLP-16 layout is decoded.
 enum class ProductId : std::uint8_t {
+  kHdl32e = 0x21,  // 32 lasers, one firing per block: another layout
   kVlp16 = 0x22,
+  kVlp32c = 0x28,  // 32 lasers, one firing per block: another layout
+};
+
+/// The model of the sensor as the configuration states it (driver key `sensor_model`).
+enum class SensorModel : std::uint8_t {
+  kAuto,   // the product byte decides: only 0x22 (VLP-16) is decoded
+  kVlp16,  // the user says it is a VLP-16: the product byte is only a label, any value is decoded as
+           // VLP-16 (a capture or firmware that mislabels it); data from another model then gives wrong
+           // points
 };
 
 /// Outcome of validating a data packet. Anything but kOk means the packet must be skipped.
@@ -69,7 +82,7 @@ enum class PacketStatus : std::uint8_t {
   kWrongSize,          // payload is not 1206 bytes (truncated or oversized)
   kBadBlockMarker,     // a block does not start with 0xFF 0xEE
   kAzimuthOutOfRange,  // a block azimuth is >= 36000 (0.01 degree units)
-  kUnknownProduct,     // product byte is not 0x22 (VLP-16)
+  kUnknownProduct,     // product byte is not 0x22 (VLP-16) and no sensor model is configured
   kUnknownReturnMode,  // return mode byte is not 0x37, 0x38 or 0x39
 };
 
@@ -81,11 +94,44 @@ struct PacketInfo {
   PacketStatus status = PacketStatus::kWrongSize;
   ReturnMode return_mode = ReturnMode::kStrongest;  // meaningful only when status is kOk
   std::uint32_t device_time_past_hour = 0;          // microseconds; meaningful only when status is kOk
+  std::uint8_t product_byte = 0;                    // as sent; meaningful unless status is kWrongSize
+  bool product_overridden = false;  // kOk only because the configured model overrode the product byte
 };
 
 /// Checks size, every block marker and azimuth, the product byte and the return mode, in that order;
-/// the first problem found is the status. Never reads outside `payload`.
-PacketInfo inspectPacket(common::ByteView payload);
+/// the first problem found is the status. With `model` kVlp16 any product byte passes (and
+/// product_overridden says when it was not 0x22). Never reads outside `payload`.
+PacketInfo inspectPacket(common::ByteView payload, SensorModel model = SensorModel::kAuto);
+
+/// The model a product byte names, e.g. "HDL-32E" for 0x21; "" for a byte ifar does not know.
+const char* productName(std::uint8_t product_byte);
+
+/// Why a packet was refused, for logs and velodyne_status_t.last_error: the status name, except for a
+/// product byte, which is named with the one expected, e.g. "product byte 0x21 (expected 0x22, VLP-16);
+/// set sensor_model: VLP-16 to decode it anyway".
+std::string describeProblem(const PacketInfo& info);
+
+/// The warning for data packets decoded as `model` although their product byte says otherwise, e.g.
+/// "data packets carry product byte 0x21 (HDL-32E), not 0x22: decoding them as VLP-16 because
+/// sensor_model says so; if the sensor is not a VLP-16 its points are wrong".
+std::string overriddenProductWarning(std::uint8_t product_byte, SensorModel model);
+
+/// Which overridden product bytes have been reported, so each is logged once rather than per packet.
+class ProductOverrideNotices {
+ public:
+  /// True the first time `info` is a packet whose product byte was overridden with this byte.
+  bool firstOverride(const PacketInfo& info)
+  {
+    if (!info.product_overridden || seen_.test(info.product_byte)) {
+      return false;
+    }
+    seen_.set(info.product_byte);
+    return true;
+  }
+
+ private:
+  std::bitset<256> seen_;
+};
 
 /// Little-endian readers used by the codec (bounds are the caller's job).
 using common::readUint16Le;

@@ -26,15 +26,23 @@ std::optional<ForwardedPacket> PacketForwarder::onDatagram(std::uint16_t port, c
 {
   monitor_.recordReceived();
   if (port == settings_.data_port) {
-    const PacketInfo info = inspectPacket(payload);
+    const PacketInfo info = inspectPacket(payload, settings_.sensor_model);
     if (info.status != PacketStatus::kOk) {
-      reject(
-          std::string("data packet (") + std::to_string(payload.size()) + " bytes): " + toString(info.status),
-          receive_time_us);
+      reject("data packet (" + std::to_string(payload.size()) + " bytes): " + describeProblem(info),
+             receive_time_us);
       return std::nullopt;
     }
     monitor_.recordValid(info);
-    return forward(settings_.data_channel, port, payload, receive_time_us, info.device_time_past_hour);
+    ForwardedPacket forwarded =
+        forward(settings_.data_channel, port, payload, receive_time_us, info.device_time_past_hour);
+    if (info.product_overridden) {
+      if (product_notices_.firstOverride(info)) {
+        logger_->warn("{}", overriddenProductWarning(info.product_byte, settings_.sensor_model));
+      }
+      // Consumers decode with the strict default: the label the user vouched for goes with the packet.
+      forwarded.packet.data[kProductIdOffset] = static_cast<std::uint8_t>(ProductId::kVlp16);
+    }
+    return forwarded;
   }
   if (settings_.position_packets && port == settings_.position_port) {
     if (payload.size() != kPositionPacketSize) {

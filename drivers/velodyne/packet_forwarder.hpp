@@ -20,7 +20,9 @@
 
 namespace ifar::velodyne {
 
-/// A packet to publish and the channel it goes on.
+/// A packet to publish and the channel it goes on. A data packet whose product byte the configured
+/// sensor_model overrode is published with the product byte 0x22 (VLP-16), so every consumer decodes it
+/// the way the driver accepted it; the byte it came with is named in a warning, once per byte.
 struct ForwardedPacket {
   std::string channel;
   ifar::velodyne_packet_t packet;
@@ -62,6 +64,7 @@ class PacketForwarder {
   std::optional<std::uint32_t> sensor_address_;  // host byte order; empty: any source
   std::shared_ptr<spdlog::logger> logger_;
   PacketMonitor monitor_;
+  ProductOverrideNotices product_notices_;
   common::RateLimiter bad_packet_log_limiter_;
   std::vector<std::int64_t> publish_latencies_us_;  // this report interval's receive-to-publish times
 };

@@ -41,6 +41,29 @@ void PacketMonitor::recordBad(const std::string& reason)
 {
   ++counts_.bad_packets;
   counts_.last_error = reason;
+  for (auto& [known, count] : bad_reasons_) {
+    if (known == reason) {
+      ++count;
+      return;
+    }
+  }
+  if (bad_reasons_.size() < kMostReasonsKept) {
+    bad_reasons_.emplace_back(reason, 1);
+  } else {
+    ++other_bad_reasons_;
+  }
+}
+
+std::string PacketMonitor::badSummary() const
+{
+  std::string text;
+  for (const auto& [reason, count] : bad_reasons_) {
+    text += (text.empty() ? "" : "; ") + std::to_string(count) + " x " + reason;
+  }
+  if (other_bad_reasons_ > 0) {
+    text += "; " + std::to_string(other_bad_reasons_) + " x other reasons";
+  }
+  return text;
 }
 
 std::int64_t PacketMonitor::takeValidSinceLastReport()

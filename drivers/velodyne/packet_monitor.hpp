@@ -4,6 +4,8 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "drivers/velodyne/packet_format.hpp"
 
@@ -38,8 +40,16 @@ class PacketMonitor {
   /// Valid packets since the previous call (for packets per second over a report interval).
   std::int64_t takeValidSinceLastReport();
 
+  /// Bad input so far by reason, in order of first appearance, e.g. "84 x data packet (1206 bytes): ...";
+  /// "" when there was none. Reasons past the first kMostReasonsKept are counted as "other".
+  std::string badSummary() const;
+
+  static constexpr std::size_t kMostReasonsKept = 8;  // bounded: a reason may hold a size or an address
+
  private:
   MonitorCounts counts_;
+  std::vector<std::pair<std::string, std::int64_t>> bad_reasons_;
+  std::int64_t other_bad_reasons_ = 0;
   std::int64_t valid_at_last_report_ = 0;
   bool has_previous_time_ = false;
   std::uint32_t previous_time_past_hour_ = 0;

@@ -10,6 +10,9 @@
 #     the driver's own receive-to-publish latency per second is in its debug log, printed too.
 #  3. isolation: a second driver on the same port refuses to start, naming the port; a driver with
 #     sensor_address set publishes only what comes from that address and counts the rest as bad.
+#  4. a capture whose product bytes say 0x21 (a mislabelled VLP-16): without sensor_model every packet is
+#     refused, naming both bytes, and the driver exits non-zero; with sensor_model VLP-16 all 84 are
+#     published as the original capture's bytes, with one warning; --points writes its points as CSV.
 # Exit 77 (ctest SKIP_RETURN_CODE) when the shared capture is absent.
 set -euo pipefail
 
@@ -144,7 +147,8 @@ assert len(packets) == 20 + 1508, f"expected 1528 valid packets published, got {
 status = summary["status"]
 assert status["bad"] == 7 and status["published"] == 1528 and status["received"] == 1535, status
 assert status["dropped"] == 0, status
-assert status["last_error"] == "data packet (1206 bytes): unknown product", status
+assert status["last_error"] == ("data packet (1206 bytes): product byte 0x21 (expected 0x22, VLP-16); "
+                               "set sensor_model: VLP-16 to decode it anyway"), status
 print("live UDP: 1528 published, 7 bad counted; status", status)
 latencies = sorted(packet["latency_us"] for packet in packets[20:])
 p50, p99, worst = (latencies[len(latencies) // 2], latencies[int(len(latencies) * 0.99)], latencies[-1])
@@ -191,4 +195,60 @@ assert status["bad"] == 5 and status["published"] == 3, status
 assert status["last_error"] == "datagram from 127.0.0.1, not the sensor 127.0.0.2", status
 print("sensor_address 127.0.0.2: 3 published, 5 from 127.0.0.1 refused; status", status)
 PYTHON
+
+echo "== 4. mislabelled capture (product byte 0x21)"
+mislabelled="$work/vlp16_product_0x21.pcap"
+python3 - "$capture" "$mislabelled" <<'PYTHON'
+import struct, sys
+capture = bytearray(open(sys.argv[1], "rb").read())
+offset = 24
+while offset + 16 <= len(capture):
+    length = struct.unpack("<I", capture[offset + 8:offset + 12])[0]
+    capture[offset + 16 + 42 + 1205] = 0x21
+    offset += 16 + length
+open(sys.argv[2], "wb").write(capture)
+PYTHON
+if ifar-velodyne-driver --config "$config" --log-dir "" --pcap "$mislabelled" --speed 0 > "$work/refused.log" 2>&1; then
+  echo "FAIL: the driver exited 0 on a capture it published nothing of"; cat "$work/refused.log"; exit 1
+fi
+refusal="product byte 0x21 (expected 0x22, VLP-16); set sensor_model: VLP-16 to decode it anyway"
+grep -qF "gave no packet to publish: 84 records read, 0 of them not UDP to port 2368, 84 refused (84 x data packet (1206 bytes): $refusal)" "$work/refused.log" \
+  || { echo "FAIL: no message naming the counts and both bytes"; cat "$work/refused.log"; exit 1; }
+echo "refused and exited non-zero: $(grep -o "gave no packet.*" "$work/refused.log")"
+
+lcm-logger -f "$work/relabelled.lcm" >/dev/null 2>&1 &
+logger_pid=$!
+pids+=($logger_pid)
+sleep 1
+ifar-velodyne-driver --config "$config" --set sensor_model=VLP-16 --log-dir "" --pcap "$mislabelled" --speed 1 \
+  > "$work/relabelled.log" 2>&1
+sleep 1
+kill -INT "$logger_pid"; wait "$logger_pid" || true
+warning="data packets carry product byte 0x21 (HDL-32E), not 0x22: decoding them as VLP-16 because sensor_model says so"
+[[ "$(grep -cF "$warning" "$work/relabelled.log")" == 1 ]] \
+  || { echo "FAIL: expected the override warning once"; cat "$work/relabelled.log"; exit 1; }
+python3 - "$capture" <(summarize_log "$work/relabelled.lcm") <<'PYTHON'
+import json, struct, sys
+capture = open(sys.argv[1], "rb").read()
+expected, offset = [], 24
+while offset + 16 <= len(capture):
+    length = struct.unpack("<I", capture[offset + 8:offset + 12])[0]
+    expected.append(capture[offset + 16 + 42:offset + 16 + length].hex())
+    offset += 16 + length
+summary = json.load(open(sys.argv[2]))
+packets = summary["packets"]
+assert len(packets) == 84, f"expected 84 packets with sensor_model VLP-16, got {len(packets)}"
+assert [p["data"] for p in packets] == expected, "published payloads differ from the original capture"
+assert summary["status"]["published"] == 84 and summary["status"]["bad"] == 0, summary["status"]
+print("sensor_model VLP-16: 84 packets published as the original capture (product byte 0x22), one warning")
+PYTHON
+
+ifar-velodyne-driver --config "$config" --set sensor_model=VLP-16 --log-dir "" --pcap "$mislabelled" \
+  --points "$work/points.csv" > "$work/points.log" 2>&1 || { cat "$work/points.log"; exit 1; }
+rows=$(wc -l < "$work/points.csv")
+first=$(sed -n 2p "$work/points.csv")
+[[ "$rows" == 31631 ]] || { echo "FAIL: expected a header and 31630 points, got $rows lines"; exit 1; }
+[[ "$first" == "-2.700466,3.7498033,-1.2381903,48,0,234.24,4.784,0,596380001.000" ]] \
+  || { echo "FAIL: first point row is '$first'"; exit 1; }
+echo "--points: $rows lines, first point $first"
 echo "PASS"

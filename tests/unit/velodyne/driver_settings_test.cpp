@@ -30,6 +30,22 @@ TEST(VelodyneDriverSettings, ShippedConfigLoadsCompletely)
   EXPECT_EQ(settings.receive_buffer_bytes, 4194304);
 }
 
+TEST(VelodyneDriverSettings, SensorModelIsAutoUnlessNamed)
+{
+  EXPECT_EQ(loadDriverSettings(ConfigNode::loadString("{}", "v.yaml")).sensor_model, SensorModel::kAuto);
+  EXPECT_EQ(loadDriverSettings(ConfigNode::loadString("sensor_model: auto", "v.yaml")).sensor_model,
+            SensorModel::kAuto);
+  EXPECT_EQ(loadDriverSettings(ConfigNode::loadString("sensor_model: VLP-16", "v.yaml")).sensor_model,
+            SensorModel::kVlp16);
+  try {
+    loadDriverSettings(ConfigNode::loadString("sensor_model: HDL-32E", "v.yaml"));
+    FAIL() << "expected a ConfigError";
+  } catch (const ConfigError& error) {
+    EXPECT_EQ(std::string(error.what()),
+              "v.yaml: key 'sensor_model': must be one of auto, VLP-16, got 'HDL-32E'");
+  }
+}
+
 TEST(VelodyneDriverSettings, BadValuesNameTheKey)
 {
   try {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "tests/unit/velodyne/packet_builder.hpp"
@@ -229,6 +230,65 @@ TEST(VelodyneDecoder, EachBadInputHasItsStatusAndAddsNothing)
     EXPECT_EQ(result.points_added, 0U) << bad.name;
     EXPECT_TRUE(points.empty()) << bad.name;
   }
+}
+
+TEST(VelodyneDecoder, AConfiguredVlp16DecodesAnyProductByteAndSaysSo)
+{
+  DecoderOptions vlp16;
+  vlp16.sensor_model = SensorModel::kVlp16;
+  const auto genuine = PacketBuilder().azimuthRamp(100, 20).allReturns(1000, 7).bytes();
+  std::vector<Point> expected;
+  const DecodeResult plain = decodePacket(common::ByteView(genuine), expected, vlp16);
+  ASSERT_EQ(plain.info.status, PacketStatus::kOk);
+  EXPECT_FALSE(plain.info.product_overridden);  // 0x22 needs no override
+  for (const std::uint8_t product : {0x21, 0x28, 0x00, 0xFF}) {
+    auto bytes = genuine;
+    bytes[1205] = product;
+    std::vector<Point> points;
+    const DecodeResult result = decodePacket(common::ByteView(bytes), points, vlp16);
+    ASSERT_EQ(result.info.status, PacketStatus::kOk) << int(product);
+    EXPECT_TRUE(result.info.product_overridden) << int(product);
+    EXPECT_EQ(result.info.product_byte, product);
+    EXPECT_EQ(points.size(), expected.size());
+  }
+  // The other checks still hold: only the label is overridden.
+  std::vector<Point> points;
+  EXPECT_EQ(decodePacket(common::ByteView(PacketBuilder().product(0x21).mode(0x36).bytes()), points, vlp16)
+                .info.status,
+            PacketStatus::kUnknownReturnMode);
+  EXPECT_EQ(decodePacket(common::ByteView(PacketBuilder().product(0x21).byte(0, 0).bytes()), points, vlp16)
+                .info.status,
+            PacketStatus::kBadBlockMarker);
+}
+
+TEST(VelodyneDecoder, ARefusedProductIsNamedWithTheOneExpected)
+{
+  const PacketInfo info = inspectPacket(common::ByteView(PacketBuilder().product(0x28).bytes()));
+  ASSERT_EQ(info.status, PacketStatus::kUnknownProduct);
+  EXPECT_EQ(describeProblem(info),
+            "product byte 0x28 (expected 0x22, VLP-16); set sensor_model: VLP-16 to decode it anyway");
+  EXPECT_EQ(describeProblem(inspectPacket(common::ByteView(PacketBuilder().mode(0).bytes()))),
+            "unknown return mode");
+  EXPECT_EQ(overriddenProductWarning(0x28, SensorModel::kVlp16),
+            "data packets carry product byte 0x28 (VLP-32C), not 0x22: decoding them as VLP-16 because "
+            "sensor_model says so; if the sensor is not a VLP-16 its points are wrong");
+  const std::string unknown = "data packets carry product byte 0x99, not 0x22:";  // no model to name
+  EXPECT_EQ(overriddenProductWarning(0x99, SensorModel::kVlp16).substr(0, unknown.size()), unknown);
+}
+
+TEST(VelodyneDecoder, EachOverriddenProductByteIsNoticedOnce)
+{
+  ProductOverrideNotices notices;
+  PacketInfo info;
+  info.status = PacketStatus::kOk;
+  info.product_byte = 0x21;
+  EXPECT_FALSE(notices.firstOverride(info));  // not overridden: nothing to say
+  info.product_overridden = true;
+  EXPECT_TRUE(notices.firstOverride(info));
+  EXPECT_FALSE(notices.firstOverride(info));
+  info.product_byte = 0x28;
+  EXPECT_TRUE(notices.firstOverride(info));
+  EXPECT_FALSE(notices.firstOverride(info));
 }
 
 TEST(VelodyneDecoder, StatusNamesAreReadable)
