@@ -60,6 +60,18 @@ PYTHON
 
 config="$source_dir/config/velodyne.yaml"
 
+# The capture's UDP payloads (hex, in order): what the driver must publish from it.
+python3 - "$capture" > "$work/capture_payloads.json" <<'PYTHON'
+import json, struct, sys
+capture = open(sys.argv[1], "rb").read()
+payloads, offset = [], 24
+while offset + 16 <= len(capture):
+    length = struct.unpack("<I", capture[offset + 8:offset + 12])[0]
+    payloads.append(capture[offset + 16 + 42:offset + 16 + length].hex())
+    offset += 16 + length
+json.dump(payloads, sys.stdout)
+PYTHON
+
 echo "== 1. pcap replay"
 lcm-logger -f "$work/replay.lcm" >/dev/null 2>&1 &
 pids+=($!)
@@ -67,14 +79,9 @@ sleep 1
 ifar-velodyne-driver --config "$config" --log-dir "" --pcap "$capture" --speed 1
 sleep 1
 kill -INT "${pids[-1]}"; wait "${pids[-1]}" || true
-python3 - "$capture" <(summarize_log "$work/replay.lcm") <<'PYTHON'
+python3 - "$work/capture_payloads.json" <(summarize_log "$work/replay.lcm") <<'PYTHON'
 import json, struct, sys
-capture = open(sys.argv[1], "rb").read()
-expected, offset = [], 24
-while offset + 16 <= len(capture):
-    length = struct.unpack("<I", capture[offset + 8:offset + 12])[0]
-    expected.append(capture[offset + 16 + 42:offset + 16 + length].hex())
-    offset += 16 + length
+expected = json.load(open(sys.argv[1]))
 summary = json.load(open(sys.argv[2]))
 packets = summary["packets"]
 assert len(packets) == 84, f"expected 84 packets on VELODYNE_PACKET, got {len(packets)}"
@@ -227,14 +234,9 @@ kill -INT "$logger_pid"; wait "$logger_pid" || true
 warning="data packets carry product byte 0x21 (HDL-32E), not 0x22: decoding them as VLP-16 because sensor_model says so"
 [[ "$(grep -cF "$warning" "$work/relabelled.log")" == 1 ]] \
   || { echo "FAIL: expected the override warning once"; cat "$work/relabelled.log"; exit 1; }
-python3 - "$capture" <(summarize_log "$work/relabelled.lcm") <<'PYTHON'
+python3 - "$work/capture_payloads.json" <(summarize_log "$work/relabelled.lcm") <<'PYTHON'
 import json, struct, sys
-capture = open(sys.argv[1], "rb").read()
-expected, offset = [], 24
-while offset + 16 <= len(capture):
-    length = struct.unpack("<I", capture[offset + 8:offset + 12])[0]
-    expected.append(capture[offset + 16 + 42:offset + 16 + length].hex())
-    offset += 16 + length
+expected = json.load(open(sys.argv[1]))
 summary = json.load(open(sys.argv[2]))
 packets = summary["packets"]
 assert len(packets) == 84, f"expected 84 packets with sensor_model VLP-16, got {len(packets)}"
