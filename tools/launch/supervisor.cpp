@@ -225,6 +225,11 @@ void Supervisor::reapChildren(bool stopping, SupervisorResult& result)
   }
 }
 
+namespace {
+/// How long the first process of the file (the recorder) is left running after the others have stopped.
+constexpr double kRecorderCatchUpS = 0.5;
+}  // namespace
+
 void Supervisor::stopAll(double timeout_s)
 {
   // In the reverse of the file's order, each one gone (or killed) before the next is asked: what starts
@@ -234,6 +239,22 @@ void Supervisor::stopAll(double timeout_s)
   for (auto child = children_.rbegin(); child != children_.rend(); ++child) {
     if (child->pid <= 0) {
       continue;
+    }
+    if (child + 1 == children_.rend() && children_.size() > 1) {
+      // The first one (the recorder) may still have the others' last messages in its socket: lcm-logger
+      // stops on SIGINT without reading them, so it gets a moment to catch up on a busy machine.
+      const std::int64_t settled =
+          common::monotonicMicroseconds() + common::secondsToMicroseconds(kRecorderCatchUpS);
+      while (child->pid > 0 && common::monotonicMicroseconds() < settled) {
+        for (auto& other : children_) {
+          drainOutput(other, false);
+        }
+        reapChildren(true, ignored);
+        usleep(10'000);
+      }
+      if (child->pid <= 0) {
+        continue;
+      }
     }
     kill(-child->pid, SIGINT);
     const std::int64_t deadline = common::monotonicMicroseconds() + common::secondsToMicroseconds(timeout_s);
