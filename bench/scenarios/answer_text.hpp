@@ -30,6 +30,7 @@ class AnswerWriter {
 /// more) once the answer does not hold what is asked for.
 class AnswerReader {
  public:
+  /// Reads `answer` in place: it must outlive the reader.
   explicit AnswerReader(std::string_view answer) : rest_(answer) {}
   bool number(double& value);
   bool integer(std::int64_t& value);

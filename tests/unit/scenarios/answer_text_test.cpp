@@ -53,7 +53,8 @@ TEST(AnswerText, WhatWasNotWrittenIsNotRead)
 {
   AnswerWriter writer;
   writer.text("abc");
-  AnswerReader cut(writer.answer().substr(0, writer.answer().size() - 1));
+  const std::string shortened = writer.answer().substr(0, writer.answer().size() - 1);
+  AnswerReader cut(shortened);
   std::string text;
   EXPECT_FALSE(cut.text(text));
   EXPECT_FALSE(cut.complete());
