@@ -6,6 +6,8 @@
 #include <sys/wait.h>
 
 #include <chrono>
+#include <fstream>
+#include <sstream>
 #include <thread>
 #include <utility>
 
@@ -124,6 +126,14 @@ int runToEnd(const std::vector<std::string>& arguments, const ChildOptions& opti
   }
   child.stop(SIGKILL);
   return -1;
+}
+
+std::string readText(const std::string& path)
+{
+  std::ifstream file(path);
+  std::stringstream text;
+  text << file.rdbuf();
+  return text.str();
 }
 
 }  // namespace ifar::test_support

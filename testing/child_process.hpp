@@ -44,4 +44,7 @@ class ChildProcess {
 /// start, was killed or timed out.
 int runToEnd(const std::vector<std::string>& arguments, const ChildOptions& options, double timeout_s);
 
+/// The whole text of a file (a child's output, a log), "" when it cannot be read.
+std::string readText(const std::string& path);
+
 }  // namespace ifar::test_support

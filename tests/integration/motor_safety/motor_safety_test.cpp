@@ -34,20 +34,14 @@
 
 namespace {
 
+using ifar::test_support::readText;
+
 using Clock = std::chrono::steady_clock;
 using ifar::test_support::ChildOptions;
 using ifar::test_support::ChildProcess;
 
 constexpr std::int32_t kWheelLimit = 9066;  // (1.0 + 1.2 x 0.6 / 2) / 0.15 x 1000, config/vehicle.yaml
 constexpr std::int64_t kStopBudgetUs = 200'000;
-
-std::string readText(const std::string& path)
-{
-  std::ifstream file(path);
-  std::stringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
 
 // An empty 30 m x 30 m hall, the vehicle in the middle: room to drive circles at 0.8 m/s.
 constexpr const char* kWorld = R"(name: open_hall

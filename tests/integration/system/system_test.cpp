@@ -36,6 +36,8 @@
 
 namespace {
 
+using ifar::test_support::readText;
+
 using Clock = std::chrono::steady_clock;
 
 /// Folder entries whose name contains `part`, full paths.
@@ -54,14 +56,6 @@ std::vector<std::string> filesNamed(const std::string& folder, const std::string
   }
   closedir(directory);
   return found;
-}
-
-std::string readText(const std::string& path)
-{
-  std::ifstream file(path);
-  std::stringstream text;
-  text << file.rdbuf();
-  return text.str();
 }
 
 /// The launched stack: `ifar-launch config/launch/sim_demo.yaml` from the repository, with the launch

@@ -25,17 +25,11 @@
 
 namespace {
 
+using ifar::test_support::readText;
+
 using Clock = std::chrono::steady_clock;
 using ifar::test_support::ChildOptions;
 using ifar::test_support::ChildProcess;
-
-std::string readText(const std::string& path)
-{
-  std::ifstream file(path);
-  std::stringstream text;
-  text << file.rdbuf();
-  return text.str();
-}
 
 /// The VELODYNE_PACKET messages of one LCM URL, counted by the simulator rate they show.
 struct PacketRecord {
