@@ -236,6 +236,17 @@ void Supervisor::stopAll(double timeout_s)
   // first (the recorder) stops last, so the log holds everyone's last messages (the executive's arrival,
   // its zero velocity on shutdown).
   SupervisorResult ignored;
+  // Passes on everyone's output and reaps until `child` is gone or `seconds` have passed.
+  const auto waitWhileRunning = [&](const Child& child, double seconds) {
+    const std::int64_t until = common::monotonicMicroseconds() + common::secondsToMicroseconds(seconds);
+    while (child.pid > 0 && common::monotonicMicroseconds() < until) {
+      for (auto& other : children_) {
+        drainOutput(other, false);
+      }
+      reapChildren(true, ignored);
+      usleep(10'000);
+    }
+  };
   for (auto child = children_.rbegin(); child != children_.rend(); ++child) {
     if (child->pid <= 0) {
       continue;
@@ -243,28 +254,13 @@ void Supervisor::stopAll(double timeout_s)
     if (child + 1 == children_.rend() && children_.size() > 1) {
       // The first one (the recorder) may still have the others' last messages in its socket: lcm-logger
       // stops on SIGINT without reading them, so it gets a moment to catch up on a busy machine.
-      const std::int64_t settled =
-          common::monotonicMicroseconds() + common::secondsToMicroseconds(kRecorderCatchUpS);
-      while (child->pid > 0 && common::monotonicMicroseconds() < settled) {
-        for (auto& other : children_) {
-          drainOutput(other, false);
-        }
-        reapChildren(true, ignored);
-        usleep(10'000);
-      }
+      waitWhileRunning(*child, kRecorderCatchUpS);
       if (child->pid <= 0) {
         continue;
       }
     }
     kill(-child->pid, SIGINT);
-    const std::int64_t deadline = common::monotonicMicroseconds() + common::secondsToMicroseconds(timeout_s);
-    while (child->pid > 0 && common::monotonicMicroseconds() < deadline) {
-      for (auto& other : children_) {
-        drainOutput(other, false);
-      }
-      reapChildren(true, ignored);
-      usleep(10'000);
-    }
+    waitWhileRunning(*child, timeout_s);
     if (child->pid > 0) {
       say("launch", child->spec.name + " did not stop within " + std::to_string(timeout_s).substr(0, 4) +
                         " s: killing it");
