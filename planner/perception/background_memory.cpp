@@ -2,6 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <optional>
+#include <utility>
+#include <vector>
 
 #include "planner/perception/cell_key.hpp"
 
@@ -12,6 +16,112 @@ namespace {
 constexpr double kLargestCellIndex = 2147483647.0;
 // Heights are kept in centimetres in a byte: 2.55 m is above any obstacle band, and stands for "tall".
 constexpr double kTallest = 255.0;
+
+struct CellIndex {
+  std::int64_t column = 0;
+  std::int64_t row = 0;
+};
+
+/// The cell holding `point`; empty for a non-finite point or one beyond kLargestCellIndex cells.
+std::optional<CellIndex> cellIndexOf(const geometry::Point& point, double cell_size)
+{
+  const double column = std::floor(point.x() / cell_size);
+  const double row = std::floor(point.y() / cell_size);
+  if (!std::isfinite(column) || !std::isfinite(row) || std::abs(column) > kLargestCellIndex ||
+      std::abs(row) > kLargestCellIndex) {
+    return std::nullopt;
+  }
+  return CellIndex{static_cast<std::int64_t>(column), static_cast<std::int64_t>(row)};
+}
+
+/// The cell index of world coordinate `value`, kept within kLargestCellIndex (infinities included).
+std::int64_t clampedCellIndex(double value, double cell_size)
+{
+  const double index = std::floor(value / cell_size);
+  if (std::isnan(index)) {
+    return 0;
+  }
+  return static_cast<std::int64_t>(std::clamp(index, -kLargestCellIndex, kLargestCellIndex));
+}
+
+std::int64_t floorDivide(std::int64_t value, std::int64_t divisor)
+{
+  return value >= 0 ? value / divisor : -((-value + divisor - 1) / divisor);
+}
+
+/// Tiles [first, last], inclusive on either axis.
+struct TileRange {
+  CellIndex first;
+  CellIndex last;
+  bool contains(const CellIndex& tile) const
+  {
+    return tile.column >= first.column && tile.column <= last.column && tile.row >= first.row &&
+           tile.row <= last.row;
+  }
+  double count() const
+  {
+    return (static_cast<double>(last.column - first.column) + 1.0) *
+           (static_cast<double>(last.row - first.row) + 1.0);
+  }
+};
+
+CellIndex unpackCellKey(std::uint64_t key)
+{
+  return {static_cast<std::int32_t>(static_cast<std::uint32_t>(key >> 32U)),
+          static_cast<std::int32_t>(static_cast<std::uint32_t>(key & 0xFFFFFFFFU))};
+}
+
+constexpr std::int64_t kTileSide = BackgroundMemory::kTileSide;
+
+/// The centre of cell `index` (row-major) of the tile `tile`.
+geometry::Point centreOf(const CellIndex& tile, std::size_t index, double cell_size)
+{
+  const std::int64_t column = tile.column * kTileSide + static_cast<std::int64_t>(index % kTileSide);
+  const std::int64_t row = tile.row * kTileSide + static_cast<std::int64_t>(index / kTileSide);
+  return geometry::Point((static_cast<double>(column) + 0.5) * cell_size,
+                         (static_cast<double>(row) + 0.5) * cell_size);
+}
+
+/// The tile holding cell `at` and the cell's row-major index inside it.
+std::pair<CellIndex, std::size_t> tileSlotOf(const CellIndex& at)
+{
+  const CellIndex tile{floorDivide(at.column, kTileSide), floorDivide(at.row, kTileSide)};
+  return {tile, static_cast<std::size_t>((at.row - tile.row * kTileSide) * kTileSide +
+                                         (at.column - tile.column * kTileSide))};
+}
+
+/// The tiles that hold the square [minimum, maximum].
+TileRange tileRangeOf(const geometry::Point& minimum, const geometry::Point& maximum, double cell_size)
+{
+  return {{floorDivide(clampedCellIndex(minimum.x(), cell_size), kTileSide),
+           floorDivide(clampedCellIndex(minimum.y(), cell_size), kTileSide)},
+          {floorDivide(clampedCellIndex(maximum.x(), cell_size), kTileSide),
+           floorDivide(clampedCellIndex(maximum.y(), cell_size), kTileSide)}};
+}
+
+/// Calls visit(tile index, tile) for each tile of `tiles` in `range`: by lookup when the range holds fewer
+/// tiles than the map, else by one pass over the map.
+template <class TileMap, class Visit>
+void forEachTileIn(TileMap& tiles, const TileRange& range, Visit visit)
+{
+  if (range.count() <= static_cast<double>(tiles.size())) {
+    for (std::int64_t row = range.first.row; row <= range.last.row; ++row) {
+      for (std::int64_t column = range.first.column; column <= range.last.column; ++column) {
+        const auto found = tiles.find(packCellKey(column, row));
+        if (found != tiles.end()) {
+          visit(CellIndex{column, row}, found->second);
+        }
+      }
+    }
+    return;
+  }
+  for (auto& [key, tile] : tiles) {
+    const CellIndex index = unpackCellKey(key);
+    if (range.contains(index)) {
+      visit(index, tile);
+    }
+  }
+}
 
 }  // namespace
 
@@ -34,15 +144,25 @@ void BackgroundMemory::mark(common::Span<const geometry::Point> points, common::
   }
   ++scans_;
   const bool with_heights = heights_m.size() == points.size();
+  // A scan's returns come in azimuth order: most fall in the tile of the one before.
+  std::uint64_t last_key = 0;
+  Tile* last_tile = nullptr;
   for (std::size_t index = 0; index < points.size(); ++index) {
-    const geometry::Point& point = points[index];
-    const double column = std::floor(point.x() / cell_size_);
-    const double row = std::floor(point.y() / cell_size_);
-    if (!std::isfinite(column) || !std::isfinite(row) || std::abs(column) > kLargestCellIndex ||
-        std::abs(row) > kLargestCellIndex) {
+    const std::optional<CellIndex> at = cellIndexOf(points[index], cell_size_);
+    if (!at) {
       continue;
     }
-    Cell& cell = cells_[packCellKey(static_cast<std::int64_t>(column), static_cast<std::int64_t>(row))];
+    const auto [tile_index, slot] = tileSlotOf(*at);
+    const std::uint64_t key = packCellKey(tile_index.column, tile_index.row);
+    if (last_tile == nullptr || key != last_key) {
+      last_tile = &tiles_[key];  // references into an unordered_map stay valid as it grows
+      last_key = key;
+    }
+    Cell& cell = last_tile->cells[slot];
+    if (cell.votes == 0) {
+      ++last_tile->live;
+      ++size_;
+    }
     const double height_cm =
         with_heights && std::isfinite(heights_m[index]) ? 100.0 * heights_m[index] : kTallest;
     cell.top_cm = std::max(cell.top_cm, static_cast<std::uint8_t>(std::clamp(height_cm, 0.0, kTallest)));
@@ -54,6 +174,13 @@ void BackgroundMemory::mark(common::Span<const geometry::Point> points, common::
   }
 }
 
+void BackgroundMemory::clear(Tile& tile, std::size_t index)
+{
+  tile.cells[index] = Cell{};
+  --tile.live;
+  --size_;
+}
+
 ForgetStats BackgroundMemory::forgetSeenThrough(const FreeSpaceView& view, double range_m)
 {
   ForgetStats stats;
@@ -61,24 +188,35 @@ ForgetStats BackgroundMemory::forgetSeenThrough(const FreeSpaceView& view, doubl
     return stats;
   }
   const geometry::Point& origin = view.origin();
-  for (auto cell = cells_.begin(); cell != cells_.end();) {
-    const geometry::Point centre = centreOf(cell->first);
-    if ((centre - origin).squaredNorm() > range_m * range_m) {
-      ++cell;
-      continue;
+  const geometry::Point reach = geometry::Point::Constant(range_m);
+  std::vector<std::uint64_t> emptied;
+  const auto forget_in_tile = [&](const CellIndex& at, Tile& tile) {
+    for (std::size_t index = 0; index < tile.cells.size(); ++index) {
+      Cell& cell = tile.cells[index];
+      if (cell.votes == 0) {
+        continue;
+      }
+      const geometry::Point centre = centreOf(at, index, cell_size_);
+      if ((centre - origin).squaredNorm() > range_m * range_m) {
+        continue;
+      }
+      ++stats.checked;
+      if (!view.seesThrough(centre, cell_size_, cell.top_cm / 100.0)) {
+        continue;
+      }
+      ++stats.seen_through;
+      if (--cell.votes == 0) {
+        ++stats.forgotten;
+        clear(tile, index);
+      }
     }
-    ++stats.checked;
-    if (!view.seesThrough(centre, cell_size_, cell->second.top_cm / 100.0)) {
-      ++cell;
-      continue;
+    if (tile.live == 0) {
+      emptied.push_back(packCellKey(at.column, at.row));
     }
-    ++stats.seen_through;
-    if (--cell->second.votes == 0) {
-      ++stats.forgotten;
-      cell = cells_.erase(cell);
-    } else {
-      ++cell;
-    }
+  };
+  forEachTileIn(tiles_, tileRangeOf(origin - reach, origin + reach, cell_size_), forget_in_tile);
+  for (const std::uint64_t key : emptied) {
+    tiles_.erase(key);
   }
   return stats;
 }
@@ -86,35 +224,28 @@ ForgetStats BackgroundMemory::forgetSeenThrough(const FreeSpaceView& view, doubl
 std::size_t BackgroundMemory::forgetMarkedBefore(std::uint32_t first_mark)
 {
   std::size_t forgotten = 0;
-  for (auto cell = cells_.begin(); cell != cells_.end();) {
-    if (!cell->second.decided && cell->second.last_scan < first_mark) {
-      cell = cells_.erase(cell);
-      ++forgotten;
-    } else {
-      ++cell;
+  for (auto tile = tiles_.begin(); tile != tiles_.end();) {
+    for (std::size_t index = 0; index < tile->second.cells.size(); ++index) {
+      const Cell& cell = tile->second.cells[index];
+      if (cell.votes > 0 && !cell.decided && cell.last_scan < first_mark) {
+        clear(tile->second, index);
+        ++forgotten;
+      }
     }
+    tile = tile->second.live == 0 ? tiles_.erase(tile) : std::next(tile);
   }
   return forgotten;
 }
 
 int BackgroundMemory::votesAt(const geometry::Point& point) const
 {
-  const double column = std::floor(point.x() / cell_size_);
-  const double row = std::floor(point.y() / cell_size_);
-  if (!std::isfinite(column) || !std::isfinite(row) || std::abs(column) > kLargestCellIndex ||
-      std::abs(row) > kLargestCellIndex) {
+  const std::optional<CellIndex> at = cellIndexOf(point, cell_size_);
+  if (!at) {
     return 0;
   }
-  const auto found =
-      cells_.find(packCellKey(static_cast<std::int64_t>(column), static_cast<std::int64_t>(row)));
-  return found == cells_.end() ? 0 : found->second.votes;
-}
-
-geometry::Point BackgroundMemory::centreOf(std::uint64_t cell) const
-{
-  const auto column = static_cast<std::int32_t>(static_cast<std::uint32_t>(cell >> 32U));
-  const auto row = static_cast<std::int32_t>(static_cast<std::uint32_t>(cell & 0xFFFFFFFFU));
-  return geometry::Point((column + 0.5) * cell_size_, (row + 0.5) * cell_size_);
+  const auto [tile_index, slot] = tileSlotOf(*at);
+  const auto found = tiles_.find(packCellKey(tile_index.column, tile_index.row));
+  return found == tiles_.end() ? 0 : found->second.cells[slot].votes;
 }
 
 std::size_t BackgroundMemory::rememberOutline(const geometry::Polygon& outline)
@@ -124,7 +255,7 @@ std::size_t BackgroundMemory::rememberOutline(const geometry::Polygon& outline)
                    [](const geometry::Point& vertex) { return vertex.allFinite(); })) {
     return 0;
   }
-  const std::size_t before = cells_.size();
+  const std::size_t before = size_;
   std::vector<geometry::Point> samples;
   for (std::size_t index = 0; index < outline.size(); ++index) {
     const geometry::Point& start = outline[index];
@@ -141,7 +272,7 @@ std::size_t BackgroundMemory::rememberOutline(const geometry::Polygon& outline)
     }
   }
   remember(common::Span<const geometry::Point>(samples.data(), samples.size()));
-  return cells_.size() - before;
+  return size_ - before;
 }
 
 std::size_t BackgroundMemory::rememberInflatedOutline(const geometry::Polygon& inflated_outline,
@@ -185,13 +316,30 @@ std::vector<geometry::Point> BackgroundMemory::cellsWithin(const geometry::Point
                                                            const geometry::Point& maximum) const
 {
   std::vector<geometry::Point> centres;
-  for (const auto& cell : cells_) {
-    const geometry::Point centre = centreOf(cell.first);
-    if (centre.x() >= minimum.x() && centre.y() >= minimum.y() && centre.x() < maximum.x() &&
-        centre.y() < maximum.y()) {
-      centres.push_back(centre);
-    }
+  if (!(cell_size_ > 0.0) || !std::isfinite(cell_size_)) {
+    return centres;
   }
+  centres.reserve(size_);
+  const double tile_size = cell_size_ * static_cast<double>(kTileSide);
+  const auto take_from_tile = [&](const CellIndex& at, const Tile& tile) {
+    const geometry::Point tile_minimum(static_cast<double>(at.column) * tile_size,
+                                       static_cast<double>(at.row) * tile_size);
+    const geometry::Point tile_maximum = tile_minimum + geometry::Point::Constant(tile_size);
+    // A tile wholly inside the window needs no test per cell (most tiles, for the layer's square).
+    const bool inside = tile_minimum.x() >= minimum.x() && tile_minimum.y() >= minimum.y() &&
+                        tile_maximum.x() < maximum.x() && tile_maximum.y() < maximum.y();
+    for (std::size_t index = 0; index < tile.cells.size(); ++index) {
+      if (tile.cells[index].votes == 0) {
+        continue;
+      }
+      const geometry::Point centre = centreOf(at, index, cell_size_);
+      if (inside || (centre.x() >= minimum.x() && centre.y() >= minimum.y() && centre.x() < maximum.x() &&
+                     centre.y() < maximum.y())) {
+        centres.push_back(centre);
+      }
+    }
+  };
+  forEachTileIn(tiles_, tileRangeOf(minimum, maximum, cell_size_), take_from_tile);
   return centres;
 }
 

@@ -8,6 +8,7 @@
 // per scan that hits it, one fewer per scan whose rays pass through it), so what later scans see through
 // goes, and a door smeared shut or a wall drawn across the vehicle from a bad pose does not stay.
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <unordered_map>
@@ -29,6 +30,11 @@ struct ForgetStats {
 
 class BackgroundMemory {
  public:
+  /// Cells are kept in square tiles of kTileSide x kTileSide cells, each tile a dense block: a range query
+  /// (the layer's square, the carve circle) visits the tiles it overlaps in memory order instead of every
+  /// cell of a hash map, so its cost follows the area it asks for, not the length of the drive.
+  static constexpr std::int64_t kTileSide = 16;
+
   /// Cells `cell_size_m` wide (the local layer's), cell (i, j) covering [i, i + 1) x [j, j + 1) cell sizes.
   /// A cell size that is not a positive number remembers nothing. A cell holds up to `max_votes` votes.
   explicit BackgroundMemory(double cell_size_m, int max_votes = 1);
@@ -64,27 +70,34 @@ class BackgroundMemory {
   std::vector<geometry::Point> cellsWithin(const geometry::Point& minimum,
                                            const geometry::Point& maximum) const;
 
-  std::size_t size() const { return cells_.size(); }
+  std::size_t size() const { return size_; }
   double cellSize() const { return cell_size_; }
   /// The votes of the cell holding `point` (0: not remembered).
   int votesAt(const geometry::Point& point) const;
 
  private:
-  void mark(common::Span<const geometry::Point> points, common::Span<const float> heights_m, int votes,
-            bool decided = false);
-  geometry::Point centreOf(std::uint64_t cell) const;
-
   struct Cell {
-    std::uint8_t votes = 0;
+    std::uint8_t votes = 0;       // 0: not remembered (the other fields are then at their defaults)
     std::uint8_t top_cm = 0;      // the highest return seen in it, centimetres above the ground
     bool decided = false;         // an unpushable object's: kept by forgetMarkedBefore
     std::uint32_t last_scan = 0;  // the scan that last gave it a vote
   };
+  struct Tile {
+    std::array<Cell, kTileSide * kTileSide> cells{};
+    std::int32_t live = 0;  // cells with votes
+  };
+  using Tiles = std::unordered_map<std::uint64_t, Tile>;
+
+  void mark(common::Span<const geometry::Point> points, common::Span<const float> heights_m, int votes,
+            bool decided = false);
+  /// Forgets the cell at `index` of `tile` (its votes are gone).
+  void clear(Tile& tile, std::size_t index);
 
   double cell_size_;
   int max_votes_;
   std::uint32_t scans_ = 0;
-  std::unordered_map<std::uint64_t, Cell> cells_;  // column and row packed into one key
+  Tiles tiles_;  // tile column and row packed into one key
+  std::size_t size_ = 0;
 };
 
 }  // namespace ifar::perception

@@ -70,19 +70,6 @@ void traceContours(const cv::Mat& image, const LayerGrid& grid, ObstacleClass ob
   }
 }
 
-std::vector<std::uint8_t> occupancyOf(const cv::Mat& image)
-{
-  std::vector<std::uint8_t> cells(image.total());
-  for (int row = 0; row < image.rows; ++row) {
-    const std::uint8_t* source = image.ptr<std::uint8_t>(row);
-    for (int column = 0; column < image.cols; ++column) {
-      cells[static_cast<std::size_t>(row) * static_cast<std::size_t>(image.cols) +
-            static_cast<std::size_t>(column)] = source[column] != 0 ? 1 : 0;
-    }
-  }
-  return cells;
-}
-
 }  // namespace
 
 geometry::Point LayerGrid::cellCentre(int column, int row) const
@@ -170,14 +157,18 @@ LocalLayer buildLocalLayer(const ClassifiedPoints& points, const geometry::Point
   // Each class gets its own image: a movable object must not merge into the wall it leans on.
   const auto build_class = [&](const std::vector<geometry::Point>& class_points, ObstacleClass obstacle_class,
                                std::vector<std::uint8_t>& occupancy) {
-    cv::Mat image = cv::Mat::zeros(cells, cells, CV_8UC1);
+    occupancy.assign(static_cast<std::size_t>(cells) * static_cast<std::size_t>(cells), 0);
+    if (class_points.empty()) {
+      return;
+    }
+    // The image is a view of the occupancy vector (row-major, one byte a cell): no copy between them.
+    cv::Mat image(cells, cells, CV_8UC1, occupancy.data());
     // The crop holds every point inside the layer, so what falls outside it is outside the layer.
     layer.points_outside_layer += rasterise(class_points, layer.grid, image);
-    if (!class_points.empty()) {
-      cv::dilate(image, image, kernel, cv::Point(-1, -1), 1, cv::BORDER_CONSTANT, cv::Scalar(0));
-      traceContours(image, layer.grid, obstacle_class, settings, layer);
-    }
-    occupancy = occupancyOf(image);
+    cv::dilate(image, image, kernel, cv::Point(-1, -1), 1, cv::BORDER_CONSTANT, cv::Scalar(0));
+    traceContours(image, layer.grid, obstacle_class, settings, layer);
+    std::transform(occupancy.begin(), occupancy.end(), occupancy.begin(),
+                   [](std::uint8_t cell) { return static_cast<std::uint8_t>(cell != 0 ? 1 : 0); });
   };
   build_class(points.background, ObstacleClass::Background, layer.background_occupancy);
   build_class(points.movable, ObstacleClass::Movable, layer.movable_occupancy);

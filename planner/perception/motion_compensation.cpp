@@ -6,19 +6,43 @@
 
 namespace ifar::perception {
 
+ScanPoseInterpolator::ScanPoseInterpolator(const ScanMotion& motion)
+    : motion_(motion),
+      start_rotation_(motion.vehicle_at_start.rotation()),
+      end_rotation_(motion.vehicle_at_end.rotation())
+{
+  const double dot = start_rotation_.dot(end_rotation_);
+  if (std::abs(dot) < 1.0 - std::numeric_limits<double>::epsilon()) {
+    angle_ = std::acos(std::abs(dot));
+    sin_angle_ = std::sin(angle_);
+  }
+  end_sign_ = dot < 0.0 ? -1.0 : 1.0;
+}
+
+Eigen::Isometry3d ScanPoseInterpolator::at(double time_offset_s) const
+{
+  if (!(motion_.duration_s > 0.0)) {
+    return motion_.vehicle_at_end;
+  }
+  const double fraction = std::clamp(time_offset_s / motion_.duration_s, 0.0, 1.0);
+  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+  double start_scale = 1.0 - fraction;
+  double end_scale = fraction;
+  if (sin_angle_ > 0.0) {
+    start_scale = std::sin((1.0 - fraction) * angle_) / sin_angle_;
+    end_scale = std::sin(fraction * angle_) / sin_angle_;
+  }
+  const Eigen::Quaterniond rotation(start_scale * start_rotation_.coeffs() +
+                                    end_sign_ * end_scale * end_rotation_.coeffs());
+  pose.linear() = rotation.toRotationMatrix();
+  pose.translation() = (1.0 - fraction) * motion_.vehicle_at_start.translation() +
+                       fraction * motion_.vehicle_at_end.translation();
+  return pose;
+}
+
 Eigen::Isometry3d interpolateVehiclePose(const ScanMotion& motion, double time_offset_s)
 {
-  if (!(motion.duration_s > 0.0)) {
-    return motion.vehicle_at_end;
-  }
-  const double fraction = std::clamp(time_offset_s / motion.duration_s, 0.0, 1.0);
-  const Eigen::Quaterniond start_rotation(motion.vehicle_at_start.rotation());
-  const Eigen::Quaterniond end_rotation(motion.vehicle_at_end.rotation());
-  Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
-  pose.linear() = start_rotation.slerp(fraction, end_rotation).toRotationMatrix();
-  pose.translation() = (1.0 - fraction) * motion.vehicle_at_start.translation() +
-                       fraction * motion.vehicle_at_end.translation();
-  return pose;
+  return ScanPoseInterpolator(motion).at(time_offset_s);
 }
 
 SensorMount lidarMount(const common::VehicleSettings& vehicle)
@@ -42,8 +66,9 @@ std::vector<WorldPoint> compensateMotion(common::Span<const SensorPoint> points,
 {
   std::vector<WorldPoint> output;
   output.reserve(points.size());
-  // A VLP-16 fires 16 lasers at one instant: consecutive points often share a time, so the pose is
-  // only re-interpolated when the time changes.
+  // Consecutive points may share a time (a sensor that fires its lasers at once), so the pose is only
+  // re-interpolated when the time changes.
+  const ScanPoseInterpolator poses(motion);
   double cached_time = std::numeric_limits<double>::quiet_NaN();
   Eigen::Isometry3d sensor_to_world = Eigen::Isometry3d::Identity();
   double ground_height = 0.0;
@@ -60,7 +85,7 @@ std::vector<WorldPoint> compensateMotion(common::Span<const SensorPoint> points,
     }
     if (!(point.time_offset_s == cached_time)) {
       cached_time = point.time_offset_s;
-      const Eigen::Isometry3d vehicle = interpolateVehiclePose(motion, point.time_offset_s);
+      const Eigen::Isometry3d vehicle = poses.at(point.time_offset_s);
       sensor_to_world = vehicle * mount;
       ground_height = vehicle.translation().z();
     }

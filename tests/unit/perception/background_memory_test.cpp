@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -49,6 +51,62 @@ TEST(BackgroundMemory, GivesOnlyTheCellsInsideTheWindow)
     EXPECT_LT(cell.x(), 10.0);
     EXPECT_DOUBLE_EQ(cell.y(), 3.25);
   }
+}
+
+TEST(BackgroundMemory, WindowsAcrossTilesAndNegativeCellsGiveWhatABruteForceGives)
+{
+  // Cells are stored in tiles: windows that cut tiles, cells on either side of zero and cells far from
+  // the origin must come back exactly as a scan of every remembered cell would give them.
+  constexpr double kCell = 0.15;
+  BackgroundMemory memory(kCell);
+  std::vector<Point> points;
+  std::uint64_t state = 12345;
+  const auto uniform = [&state](double low, double high) {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return low + (high - low) * static_cast<double>(state >> 11U) / 9007199254740992.0;
+  };
+  for (int index = 0; index < 3000; ++index) {
+    points.emplace_back(uniform(-20.0, 20.0), uniform(-20.0, 20.0));
+  }
+  points.emplace_back(-100000.0, 250000.0);
+  memory.remember(spanOf(points));
+  std::vector<std::pair<std::int64_t, std::int64_t>> distinct;
+  for (const Point& point : points) {
+    distinct.emplace_back(static_cast<std::int64_t>(std::floor(point.x() / kCell)),
+                          static_cast<std::int64_t>(std::floor(point.y() / kCell)));
+  }
+  std::sort(distinct.begin(), distinct.end());
+  distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
+  ASSERT_EQ(memory.size(), distinct.size());
+  const auto key = [](const Point& centre) {
+    return std::make_pair(static_cast<std::int64_t>(std::floor(centre.x() / kCell)),
+                          static_cast<std::int64_t>(std::floor(centre.y() / kCell)));
+  };
+  for (int window = 0; window < 50; ++window) {
+    const Point minimum(uniform(-25.0, 15.0), uniform(-25.0, 15.0));
+    const Point maximum = minimum + Point(uniform(0.0, 12.0), uniform(0.0, 12.0));
+    std::vector<std::pair<std::int64_t, std::int64_t>> expected;
+    for (const auto& [column, row] : distinct) {
+      const Point centre((column + 0.5) * kCell, (row + 0.5) * kCell);
+      if (centre.x() >= minimum.x() && centre.y() >= minimum.y() && centre.x() < maximum.x() &&
+          centre.y() < maximum.y()) {
+        expected.emplace_back(column, row);
+      }
+    }
+    std::vector<std::pair<std::int64_t, std::int64_t>> got;
+    for (const Point& centre : memory.cellsWithin(minimum, maximum)) {
+      got.push_back(key(centre));
+    }
+    std::sort(got.begin(), got.end());
+    EXPECT_EQ(got, expected) << "window " << window;
+  }
+  const std::vector<Point> far = memory.cellsWithin(Point(-100001.0, 249999.0), Point(-99999.0, 250001.0));
+  ASSERT_EQ(far.size(), 1U);
+  EXPECT_EQ(memory.votesAt(Point(-100000.0, 250000.0)), 1);
+  EXPECT_EQ(memory.cellsWithin(Point(-1e300, -1e300), Point(1e300, 1e300)).size(), distinct.size());
+  EXPECT_EQ(memory.forgetMarkedBefore(memory.markCount() + 1), distinct.size());
+  EXPECT_EQ(memory.size(), 0U);
+  EXPECT_TRUE(memory.cellsWithin(Point(-30.0, -30.0), Point(30.0, 30.0)).empty());
 }
 
 TEST(BackgroundMemory, SkipsNonFiniteAndFarPointsAndUnusableCellSizes)

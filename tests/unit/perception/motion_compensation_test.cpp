@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <limits>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -45,6 +47,40 @@ TEST(MotionCompensation, InterpolatesPositionAndHeading)
   EXPECT_NEAR(middle.translation().y(), 0.0, 1e-12);
   const Eigen::Vector3d forward = middle.linear() * Eigen::Vector3d::UnitX();
   EXPECT_NEAR(std::atan2(forward.y(), forward.x()), kPi / 4.0, 1e-12);
+}
+
+TEST(MotionCompensation, TheScanInterpolatorIsEigensSlerpWithTheAngleTakenOnce)
+{
+  // Pairs of rotations: a small turn, a pair whose quaternions point apart (negative dot product: the
+  // end is negated to turn the short way), the same
+  // rotation twice (linear interpolation), and a general 3-D one.
+  const std::vector<std::pair<Eigen::Matrix3d, Eigen::Matrix3d>> pairs = {
+      {Eigen::Matrix3d::Identity(), Eigen::AngleAxisd(0.03, Eigen::Vector3d::UnitZ()).toRotationMatrix()},
+      {Eigen::AngleAxisd(2.0, Eigen::Vector3d::UnitX()).toRotationMatrix(),
+       Eigen::AngleAxisd(-2.5, Eigen::Vector3d::UnitY()).toRotationMatrix()},
+      {Eigen::AngleAxisd(1.0, Eigen::Vector3d::UnitX()).toRotationMatrix(),
+       Eigen::AngleAxisd(1.0, Eigen::Vector3d::UnitX()).toRotationMatrix()},
+      {Eigen::AngleAxisd(0.4, Eigen::Vector3d(1.0, 2.0, 3.0).normalized()).toRotationMatrix(),
+       Eigen::AngleAxisd(-1.1, Eigen::Vector3d(-2.0, 0.5, 1.0).normalized()).toRotationMatrix()}};
+  for (const auto& [start, end] : pairs) {
+    ScanMotion motion;
+    motion.vehicle_at_start = Eigen::Isometry3d::Identity();
+    motion.vehicle_at_start.linear() = start;
+    motion.vehicle_at_end = Eigen::Isometry3d::Identity();
+    motion.vehicle_at_end.linear() = end;
+    motion.vehicle_at_end.translation() = Eigen::Vector3d(1.0, -2.0, 0.5);
+    motion.duration_s = 0.1;
+    if (&start == &pairs[1].first) {
+      ASSERT_LT(Eigen::Quaterniond(start).dot(Eigen::Quaterniond(end)), 0.0);
+    }
+    const ScanPoseInterpolator poses(motion);
+    for (double time = 0.0; time <= 0.1; time += 0.0037) {
+      const Eigen::Matrix3d expected =
+          Eigen::Quaterniond(start).slerp(time / 0.1, Eigen::Quaterniond(end)).toRotationMatrix();
+      EXPECT_LT((poses.at(time).linear() - expected).cwiseAbs().maxCoeff(), 1e-15) << "time " << time;
+      EXPECT_LT((poses.at(time).translation() - Eigen::Vector3d(1.0, -2.0, 0.5) * time / 0.1).norm(), 1e-15);
+    }
+  }
 }
 
 TEST(MotionCompensation, ClampsTimesOutsideTheScan)
