@@ -57,6 +57,8 @@ BuildStats addReducedVisibilityGraph(const ObstacleSet& obstacles, DvGraph& grap
   double next_report = 0.05;
   for (std::size_t i = 0; i < count; ++i) {
     const LoopCorner& first = corners[i];
+    // Lines from one corner in nearby directions are mostly blocked by the same wall: try that first.
+    SectorBlockerCache blockers(first.position);
     for (std::size_t j = i + 1; j < count; ++j) {
       const LoopCorner& second = corners[j];
       const geometry::Vector direction = second.position - first.position;
@@ -64,7 +66,7 @@ BuildStats addReducedVisibilityGraph(const ObstacleSet& obstacles, DvGraph& grap
         continue;
       }
       ++stats.tangent_pairs;
-      if (obstacles.visible(first.position, second.position) &&
+      if (obstacles.visibleFrom(second.position, blockers) &&
           graph.addVisibilityEdge(ids[i], ids[j]) == EdgeStatus::Added) {
         ++stats.edges;
       }
