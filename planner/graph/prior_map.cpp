@@ -1,5 +1,8 @@
 #include "planner/graph/prior_map.hpp"
 
+#include <algorithm>
+#include <thread>
+
 #include "common/grid_map/boundaries.hpp"
 
 namespace ifar::graph {
@@ -14,7 +17,8 @@ PriorMap buildPriorMap(const grid_map::GridMap& map, double inflate_radius,
   }
   const Bounds bounds{map.cornerToWorld(0, 0), map.cornerToWorld(map.width(), map.height())};
   PriorMap prior{ObstacleSet(std::move(loops), bounds), DvGraph(), BuildStats()};
-  prior.stats = addReducedVisibilityGraph(prior.obstacles, prior.graph, nullptr, progress);
+  prior.stats = addReducedVisibilityGraph(prior.obstacles, prior.graph, nullptr, progress,
+                                          std::max(1U, std::thread::hardware_concurrency()));
   return prior;
 }
 

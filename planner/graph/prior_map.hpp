@@ -16,7 +16,8 @@ struct PriorMap {
 
 /// Inflates the grid by `inflate_radius` (world units; 0 keeps the exact GPPC geometry), traces the
 /// cell-boundary loops (the map's rim included, everything outside is blocked) and builds the reduced
-/// visibility graph. Unknown cells count as `unknown_policy` says.
+/// visibility graph on every core of the machine (a one-off build before the run). Unknown cells count
+/// as `unknown_policy` says.
 PriorMap buildPriorMap(const grid_map::GridMap& map, double inflate_radius,
                        grid_map::UnknownPolicy unknown_policy = grid_map::UnknownPolicy::AsFree,
                        const ProgressCallback& progress = {});

@@ -1,5 +1,10 @@
 #include "planner/graph/visibility_builder.hpp"
 
+#include <algorithm>
+#include <atomic>
+#include <cstdint>
+#include <thread>
+
 namespace ifar::graph {
 
 bool tangentAtBothEnds(const Vertex& first, const Vertex& second)
@@ -30,8 +35,41 @@ std::size_t connectByVisibility(const ObstacleSet& obstacles, DvGraph& graph, Ve
   return added;
 }
 
+namespace {
+
+/// The corners after `first` (indices into `corners`) that `first` sees along a line tangent at both
+/// ends, and how many pairs were tangent.
+struct RowResult {
+  std::vector<std::uint32_t> visible;
+  std::size_t tangent_pairs = 0;
+};
+
+RowResult visibleAfter(const ObstacleSet& obstacles, const std::vector<LoopCorner>& corners,
+                       std::size_t first)
+{
+  RowResult row;
+  const LoopCorner& from = corners[first];
+  // Lines from one corner in nearby directions are mostly blocked by the same wall: try that first.
+  SectorBlockerCache blockers(from.position);
+  for (std::size_t second = first + 1; second < corners.size(); ++second) {
+    const LoopCorner& to = corners[second];
+    const geometry::Vector direction = to.position - from.position;
+    if (!isTangent(from, direction) || !isTangent(to, -direction)) {
+      continue;
+    }
+    ++row.tangent_pairs;
+    if (obstacles.visibleFrom(to.position, blockers)) {
+      row.visible.push_back(static_cast<std::uint32_t>(second));
+    }
+  }
+  return row;
+}
+
+}  // namespace
+
 BuildStats addReducedVisibilityGraph(const ObstacleSet& obstacles, DvGraph& graph,
-                                     std::vector<VertexId>* added, const ProgressCallback& progress)
+                                     std::vector<VertexId>* added, const ProgressCallback& progress,
+                                     unsigned threads)
 {
   BuildStats stats;
   std::vector<LoopCorner> corners;
@@ -51,30 +89,46 @@ BuildStats addReducedVisibilityGraph(const ObstacleSet& obstacles, DvGraph& grap
   }
   stats.corners = corners.size();
   const std::size_t count = corners.size();
-  // Pair work shrinks with i; report progress by pairs done.
+  // Rows (one corner against every later one) are tested on `threads` threads, each taking the next row
+  // not yet taken; the edges are then added row by row, so the graph is the same for any thread count.
+  std::vector<RowResult> rows(count);
+  std::atomic<std::size_t> next_row{0};
+  std::atomic<std::size_t> pairs_done{0};
+  const auto work = [&] {
+    for (std::size_t row = next_row++; row < count; row = next_row++) {
+      rows[row] = visibleAfter(obstacles, corners, row);
+      pairs_done += count - row;
+    }
+  };
+  std::vector<std::thread> helpers;
+  for (unsigned helper = 1; helper < std::max(1U, threads) && helper < count; ++helper) {
+    helpers.emplace_back(work);
+  }
+  // This thread works too, and alone reports progress (by pairs done: a row's work shrinks with its index).
   const double total_pairs = 0.5 * static_cast<double>(count) * static_cast<double>(count + 1);
-  double pairs_done = 0.0;
   double next_report = 0.05;
-  for (std::size_t i = 0; i < count; ++i) {
-    const LoopCorner& first = corners[i];
-    // Lines from one corner in nearby directions are mostly blocked by the same wall: try that first.
-    SectorBlockerCache blockers(first.position);
-    for (std::size_t j = i + 1; j < count; ++j) {
-      const LoopCorner& second = corners[j];
-      const geometry::Vector direction = second.position - first.position;
-      if (!isTangent(first, direction) || !isTangent(second, -direction)) {
-        continue;
-      }
-      ++stats.tangent_pairs;
-      if (obstacles.visibleFrom(second.position, blockers) &&
-          graph.addVisibilityEdge(ids[i], ids[j]) == EdgeStatus::Added) {
+  double reported = 0.0;
+  for (std::size_t row = next_row++; row < count; row = next_row++) {
+    rows[row] = visibleAfter(obstacles, corners, row);
+    const double done = static_cast<double>(pairs_done += count - row) / total_pairs;
+    if (progress && total_pairs > 0.0 && done >= next_report) {
+      progress(done);
+      reported = done;
+      next_report += 0.05;
+    }
+  }
+  for (std::thread& helper : helpers) {
+    helper.join();
+  }
+  if (progress && count > 0 && reported < 1.0) {
+    progress(1.0);  // the helpers may have taken the last rows (or all of them)
+  }
+  for (std::size_t row = 0; row < count; ++row) {
+    stats.tangent_pairs += rows[row].tangent_pairs;
+    for (const std::uint32_t other : rows[row].visible) {
+      if (graph.addVisibilityEdge(ids[row], ids[other]) == EdgeStatus::Added) {
         ++stats.edges;
       }
-    }
-    pairs_done += static_cast<double>(count - i);
-    if (progress && total_pairs > 0.0 && pairs_done / total_pairs >= next_report) {
-      progress(pairs_done / total_pairs);
-      next_report += 0.05;
     }
   }
   if (added != nullptr) {

@@ -21,10 +21,12 @@ struct BuildStats {
 using ProgressCallback = std::function<void(double)>;
 
 /// Adds every convex corner of `obstacles` to `graph` (kind Corner, object id of its loop) and the
-/// visibility edges between them. Returns the ids of the added corners in `added` when not null.
+/// visibility edges between them. Returns the ids of the added corners in `added` when not null. The
+/// visibility tests run on `threads` threads (the calling one included); the graph is the same for any
+/// number. `progress` is called on the calling thread.
 BuildStats addReducedVisibilityGraph(const ObstacleSet& obstacles, DvGraph& graph,
                                      std::vector<VertexId>* added = nullptr,
-                                     const ProgressCallback& progress = {});
+                                     const ProgressCallback& progress = {}, unsigned threads = 1);
 
 /// Adds visibility edges from vertex `id` (e.g. a new topological waypoint) to every live vertex it sees,
 /// keeping the reduced-graph tangency rule at corner ends. Returns the number of edges added.
