@@ -94,29 +94,32 @@ BuildStats addReducedVisibilityGraph(const ObstacleSet& obstacles, DvGraph& grap
   std::vector<RowResult> rows(count);
   std::atomic<std::size_t> next_row{0};
   std::atomic<std::size_t> pairs_done{0};
-  const auto work = [&] {
+  // Takes rows until none is left; gives `row_done`, when set, the fraction of pairs done after each (a
+  // row's work shrinks with its index).
+  const double total_pairs = 0.5 * static_cast<double>(count) * static_cast<double>(count + 1);
+  const auto work = [&](const ProgressCallback& row_done) {
     for (std::size_t row = next_row++; row < count; row = next_row++) {
       rows[row] = visibleAfter(obstacles, corners, row);
-      pairs_done += count - row;
+      const std::size_t done = pairs_done += count - row;
+      if (row_done) {
+        row_done(static_cast<double>(done) / total_pairs);
+      }
     }
   };
   std::vector<std::thread> helpers;
   for (unsigned helper = 1; helper < std::max(1U, threads) && helper < count; ++helper) {
-    helpers.emplace_back(work);
+    helpers.emplace_back(work, ProgressCallback());
   }
-  // This thread works too, and alone reports progress (by pairs done: a row's work shrinks with its index).
-  const double total_pairs = 0.5 * static_cast<double>(count) * static_cast<double>(count + 1);
+  // This thread works too, and alone reports progress.
   double next_report = 0.05;
   double reported = 0.0;
-  for (std::size_t row = next_row++; row < count; row = next_row++) {
-    rows[row] = visibleAfter(obstacles, corners, row);
-    const double done = static_cast<double>(pairs_done += count - row) / total_pairs;
-    if (progress && total_pairs > 0.0 && done >= next_report) {
+  work([&](double done) {
+    if (progress && done >= next_report) {
       progress(done);
       reported = done;
       next_report += 0.05;
     }
-  }
+  });
   for (std::thread& helper : helpers) {
     helper.join();
   }
