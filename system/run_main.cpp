@@ -297,6 +297,19 @@ int main(int argc, char** argv)
         summary.replans, summary.affordance_updates, summary.goal_distance_m, summary.planner_frame.frames,
         summary.planner_frame.median_ms, summary.planner_frame.p99_ms, summary.planner_frame.max_ms,
         summary.interaction.median_ms, summary.interaction.p99_ms, summary.interaction.max_ms);
+    const ifar::runner::LossAccount& losses = summary.losses;
+    if (losses.valid) {
+      const ifar::runner::LossBuckets& buckets = losses.buckets;
+      std::printf(
+          "beyond the achievable way (%.2f m, %.2f m of it left): %.2f m = exploring %.2f + attempts %.2f + "
+          "route switches %.2f + route choice %.2f + execution %.2f + push overhead %.2f (routes %d, %d "
+          "switched)\n",
+          losses.achievable_m, losses.remaining_m, losses.excess_m, buckets.exploring_m, buckets.attempts_m,
+          buckets.route_switches_m, buckets.route_choice_m, buckets.execution_m, buckets.push_overhead_m,
+          summary.routes, summary.routes_switched);
+    } else if (!losses.problem.empty()) {
+      std::printf("no loss accounting: %s\n", losses.problem.c_str());
+    }
   }
   if (!pictures_written) {
     return kExitBadInput;

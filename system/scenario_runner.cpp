@@ -14,6 +14,8 @@
 
 #include "common/percentile.hpp"
 #include "executive/modes/mode.hpp"
+#include "system/achievable_map.hpp"
+#include "system/run_trace.hpp"
 #include "system/saturated_push_watch.hpp"
 #include "system/simulated_stack.hpp"
 
@@ -93,6 +95,7 @@ class Scenario {
                        std::int64_t now_us);
   void executiveCycled(const executive::ExecutiveOutputs& outputs, std::int64_t now_us);
   void report(std::int64_t now_us) const;
+  void accountLosses();
   double simulatedSeconds(std::int64_t now_us) const;
 
   const RunRequest& request_;
@@ -110,6 +113,7 @@ class Scenario {
   SaturatedPushWatch saturated_pushes_;
   std::vector<double> frame_ms_;        // per planner frame, for summary_.planner_frame
   std::vector<double> interaction_ms_;  // ... and summary_.interaction
+  RunTraceRecorder trace_;
   RunSummary summary_;
 };
 
@@ -145,6 +149,7 @@ void Scenario::simulatorStepped(const sim::SimulatorStep& step)
 {
   summary_.distance_m += (step.output.vehicle.pose.position() - vehicle_.position()).norm();
   vehicle_ = step.output.vehicle.pose;
+  trace_.position(vehicle_.position());
   objects_ = step.output.objects;
   saturated_pushes_.force(step.output.utime, step.output.bumper_force_n);
 }
@@ -153,6 +158,21 @@ void Scenario::plannerFinished(const planner::PlannerJob& job, const planner::Pl
                                std::int64_t now_us)
 {
   const planner::FrameResult& result = finished.result;
+  if (result.path.valid) {
+    std::vector<geometry::Point> polyline;
+    polyline.reserve(result.path.waypoints.size());
+    for (const graph::PathPoint& waypoint : result.path.waypoints) {
+      polyline.push_back(waypoint.position);
+    }
+    const std::optional<graph::ObstacleSet>& obstacles = stack_.planner().observedObstacles();
+    WayOpen way_open;
+    if (obstacles) {
+      way_open = [&obstacles](const geometry::Point& from, const geometry::Point& to) {
+        return obstacles->visible(from, to);
+      };
+    }
+    trace_.plannedPath(std::move(polyline), vehicle_.position(), way_open);
+  }
   if (!job.affordances.empty() || !job.blocked_passages.empty()) {
     // What the executive found and what the planner made of it, on one line.
     for (const std::string& finding : findings_) {
@@ -189,6 +209,11 @@ void Scenario::executiveCycled(const executive::ExecutiveOutputs& outputs, std::
     ++summary_.blocked_passages;
     findings_.push_back("blocked passage: " + result.blocked_passage->text);
   }
+  const bool found_harder =
+      result.blocked_passage.has_value() ||
+      (result.affordance && result.affordance->reason != executive::AffordanceReason::CostLower);
+  trace_.executiveCycle(
+      ExecutiveCycle{result.status.mode, result.status.target_object_id, result.status.pushes, found_harder});
   const double goal_distance = (vehicle_.position() - request_.goal).norm();
   if (result.status.mode == executive::Mode::Arrived || goal_distance <= request_.planner.arrival_radius_m) {
     summary_.arrived = true;
@@ -218,6 +243,26 @@ void Scenario::report(std::int64_t now_us) const
       executive::modeName(last_status_.mode), last_status_.target.x(), last_status_.target.y(),
       (vehicle_.position() - request_.goal).norm(), last_status_.pushes, last_status_.replans,
       summary_.affordance_updates, last_status_.reason));
+}
+
+void Scenario::accountLosses()
+{
+  const RunTrace trace = trace_.finish();
+  summary_.routes = static_cast<int>(trace.routes.size());
+  summary_.routes_switched =
+      static_cast<int>(std::count_if(trace.routes.begin(), trace.routes.end(), [](const TraceRoute& route) {
+        return route.end == RouteEnd::Switched;
+      }));
+  if (!request_.account_losses) {
+    return;
+  }
+  AchievableMapSettings settings;
+  settings.inflation_m = 0.5 * request_.vehicle.width_m;
+  const PlanningGraph achievable = buildAchievableMap(request_.world, request_.vehicle, settings);
+  graph::SearchScratch scratch;
+  summary_.losses = runner::accountLosses(trace, [&](const geometry::Point& from) {
+    return achievableDistance(achievable, from, request_.goal, scratch);
+  });
 }
 
 RunSummary Scenario::run()
@@ -251,6 +296,7 @@ RunSummary Scenario::run()
   for (const auto& object : objects_) {
     summary_.final_objects.push_back(object.pose);
   }
+  accountLosses();
   return summary_;
 }
 

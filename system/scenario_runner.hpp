@@ -23,6 +23,7 @@
 #include "planner/node/node_settings.hpp"
 #include "sim/node/node_settings.hpp"
 #include "sim/world/world.hpp"
+#include "system/loss_accounting.hpp"
 
 namespace ifar::runner {
 
@@ -47,6 +48,9 @@ struct RunRequest {
   bool known_map = false;
   /// When set, every message the nodes exchange is written to this LCM log (ifar replay, lcm-spy).
   std::string log_path;
+  /// Split the distance driven beyond the achievable way into RunSummary::losses (loss_accounting.hpp).
+  /// Costs a visibility graph of the world at the end of the run.
+  bool account_losses = true;
 };
 
 /// Wall-clock milliseconds of one kind of planner work over a run's frames (this process's clock, so a
@@ -81,6 +85,11 @@ struct RunSummary {
   FrameTimes interaction;                   // its interaction stage alone (no frame budget in the runner)
   std::vector<geometry::Pose2> trajectory;  // ground truth, one per control cycle
   std::vector<geometry::Pose2> final_objects;  // ground truth object poses at the end, world-file order
+  /// Where the distance beyond the achievable way went (valid only when asked for and computable).
+  LossAccount losses;
+  /// The routes the planner chose one after another and how each ended; pushes and how each ended.
+  int routes = 0;
+  int routes_switched = 0;  // given up for a cheaper one while they had not got worse
 };
 
 /// One planner frame of a run as an observer sees it: the simulated time, the planner after the frame,

@@ -21,6 +21,22 @@ std::string timesJson(const FrameTimes& times)
                      jsonNumber(times.median_ms), jsonNumber(times.p99_ms), jsonNumber(times.max_ms));
 }
 
+std::string lossesJson(const LossAccount& losses)
+{
+  if (!losses.valid) {
+    return fmt::format("{{\"valid\":false,\"problem\":{}}}", common::jsonString(losses.problem));
+  }
+  const LossBuckets& buckets = losses.buckets;
+  return fmt::format(
+      "{{\"valid\":true,\"achievable_m\":{},\"remaining_m\":{},\"excess_m\":{},\"exploring_m\":{},"
+      "\"attempts_m\":{},\"route_switches_m\":{},\"route_choice_m\":{},\"execution_m\":{},"
+      "\"push_overhead_m\":{}}}",
+      jsonNumber(losses.achievable_m), jsonNumber(losses.remaining_m), jsonNumber(losses.excess_m),
+      jsonNumber(buckets.exploring_m), jsonNumber(buckets.attempts_m), jsonNumber(buckets.route_switches_m),
+      jsonNumber(buckets.route_choice_m), jsonNumber(buckets.execution_m),
+      jsonNumber(buckets.push_overhead_m));
+}
+
 }  // namespace
 
 std::string summaryJson(const RunSummary& summary)
@@ -29,12 +45,13 @@ std::string summaryJson(const RunSummary& summary)
       "{{\"arrived\":{},\"reason\":{},\"distance_m\":{},\"time_s\":{},\"pushes\":{},\"replans\":{},"
       "\"affordance_updates\":{},\"blocked_passages\":{},\"goal_distance_m\":{},\"wall_time_s\":{},"
       "\"planner_frame_ms\":{},\"interaction_ms\":{},\"undecided_saturated_pushes\":{},"
-      "\"longest_saturated_push_s\":{}}}",
+      "\"longest_saturated_push_s\":{},\"routes\":{},\"routes_switched\":{},\"losses\":{}}}",
       summary.arrived ? "true" : "false", common::jsonString(summary.reason), jsonNumber(summary.distance_m),
       jsonNumber(summary.sim_time_s), summary.pushes, summary.replans, summary.affordance_updates,
       summary.blocked_passages, jsonNumber(summary.goal_distance_m), jsonNumber(summary.wall_time_s),
       timesJson(summary.planner_frame), timesJson(summary.interaction), summary.undecided_saturated_pushes,
-      jsonNumber(summary.longest_saturated_push_s));
+      jsonNumber(summary.longest_saturated_push_s), summary.routes, summary.routes_switched,
+      lossesJson(summary.losses));
 }
 
 }  // namespace ifar::runner

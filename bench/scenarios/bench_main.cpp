@@ -123,6 +123,8 @@ scenarios::ResultRow systemRow(scenarios::ScenarioKind kind, const std::string& 
   row.interaction_max_ms = run.interaction_max_ms;
   row.sensing = sensing;
   row.undecided_saturated_pushes = run.undecided_saturated_pushes;
+  row.excess_m = run.excess_m;
+  row.losses = run.losses;
   if (!run.ran) {
     row.status = "runner_unavailable";
     row.reason = run.reason;
@@ -622,6 +624,7 @@ int main(int argc, char** argv)
               << scenarios::tableTwoSpl(rows, stricter) << "\n"
               << scenarios::tableThreeSystem(rows) << "\n"
               << scenarios::tablePlannerFrames(rows, jobs_count) << "\n"
+              << scenarios::tableLosses(rows) << "\n"
               << "Targets (issue 8):\n\n"
               << scenarios::targetCheck(rows);
   if (!notes.empty()) {
@@ -651,6 +654,10 @@ int main(int argc, char** argv)
           world.world, pairs,
           world.name + ": driven trajectories (headless runner), FAR mode blue, ours green",
           plot_dir + "/trajectories_" + world.name + ".png"));
+    }
+    for (const scenarios::ScenarioKind kind : scenarios::allKinds()) {
+      const std::string kind_name = scenarios::kindName(kind);
+      errors.push_back(scenarios::writeLossPlot(rows, kind_name, plot_dir + "/losses_" + kind_name + ".png"));
     }
     for (const std::string& error : errors) {
       if (!error.empty()) {

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
+#include <string>
 
 #include "bench/scenarios/search_suite.hpp"
 #include "common/vehicle.hpp"
@@ -29,6 +31,13 @@ Color plannerColor(const std::string& planner)
     return {30, 90, 220};
   }
   return {20, 160, 60};
+}
+
+Color bucketColor(int bucket)
+{
+  static const Color kColors[runner::kLossBucketCount] = {{70, 130, 200}, {200, 60, 50}, {240, 170, 40},
+                                                          {140, 90, 170}, {90, 160, 90}, {150, 150, 150}};
+  return kColors[bucket];
 }
 
 }  // namespace
@@ -112,6 +121,114 @@ std::string writeTimeVsGraphSizePlot(const std::vector<ResultRow>& rows, const s
     const geometry::Point point =
         at(sample.x, sample.y) + geometry::Point(6.0 * (static_cast<double>(index) - 2.0), 0.0);
     canvas.drawCircle(point, 2.5, {plannerColor(sample.planner), std::nullopt, 1});
+  }
+  canvas.drawLegend(legend);
+  return canvas.writePng(path);
+}
+
+std::string writeLossPlot(const std::vector<ResultRow>& rows, const std::string& kind,
+                          const std::string& path)
+{
+  struct Bar {
+    std::string label;
+    int runs = 0;
+    double excess = 0.0;
+    runner::LossBuckets sums;
+  };
+  std::vector<Bar> bars;
+  for (const ResultRow& row : rows) {
+    if (row.table != "system" || row.kind != kind || !std::isfinite(row.excess_m)) {
+      continue;
+    }
+    const std::string label = row.planner + (row.sensing == "ideal" ? "" : " (" + row.sensing + ")");
+    auto bar =
+        std::find_if(bars.begin(), bars.end(), [&label](const Bar& other) { return other.label == label; });
+    if (bar == bars.end()) {
+      bars.push_back(Bar{label, 0, 0.0, {}});
+      bar = bars.end() - 1;
+    }
+    ++bar->runs;
+    bar->excess += row.excess_m;
+    for (int bucket = 0; bucket < runner::kLossBucketCount; ++bucket) {
+      runner::lossBucket(bar->sums, bucket) += runner::lossBucket(row.losses, bucket);
+    }
+  }
+  if (bars.empty()) {
+    return {};
+  }
+  // The ideal profile's bars first, FAR mode before ours within a profile.
+  std::stable_sort(bars.begin(), bars.end(), [](const Bar& a, const Bar& b) {
+    return (a.label.find('(') == std::string::npos) > (b.label.find('(') == std::string::npos);
+  });
+  double top = 1.0;
+  double bottom = 0.0;
+  for (const Bar& bar : bars) {
+    double up = 0.0;
+    double down = 0.0;
+    for (int bucket = 0; bucket < runner::kLossBucketCount; ++bucket) {
+      const double value = runner::lossBucket(bar.sums, bucket) / bar.runs;
+      (value > 0.0 ? up : down) += value;
+    }
+    top = std::max(top, up);
+    bottom = std::min(bottom, down);
+  }
+  // A round step for the grid, about five lines over the range.
+  const double range = top - bottom;
+  const double step = std::pow(10.0, std::floor(std::log10(range / 5.0)));
+  const double grid_step = range / step > 25.0 ? 5.0 * step : (range / step > 10.0 ? 2.0 * step : step);
+  top = std::ceil(top / grid_step) * grid_step;
+  bottom = std::floor(bottom / grid_step) * grid_step;
+
+  const double left = 230.0;  // the legend takes the top-left corner
+  const double base = 60.0;
+  const double height = 380.0;
+  const double bar_width = 70.0;
+  const double gap = 50.0;
+  const double width = static_cast<double>(bars.size()) * (bar_width + gap) + gap;
+  const auto y_of = [&](double metres) { return base + (metres - bottom) / (top - bottom) * height; };
+  viz::Canvas canvas(geometry::Point(0.0, 0.0), geometry::Point(left + width + 40.0, base + height + 60.0),
+                     1.0);
+  const Color axis = Color::gray(40);
+  for (double value = bottom; value <= top + 1e-9; value += grid_step) {
+    canvas.drawSegment(geometry::Point(left, y_of(value)), geometry::Point(left + width, y_of(value)),
+                       Color::gray(value == 0.0 ? 120 : 225));
+    char label[32];
+    std::snprintf(label, sizeof(label), "%g", value);
+    canvas.drawText(geometry::Point(left - 45.0, y_of(value) - 5.0), label, axis);
+  }
+  canvas.drawSegment(geometry::Point(left, y_of(bottom)), geometry::Point(left, y_of(top)), axis, 2);
+  for (std::size_t index = 0; index < bars.size(); ++index) {
+    const Bar& bar = bars[index];
+    const double x0 = left + gap + static_cast<double>(index) * (bar_width + gap);
+    double up = 0.0;
+    double down = 0.0;
+    for (int bucket = 0; bucket < runner::kLossBucketCount; ++bucket) {
+      const double value = runner::lossBucket(bar.sums, bucket) / bar.runs;
+      double& end = value > 0.0 ? up : down;
+      const double from = end;
+      end += value;
+      const geometry::Polygon block{
+          geometry::Point(x0, y_of(from)), geometry::Point(x0 + bar_width, y_of(from)),
+          geometry::Point(x0 + bar_width, y_of(end)), geometry::Point(x0, y_of(end))};
+      canvas.drawPolygon(block, {bucketColor(bucket), Color::gray(60), 1});
+    }
+    // The mean excess: the net height of the stack, drawn as a black tick.
+    const double excess = bar.excess / bar.runs;
+    canvas.drawSegment(geometry::Point(x0 - 6.0, y_of(excess)),
+                       geometry::Point(x0 + bar_width + 6.0, y_of(excess)), Color::gray(0), 3);
+    canvas.drawText(geometry::Point(x0, base - 22.0), bar.label, axis);
+    canvas.drawText(geometry::Point(x0, base - 40.0),
+                    std::to_string(bar.runs) + (bar.runs == 1 ? " run" : " runs"), Color::gray(90));
+  }
+  canvas.drawText(geometry::Point(left - 45.0, base + height + 30.0), kind + ": metres per run beyond the",
+                  axis, 14);
+  canvas.drawText(geometry::Point(left - 45.0, base + height + 12.0), "achievable way (black: the excess)",
+                  axis, 14);
+  std::vector<viz::LegendEntry> legend;
+  for (int bucket = 0; bucket < runner::kLossBucketCount; ++bucket) {
+    std::string name = runner::lossBucketName(bucket);
+    std::replace(name.begin(), name.end(), '_', ' ');
+    legend.push_back({name, bucketColor(bucket)});
   }
   canvas.drawLegend(legend);
   return canvas.writePng(path);

@@ -28,4 +28,11 @@ struct PathPair {
 std::string writePathPlot(const sim::World& world, const std::vector<PathPair>& paths,
                           const std::string& title, const std::string& path);
 
+/// Stacked bars of the loss accounting of one kind's driven runs: one bar per planner (FAR mode, ours)
+/// and sensing profile, the mean metres per run of each bucket stacked (negative ones below the axis),
+/// the mean excess marked. Writes nothing and returns an empty string when no run of the kind was
+/// accounted; otherwise an empty string or the error.
+std::string writeLossPlot(const std::vector<ResultRow>& rows, const std::string& kind,
+                          const std::string& path);
+
 }  // namespace ifar::scenarios

@@ -56,6 +56,11 @@ std::string toJsonLine(const ResultRow& row)
     line += ", \"interaction_max_ms\": " + number(row.interaction_max_ms);
     line += ", \"sensing\": " + common::jsonString(row.sensing);
     line += ", \"undecided_saturated_pushes\": " + std::to_string(row.undecided_saturated_pushes);
+    line += ", \"excess_m\": " + number(row.excess_m);
+    for (int bucket = 0; bucket < runner::kLossBucketCount; ++bucket) {
+      line += std::string(", \"loss_") + runner::lossBucketName(bucket) +
+              "_m\": " + number(runner::lossBucket(row.losses, bucket));
+    }
   }
   return line + "}";
 }
@@ -88,6 +93,10 @@ void rowFields(Fields& fields, Row& row)
   fields.field(row.interaction_max_ms);
   fields.field(row.sensing);
   fields.field(row.undecided_saturated_pushes);
+  fields.field(row.excess_m);
+  for (int bucket = 0; bucket < runner::kLossBucketCount; ++bucket) {
+    fields.field(runner::lossBucket(row.losses, bucket));
+  }
 }
 
 }  // namespace

@@ -7,6 +7,8 @@
 #include <string>
 #include <string_view>
 
+#include "system/loss_accounting.hpp"
+
 namespace ifar::scenarios {
 
 struct ResultRow {
@@ -35,6 +37,10 @@ struct ResultRow {
   // held at maximum force past the tactile monitor's window without a decision (runner::RunSummary).
   std::string sensing = "ideal";
   int undecided_saturated_pushes = 0;
+  // System rows: the distance driven beyond the achievable way (travelled - (achievable - left at the
+  // end)) and where it went (system/loss_accounting.hpp); NaN when not accounted.
+  double excess_m = NAN;
+  runner::LossBuckets losses = runner::notAccounted();
 };
 
 /// Success weighted by path length for one episode: success x optimal / max(length, optimal); 0 for a

@@ -3,7 +3,6 @@
 #include <chrono>
 #include <utility>
 
-#include "bench/search_comparison/world_raster.hpp"
 #include "common/grid_map/boundaries.hpp"
 #include "planner/graph/visibility_builder.hpp"
 #include "planner/interaction/convex_polygon.hpp"
@@ -11,6 +10,7 @@
 #include "planner/interaction/interaction_planner.hpp"
 #include "sim/importers/grid_importer.hpp"
 #include "sim/world/world_geometry.hpp"
+#include "sim/world/world_raster.hpp"
 
 namespace ifar::scenarios {
 namespace {
@@ -22,23 +22,6 @@ graph::PriorMap emptyMap()
 {
   return graph::PriorMap{graph::ObstacleSet(std::vector<graph::ObstacleLoop>{}), graph::DvGraph(),
                          graph::BuildStats()};
-}
-
-PlanningGraph makeGraph(std::vector<graph::ObstacleLoop> loops, const graph::Bounds& bounds)
-{
-  PlanningGraph result{
-      graph::PriorMap{graph::ObstacleSet(std::move(loops), bounds), graph::DvGraph(), graph::BuildStats()},
-      graph::SearchGraph()};
-  result.map.stats = graph::addReducedVisibilityGraph(result.map.obstacles, result.map.graph);
-  result.search = graph::SearchGraph::fromDvGraph(result.map.graph);
-  return result;
-}
-
-/// The object's outline in the world grown by `radius` (convex hull, mitred corners).
-geometry::Polygon inflatedObject(const sim::MovableObject& object, double radius)
-{
-  const geometry::Polygon placed = sim::placedOutline(object);
-  return interaction::dilateConvex(geometry::convexHull(placed), radius);
 }
 
 /// Adds each splitting object's topological waypoints and interaction edges to `ours`.
@@ -112,7 +95,7 @@ void addObjects(const sim::World& world, grid_map::GridMap& grid)
     objects_only.obstacles.push_back(
         sim::StaticObstacle{object.name, sim::placedOutline(object), object.height_m, object.reflectivity});
   }
-  const grid_map::GridMap objects = bench::rasterizeStaticObstacles(objects_only, grid.resolution());
+  const grid_map::GridMap objects = sim::rasterizeStaticObstacles(objects_only, grid.resolution());
   for (int y = 0; y < grid.height(); ++y) {
     for (int x = 0; x < grid.width(); ++x) {
       if (objects.at(x, y) == grid_map::Cell::Blocked) {
@@ -176,7 +159,7 @@ int vehicleComponent(const ScenarioMaps& maps, const geometry::Point& point)
 
 grid_map::GridMap rasterizeWorld(const sim::World& world, double resolution, bool with_objects)
 {
-  grid_map::GridMap grid = bench::rasterizeStaticObstacles(world, resolution);
+  grid_map::GridMap grid = sim::rasterizeStaticObstacles(world, resolution);
   if (with_objects) {
     addObjects(world, grid);
   }
@@ -204,26 +187,14 @@ ScenarioMaps buildScenarioMaps(const sim::World& world, const MapSettings& setti
 
   const grid_map::GridMap inflated_static = maps.static_grid.inflated(settings.inflation_m, kBlocked);
   maps.vehicle_components = freeComponents(inflated_static);
-  std::vector<graph::ObstacleLoop> static_loops;
-  for (geometry::Polygon& polygon : grid_map::blockedBoundaries(inflated_static, kBlocked)) {
-    static_loops.push_back(graph::ObstacleLoop{std::move(polygon), 0});
-  }
-  const graph::Bounds bounds{
-      maps.static_grid.cornerToWorld(0, 0),
-      maps.static_grid.cornerToWorld(maps.static_grid.width(), maps.static_grid.height())};
+  std::vector<graph::ObstacleLoop> all_loops = runner::blockedLoops(inflated_static);
   std::vector<geometry::Polygon> inflated_objects;
-  std::vector<graph::ObstacleLoop> all_loops = static_loops;
-  std::vector<graph::ObstacleLoop> heavy_loops = static_loops;
   for (const sim::MovableObject& object : world.objects) {
-    inflated_objects.push_back(inflatedObject(object, settings.inflation_m));
-    const graph::ObstacleLoop loop = graph::loopFromPolygon(inflated_objects.back(), object.id);
-    all_loops.push_back(loop);
-    if (!sim::isPushable(object, settings.vehicle)) {
-      heavy_loops.push_back(loop);
-    }
+    inflated_objects.push_back(runner::inflatedObjectOutline(object, settings.inflation_m));
+    all_loops.push_back(graph::loopFromPolygon(inflated_objects.back(), object.id));
   }
-  maps.far = makeGraph(all_loops, bounds);
-  maps.pushing = makeGraph(std::move(heavy_loops), bounds);
+  maps.far = runner::makePlanningGraph(std::move(all_loops), runner::gridBounds(inflated_static));
+  maps.pushing = runner::buildAchievableMap(world, inflated_static, settings.vehicle, settings.inflation_m);
   maps.ours = maps.far;
   maps.interaction =
       addInteractions(world, inflated_static, inflated_objects, settings, maps.ours, maps.push_plans);

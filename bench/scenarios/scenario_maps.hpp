@@ -22,6 +22,7 @@
 #include "planner/interaction/interaction_settings.hpp"
 #include "planner/interaction/push_plan.hpp"
 #include "sim/world/world.hpp"
+#include "system/achievable_map.hpp"
 
 namespace ifar::scenarios {
 
@@ -32,11 +33,7 @@ struct MapSettings {
   interaction::InteractionSettings interaction;
 };
 
-/// A visibility graph with the obstacles it was built against and its search snapshot.
-struct PlanningGraph {
-  graph::PriorMap map;  // obstacles + graph
-  graph::SearchGraph search;
-};
+using runner::PlanningGraph;
 
 struct InteractionStats {
   std::size_t objects = 0;    // movable objects analysed
@@ -53,7 +50,7 @@ struct ScenarioMaps {
   PlanningGraph far;                              // static inflated + movable objects as obstacles
   PlanningGraph ours;                             // far + interaction edges
   std::vector<interaction::PushPlan> push_plans;  // handles of ours' interaction edges
-  PlanningGraph pushing;  // static inflated + unpushable objects: reachable with pushing
+  PlanningGraph pushing;  // static inflated + unpushable objects: reachable with pushing (achievable_map.hpp)
   // Where the vehicle fits with every movable object removed: per cell of planning_grid, the 4-connected
   // component of the inflated static grid's free space, -1 where blocked.
   std::vector<int> vehicle_components;

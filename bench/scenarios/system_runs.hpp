@@ -14,6 +14,7 @@
 #include "bench/scenarios/task_selection.hpp"
 #include "common/geometry/pose2.hpp"
 #include "sim/world/world.hpp"
+#include "system/loss_accounting.hpp"
 
 namespace ifar::scenarios {
 
@@ -34,6 +35,10 @@ struct SystemRun {
   double frame_max_ms = NAN;
   double interaction_max_ms = NAN;
   int undecided_saturated_pushes = 0;  // runner::RunSummary::undecided_saturated_pushes
+  // runner::RunSummary::losses: the distance beyond the achievable way and its buckets (NaN when not
+  // accounted).
+  double excess_m = NAN;
+  runner::LossBuckets losses = runner::notAccounted();
   std::vector<geometry::Pose2> trajectory;
 };
 

@@ -69,6 +69,10 @@ SystemRun SystemRunner::run(const sim::World& world, const Task& task, bool inte
     run.frame_max_ms = summary.planner_frame.max_ms;
     run.interaction_max_ms = summary.interaction.max_ms;
     run.undecided_saturated_pushes = summary.undecided_saturated_pushes;
+    if (summary.losses.valid) {
+      run.excess_m = summary.losses.excess_m;
+      run.losses = summary.losses.buckets;
+    }
     // One pose per control cycle is more than a plot needs: keep one in ten.
     for (std::size_t index = 0; index < summary.trajectory.size(); index += 10) {
       run.trajectory.push_back(summary.trajectory[index]);

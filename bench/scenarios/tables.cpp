@@ -382,6 +382,67 @@ std::string tableThreeSystem(const std::vector<ResultRow>& rows)
   return text;
 }
 
+std::string tableLosses(const std::vector<ResultRow>& rows)
+{
+  std::string text =
+      "Loss accounting: the distance driven beyond the achievable way (travelled - (achievable - left at the "
+      "end)) and where it went, metres per run, mean over the runs accounted (docs/benchmarks.md, \"Loss "
+      "accounting\").\n";
+  double largest_gap = 0.0;
+  int accounted = 0;
+  for (const ScenarioKind kind : allKinds()) {
+    std::string body;
+    for (const std::string& sensing : sensingProfiles(rows)) {
+      for (const std::string planner : {"far", "ours"}) {
+        std::vector<const ResultRow*> selected;
+        for (const ResultRow* row : select(rows, "system", planner, kindName(kind), sensing)) {
+          if (std::isfinite(row->excess_m)) {
+            selected.push_back(row);
+          }
+        }
+        if (selected.empty()) {
+          continue;
+        }
+        const double runs = static_cast<double>(selected.size());
+        double travelled = 0.0;
+        double excess = 0.0;
+        runner::LossBuckets sums;
+        for (const ResultRow* row : selected) {
+          travelled += row->length;
+          excess += row->excess_m;
+          for (int bucket = 0; bucket < runner::kLossBucketCount; ++bucket) {
+            runner::lossBucket(sums, bucket) += runner::lossBucket(row->losses, bucket);
+          }
+          largest_gap = std::fmax(largest_gap, std::abs(row->losses.total() - row->excess_m));
+          ++accounted;
+        }
+        body += "| " + planner + profileSuffix(sensing) + " | " + std::to_string(selected.size()) + " | " +
+                fixed(travelled / runs, 1) + " | " + fixed(excess / runs, 1) + " |";
+        for (int bucket = 0; bucket < runner::kLossBucketCount; ++bucket) {
+          body += " " + fixed(runner::lossBucket(sums, bucket) / runs, 1) + " |";
+        }
+        body += "\n";
+      }
+    }
+    if (body.empty()) {
+      continue;
+    }
+    text += "\n" + kindName(kind) + ":\n\n| planner | runs | travelled | excess |";
+    for (int bucket = 0; bucket < runner::kLossBucketCount; ++bucket) {
+      std::string name = runner::lossBucketName(bucket);
+      std::replace(name.begin(), name.end(), '_', ' ');
+      text += " " + name + " |";
+    }
+    text += "\n|---|---|---|---|---|---|---|---|---|---|\n" + body;
+  }
+  if (accounted == 0) {
+    return text + "\nNo driven run was accounted.\n";
+  }
+  return text +
+         "\nLargest difference between a run's buckets and its excess: " + fixed(largest_gap * 100.0, 3) +
+         " cm over " + std::to_string(accounted) + " runs.\n";
+}
+
 std::string tablePlannerFrames(const std::vector<ResultRow>& rows, int parallel_runs)
 {
   const std::string sharing =

@@ -23,6 +23,10 @@ std::string tableThreeSystem(const std::vector<ResultRow>& rows);
 /// frame budget, so this is all the work one frame asked for). `parallel_runs`: how many runs shared the
 /// machine at a time (--jobs), said in the caption since wall times depend on it.
 std::string tablePlannerFrames(const std::vector<ResultRow>& rows, int parallel_runs);
+/// Per kind, the distance the driven runs travelled beyond the achievable way and its buckets
+/// (system/loss_accounting.hpp), metres per run, per planner and sensing profile; and the largest gap
+/// between a row's buckets and its excess (they add up by construction).
+std::string tableLosses(const std::vector<ResultRow>& rows);
 /// The targets with the measured value and whether it is met (or by how much it is missed).
 std::string targetCheck(const std::vector<ResultRow>& rows);
 

@@ -18,7 +18,6 @@
 #include "bench/baselines/grid_astar.hpp"
 #include "bench/baselines/sampling_planners.hpp"
 #include "bench/search_comparison/query_set.hpp"
-#include "bench/search_comparison/world_raster.hpp"
 #include "common/command_line.hpp"
 #include "common/grid_map/readers.hpp"
 #include "common/json_text.hpp"
@@ -26,6 +25,7 @@
 #include "planner/graph/prior_map.hpp"
 #include "planner/graph/search.hpp"
 #include "sim/generators/generators.hpp"
+#include "sim/world/world_raster.hpp"
 
 namespace {
 
@@ -182,7 +182,7 @@ int main(int argc, char** argv)
       std::cerr << "ifar bench-search: " << world.error() << "\n";
       return 1;
     }
-    map = ifar::bench::rasterizeStaticObstacles(world.world(), resolution);
+    map = ifar::sim::rasterizeStaticObstacles(world.world(), resolution);
     world_name = world_kind_text + "-" + std::to_string(world_seed);
     for (const ifar::sim::Goal& goal : world.world().goals) {
       world_tasks.push_back(

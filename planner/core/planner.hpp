@@ -132,6 +132,9 @@ class Planner {
   bool holdsObjectSeal(std::int64_t object_id) const { return object_seals_.holds(object_id); }
 
   const graph::DvGraph& graph() const { return global_; }
+  /// The obstacles of the last frame (what the search attaches the robot and checks paths against);
+  /// empty before the first frame.
+  const std::optional<graph::ObstacleSet>& observedObstacles() const { return obstacles_; }
   std::int64_t badInputs() const { return bad_inputs_; }
   /// The physics the planner assumes for a movable object (the configured prior until AFFORDANCE).
   interaction::ObjectPhysics objectPhysics(std::int64_t object_id) const

@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "bench/search_comparison/query_set.hpp"
-#include "bench/search_comparison/world_raster.hpp"
+#include "sim/world/world_raster.hpp"
 
 namespace ifar::bench {
 namespace {
@@ -32,7 +32,7 @@ sim::World wallWorld()
 
 TEST(WorldRaster, ThinWallsBlockEveryOverlappedCellAndTouchingLeavesFree)
 {
-  const grid_map::GridMap map = rasterizeStaticObstacles(wallWorld(), 0.15);
+  const grid_map::GridMap map = sim::rasterizeStaticObstacles(wallWorld(), 0.15);
   ASSERT_EQ(map.width(), 20);
   ASSERT_EQ(map.height(), 10);
   for (int y = 0; y < 8; ++y) {
@@ -52,7 +52,7 @@ TEST(WorldRaster, ThinWallsBlockEveryOverlappedCellAndTouchingLeavesFree)
 
 TEST(QuerySet, RandomQueriesAreSeededConnectedAndLongEnough)
 {
-  const grid_map::GridMap map = rasterizeStaticObstacles(wallWorld(), 0.15);
+  const grid_map::GridMap map = sim::rasterizeStaticObstacles(wallWorld(), 0.15);
   const graph::PriorMap exact = graph::buildPriorMap(map, 0.0);
   RandomQuerySettings settings;
   settings.count = 5;
@@ -76,7 +76,7 @@ TEST(QuerySet, RandomQueriesAreSeededConnectedAndLongEnough)
 
 TEST(QuerySet, ExactOptimumGoesAroundTheWall)
 {
-  const grid_map::GridMap map = rasterizeStaticObstacles(wallWorld(), 0.15);
+  const grid_map::GridMap map = sim::rasterizeStaticObstacles(wallWorld(), 0.15);
   const graph::PriorMap exact = graph::buildPriorMap(map, 0.0);
   // From (0.5, 0.3) to (1.6, 0.3) around the wall's top corners at (0.9, 1.2) and (1.2, 1.2).
   const double expected = std::hypot(0.4, 0.9) + 0.3 + std::hypot(0.4, 0.9);

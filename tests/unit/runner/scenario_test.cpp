@@ -130,6 +130,14 @@ TEST(RunnerScenario, DemoRoomPushesTheLightBoxAndArrives)
   EXPECT_GE(summary.pushes, 1);
   EXPECT_LT(summary.distance_m, kThroughDoorwayLimitM);
   EXPECT_FALSE(passesEastOpening(summary));
+  // The loss accounting covers the whole drive and its buckets add up; pushing the box is all that is
+  // booked to a push, and nothing failed.
+  const LossAccount& losses = summary.losses;
+  ASSERT_TRUE(losses.valid) << losses.problem;
+  EXPECT_NEAR(losses.travelled_m, summary.distance_m, 1e-9);
+  EXPECT_NEAR(losses.buckets.total(), losses.excess_m, 0.01);
+  EXPECT_GT(losses.buckets.push_overhead_m, 0.0);
+  EXPECT_EQ(losses.buckets.attempts_m, 0.0);
 }
 
 TEST(RunnerScenario, HeavyBoxIsFoundUnpushableAndAvoided)
@@ -150,6 +158,10 @@ TEST(RunnerScenario, HeavyBoxIsFoundUnpushableAndAvoided)
   EXPECT_GE(summary.replans, 1);
   EXPECT_EQ(summary.pushes, 0);
   EXPECT_TRUE(passesEastOpening(summary));
+  // The way to the heavy box and the push against it were for nothing: attempts, metres of them.
+  ASSERT_TRUE(summary.losses.valid) << summary.losses.problem;
+  EXPECT_GT(summary.losses.buckets.attempts_m, 1.0);
+  EXPECT_NEAR(summary.losses.buckets.total(), summary.losses.excess_m, 0.01);
 }
 
 TEST(RunnerScenario, FarModeGoesRoundWithoutPushing)

@@ -28,13 +28,24 @@ TEST(RunnerSummaryJson, ExactLine)
   summary.undecided_saturated_pushes = 1;
   summary.longest_saturated_push_s = 6.25;
   summary.trajectory = {geometry::Pose2{1.0, 2.0, 0.0}};
+  summary.routes = 4;
+  summary.routes_switched = 1;
+  summary.losses.valid = true;
+  summary.losses.achievable_m = 21.0;
+  summary.losses.remaining_m = 0.42;
+  summary.losses.excess_m = 2.8767;
+  summary.losses.buckets = LossBuckets{0.5, 0.25, 1.0, -0.125, 1.0, 0.2517};
   EXPECT_EQ(
       summaryJson(summary),
       "{\"arrived\":true,\"reason\":\"arrived\",\"distance_m\":23.457,\"time_s\":41.200,\"pushes\":1,"
       "\"replans\":2,\"affordance_updates\":3,\"blocked_passages\":1,\"goal_distance_m\":0.420,\"wall_"
       "time_s\":12.500,\"planner_frame_ms\":{\"frames\":103,\"median\":4.100,\"p99\":9.750,\"max\":12.000},"
       "\"interaction_ms\":{\"frames\":103,\"median\":0.000,\"p99\":2.500,\"max\":140.900},"
-      "\"undecided_saturated_pushes\":1,\"longest_saturated_push_s\":6.250}");
+      "\"undecided_saturated_pushes\":1,\"longest_saturated_push_s\":6.250,\"routes\":4,\"routes_switched\":"
+      "1,"
+      "\"losses\":{\"valid\":true,\"achievable_m\":21.000,\"remaining_m\":0.420,\"excess_m\":2.877,"
+      "\"exploring_m\":0.500,\"attempts_m\":0.250,\"route_switches_m\":1.000,\"route_choice_m\":-0.125,"
+      "\"execution_m\":1.000,\"push_overhead_m\":0.252}}");
 }
 
 TEST(RunnerSummaryJson, ReasonIsEscapedAndNonFiniteIsNull)
@@ -51,6 +62,8 @@ TEST(RunnerSummaryJson, ReasonIsEscapedAndNonFiniteIsNull)
             std::string::npos)
       << line;
   EXPECT_EQ(line.find('\n'), std::string::npos);
+  // Not accounted: says why, no numbers.
+  EXPECT_NE(line.find("\"losses\":{\"valid\":false,\"problem\":\"\"}"), std::string::npos) << line;
 }
 
 }  // namespace

@@ -104,6 +104,8 @@ TEST(AnswerText, ASystemRunComesBackWithItsTrajectory)
   run.reason = "runner killed after 300.0 s";
   run.distance_m = 44.0;
   run.pushes = 1;
+  run.excess_m = 3.25;
+  run.losses = runner::LossBuckets{0.5, 0.0, 1.0 / 3.0, -0.125, 1.5, 0.0};
   run.trajectory = {{1.0, 2.0, 0.5}, {1.1, 2.05, -3.1}};
   const std::optional<SystemRun> back = systemRunFromAnswer(toAnswer(run));
   ASSERT_TRUE(back.has_value());
@@ -114,6 +116,10 @@ TEST(AnswerText, ASystemRunComesBackWithItsTrajectory)
   EXPECT_EQ(back->distance_m, 44.0);
   EXPECT_EQ(back->pushes, 1);
   EXPECT_TRUE(std::isnan(back->frame_median_ms));
+  EXPECT_EQ(back->excess_m, 3.25);
+  EXPECT_EQ(back->losses.route_switches_m, 1.0 / 3.0);
+  EXPECT_EQ(back->losses.route_choice_m, -0.125);
+  EXPECT_EQ(back->losses.execution_m, 1.5);
   ASSERT_EQ(back->trajectory.size(), 2u);
   EXPECT_EQ(back->trajectory[1].heading, -3.1);
   // A pose count the answer cannot hold is refused before anything is reserved for it.

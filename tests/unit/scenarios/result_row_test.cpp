@@ -93,11 +93,22 @@ TEST(JsonLine, SystemRowAddsSimulatedTimeAndPushes)
   row.sensing = "field";
   row.undecided_saturated_pushes = 3;
   const std::string line = toJsonLine(row);
-  EXPECT_NE(line.find(", \"sim_time_s\": 120.5, \"pushes\": 2, \"frame_median_ms\": 4.5, \"frame_p99_ms\": "
-                      "12.25, \"frame_max_ms\": 30, \"interaction_max_ms\": 21, \"sensing\": \"field\", "
-                      "\"undecided_saturated_pushes\": 3}"),
-            std::string::npos)
+  EXPECT_NE(
+      line.find(", \"sim_time_s\": 120.5, \"pushes\": 2, \"frame_median_ms\": 4.5, \"frame_p99_ms\": "
+                "12.25, \"frame_max_ms\": 30, \"interaction_max_ms\": 21, \"sensing\": \"field\", "
+                "\"undecided_saturated_pushes\": 3, \"excess_m\": null, \"loss_exploring_m\": null, "
+                "\"loss_attempts_m\": null, \"loss_route_switches_m\": null, \"loss_route_choice_m\": null, "
+                "\"loss_execution_m\": null, \"loss_push_overhead_m\": null}"),
+      std::string::npos)
       << line;
+  // An accounted run: the excess and its buckets.
+  row.excess_m = 12.5;
+  row.losses = runner::LossBuckets{1.0, 2.0, 0.5, -0.25, 9.0, 0.25};
+  EXPECT_NE(toJsonLine(row).find("\"excess_m\": 12.5, \"loss_exploring_m\": 1, \"loss_attempts_m\": 2, "
+                                 "\"loss_route_switches_m\": 0.5, \"loss_route_choice_m\": -0.25, "
+                                 "\"loss_execution_m\": 9, \"loss_push_overhead_m\": 0.25}"),
+            std::string::npos)
+      << toJsonLine(row);
   EXPECT_EQ(line.find('\n'), std::string::npos);
 }
 

@@ -282,3 +282,45 @@ TEST(SensingProfiles, FieldWithinTheTargetsIsMet)
 
 }  // namespace
 }  // namespace ifar::scenarios
+
+namespace ifar::scenarios {
+namespace {
+
+TEST(LossTable, MeanBucketsPerPlannerAndProfileAndTheLargestGap)
+{
+  std::vector<ResultRow> rows;
+  const auto driven = [&rows](const std::string& planner, const std::string& sensing, double length,
+                              double excess, const runner::LossBuckets& losses) {
+    ResultRow result = row("system", planner, "office", true, length, 80.0, 1000.0);
+    result.sensing = sensing;
+    result.excess_m = excess;
+    result.losses = losses;
+    rows.push_back(result);
+  };
+  driven("far", "ideal", 120.0, 40.0, {10.0, 0.0, 5.0, 20.0, 5.0, 0.0});
+  driven("far", "ideal", 100.0, 20.0, {0.0, 0.0, 5.0, 10.0, 5.0, 0.0});
+  // A gap of 2 mm between this run's buckets and its excess.
+  driven("ours", "ideal", 90.0, 10.0, {1.0, 4.0, 0.0, -1.0, 5.0, 1.002});
+  driven("ours", "field", 95.0, 15.0, {2.0, 4.0, 1.0, 0.0, 7.0, 1.0});
+  // Not accounted: left out of the means.
+  rows.push_back(row("system", "ours", "office", false, 30.0, 80.0, 1000.0));
+  const std::string table = tableLosses(rows);
+  EXPECT_NE(
+      table.find(
+          "\noffice:\n\n| planner | runs | travelled | excess | exploring | attempts | route switches | "
+          "route choice | execution | push overhead |\n"),
+      std::string::npos)
+      << table;
+  EXPECT_EQ(lineStartingWith(table, "| far |"),
+            "| far | 2 | 110.0 | 30.0 | 5.0 | 0.0 | 5.0 | 15.0 | 5.0 | 0.0 |");
+  EXPECT_EQ(lineStartingWith(table, "| ours |"),
+            "| ours | 1 | 90.0 | 10.0 | 1.0 | 4.0 | 0.0 | -1.0 | 5.0 | 1.0 |");
+  EXPECT_EQ(lineStartingWith(table, "| ours, field |"),
+            "| ours, field | 1 | 95.0 | 15.0 | 2.0 | 4.0 | 1.0 | 0.0 | 7.0 | 1.0 |");
+  EXPECT_EQ(lineStartingWith(table, "Largest"),
+            "Largest difference between a run's buckets and its excess: 0.200 cm over 4 runs.");
+  EXPECT_NE(tableLosses({}).find("No driven run was accounted."), std::string::npos);
+}
+
+}  // namespace
+}  // namespace ifar::scenarios

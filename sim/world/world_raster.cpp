@@ -1,11 +1,11 @@
-#include "bench/search_comparison/world_raster.hpp"
+#include "sim/world/world_raster.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 #include "common/geometry/polygon.hpp"
 
-namespace ifar::bench {
+namespace ifar::sim {
 namespace {
 
 /// True when the polygon is an axis-aligned rectangle (4 vertices, every edge parallel to an axis).
@@ -25,7 +25,7 @@ bool isAxisAlignedRectangle(const geometry::Polygon& polygon)
 
 }  // namespace
 
-grid_map::GridMap rasterizeStaticObstacles(const sim::World& world, double resolution)
+grid_map::GridMap rasterizeStaticObstacles(const World& world, double resolution)
 {
   const geometry::Point extent = world.bounds_max - world.bounds_min;
   const int width = static_cast<int>(std::ceil(extent.x() / resolution));
@@ -33,7 +33,7 @@ grid_map::GridMap rasterizeStaticObstacles(const sim::World& world, double resol
   grid_map::GridMap map(width, height, resolution, world.bounds_min, grid_map::Cell::Free);
   // Shrinking the test square by a hair makes a polygon that only touches a cell side leave it free.
   const double shrink = 1e-6 * resolution;
-  for (const sim::StaticObstacle& obstacle : world.obstacles) {
+  for (const StaticObstacle& obstacle : world.obstacles) {
     if (obstacle.outline.size() < 3) {
       continue;
     }
@@ -82,4 +82,4 @@ grid_map::GridMap rasterizeStaticObstacles(const sim::World& world, double resol
   return map;
 }
 
-}  // namespace ifar::bench
+}  // namespace ifar::sim
