@@ -112,6 +112,7 @@ scenarios::ResultRow systemRow(scenarios::ScenarioKind kind, const std::string& 
   row.task = task.id;
   row.optimal = task.optimal;
   row.achievable = task.achievable;
+  row.without_pushing = task.without_pushing;
   row.success = run.ran && run.arrived && task.reachable_with_pushing;
   row.length = run.ran ? run.distance_m : NAN;
   row.ms = run.ran ? 1000.0 * run.wall_time_s : NAN;
@@ -154,6 +155,7 @@ scenarios::ResultRow skippedRow(scenarios::ScenarioKind kind, const std::string&
   row.task = task.id;
   row.optimal = task.optimal;
   row.achievable = task.achievable;
+  row.without_pushing = task.without_pushing;
   row.length = NAN;
   row.ms = NAN;
   row.status = "skipped";
@@ -190,7 +192,7 @@ int main(int argc, char** argv)
   CLI::App app{
       "The issue 8 scenario suite: worlds and tasks per kind, Table I (search time: grid A*, RRT*,\n"
       "BIT*, FAR mode, ours), Table II (SPL) and Table III (system level, headless runner)."};
-  std::string kind_list = "room,room_objects,office,willow,tunnel";
+  std::string kind_list = "room,room_objects,office,willow,tunnel,blocked_office,blocked_tunnel";
   int tasks = 10;
   std::uint64_t seed = 1;
   std::string planner_list = "grid_astar,rrt_star,bit_star,far,ours";
@@ -204,7 +206,7 @@ int main(int argc, char** argv)
   bool no_plots = false;
   bool no_system = false;
   bool smoke = false;
-  std::string system_kind_list = "office,tunnel,room_objects,willow,room";
+  std::string system_kind_list = "office,tunnel,room_objects,willow,room,blocked_office,blocked_tunnel";
   std::string sensing_list = "ideal,field";
   int system_tasks = 3;
   scenarios::SimTimeBudget budget;  // the runner's stop: 60 s + 4 s/m, at most 1,800 s
@@ -214,10 +216,14 @@ int main(int argc, char** argv)
   std::string task_world_dir;
   const unsigned hardware_threads = std::thread::hardware_concurrency();
   int jobs_count = hardware_threads > 0 ? static_cast<int>(hardware_threads) : 1;
-  app.add_option("--kinds", kind_list, "comma-separated: room,room_objects,office,willow,tunnel")
-      ->capture_default_str();
+  app.add_option("--kinds", kind_list, "comma-separated kinds (docs/benchmarks.md)")->capture_default_str();
   app.add_option("--tasks", tasks, "tasks per kind")->check(CLI::PositiveNumber)->capture_default_str();
-  app.add_option("--seed", seed, "seed of worlds, tasks and OMPL")->capture_default_str();
+  app.add_option(
+         "--seed", seed,
+         "seed of worlds, tasks and OMPL (docs/benchmarks.md: 1 tunes, 2 validates; no two seeds share "
+         "a world)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   app.add_option("--planners", planner_list, "comma-separated: grid_astar,rrt_star,bit_star,far,ours")
       ->capture_default_str();
   app.add_option("--time-cap", sampling.time_cap_s, "RRT*/BIT* CPU cap per query (s)")
@@ -286,16 +292,17 @@ int main(int argc, char** argv)
   app.add_option("--task-worlds", task_world_dir,
                  "write each driven task as a world file (its start and goal) into this folder, to drive it "
                  "again with ifar-run");
-  app.add_flag("--smoke", smoke,
-               "CI subset: one task per kind, 0.3 s sampling cap; the runner drives the room task only, 60 s "
-               "simulated");
+  app.add_flag(
+      "--smoke", smoke,
+      "CI subset: one task per kind, 0.3 s sampling cap; the runner drives the room and blocked office "
+      "tasks only, 60 s simulated");
   if (const auto exit_code = ifar::common::parseCommandLine(app, argc, argv)) {
     return *exit_code;
   }
   if (smoke) {
     tasks = 1;
     sampling.time_cap_s = std::min(sampling.time_cap_s, 0.3);
-    system_kind_list = "room";
+    system_kind_list = "room,blocked_office";
     system_tasks = 1;
     budget.max_s = std::min(budget.max_s, 60.0);
   }
@@ -321,8 +328,11 @@ int main(int argc, char** argv)
     for (const std::string& name : splitList(*list)) {
       const auto kind = scenarios::parseKind(name);
       if (!kind) {
-        std::cerr << "ifar bench: unknown kind '" << name
-                  << "' (known: room, room_objects, office, willow, tunnel)\n";
+        std::string known;
+        for (const scenarios::ScenarioKind each : scenarios::allKinds()) {
+          known += (known.empty() ? "" : ", ") + scenarios::kindName(each);
+        }
+        std::cerr << "ifar bench: unknown kind '" << name << "' (known: " << known << ")\n";
         return 1;
       }
       target->push_back(*kind);

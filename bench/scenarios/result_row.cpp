@@ -43,6 +43,7 @@ std::string toJsonLine(const ResultRow& row)
   line += ", \"length\": " + number(row.length);
   line += ", \"optimal\": " + number(row.optimal);
   line += ", \"achievable\": " + number(row.achievable);
+  line += ", \"without_pushing\": " + number(row.without_pushing);
   line += ", \"ms\": " + number(row.ms);
   line += ", \"status\": " + common::jsonString(row.status);
   line += ", \"reason\": " + common::jsonString(row.reason);
@@ -81,6 +82,7 @@ void rowFields(Fields& fields, Row& row)
   fields.field(row.length);
   fields.field(row.optimal);
   fields.field(row.achievable);
+  fields.field(row.without_pushing);
   fields.field(row.ms);
   fields.field(row.status);
   fields.field(row.reason);

@@ -18,9 +18,10 @@ struct ResultRow {
   std::string world;    // e.g. "tunnel-1"
   std::string task;     // e.g. "t3"
   bool success = false;
-  double length = 0.0;          // planned path (search) or travelled distance (system), metres; NaN when none
-  double optimal = 0.0;         // ground truth, metres
-  double achievable = NAN;      // Task::achievable: inflated, unpushable objects as obstacles; NaN: unknown
+  double length = 0.0;      // planned path (search) or travelled distance (system), metres; NaN when none
+  double optimal = 0.0;     // ground truth, metres
+  double achievable = NAN;  // Task::achievable: inflated, unpushable objects as obstacles; NaN: unknown
+  double without_pushing = NAN;  // Task::without_pushing: inflated, every object as an obstacle
   double ms = 0.0;              // search: planner-thread CPU ms; system: wall ms of the run; NaN when not run
   std::string status;           // solved, no_path, timeout, error, unreachable, runner_unavailable, ...
   std::string reason;           // why it failed; empty on success

@@ -15,6 +15,10 @@ std::string kindName(ScenarioKind kind)
       return "willow";
     case ScenarioKind::Tunnel:
       return "tunnel";
+    case ScenarioKind::BlockedOffice:
+      return "blocked_office";
+    case ScenarioKind::BlockedTunnel:
+      return "blocked_tunnel";
   }
   return "unknown";
 }
@@ -31,9 +35,9 @@ std::optional<ScenarioKind> parseKind(const std::string& text)
 
 const std::vector<ScenarioKind>& allKinds()
 {
-  static const std::vector<ScenarioKind> kinds{ScenarioKind::Room, ScenarioKind::RoomObjects,
-                                               ScenarioKind::Office, ScenarioKind::Willow,
-                                               ScenarioKind::Tunnel};
+  static const std::vector<ScenarioKind> kinds{
+      ScenarioKind::Room,   ScenarioKind::RoomObjects,   ScenarioKind::Office,       ScenarioKind::Willow,
+      ScenarioKind::Tunnel, ScenarioKind::BlockedOffice, ScenarioKind::BlockedTunnel};
   return kinds;
 }
 
@@ -44,9 +48,11 @@ double minimumOptimalLength(ScenarioKind kind)
     case ScenarioKind::RoomObjects:
       return 15.0;
     case ScenarioKind::Willow:
+    case ScenarioKind::BlockedOffice:
       return 40.0;
     case ScenarioKind::Office:
     case ScenarioKind::Tunnel:
+    case ScenarioKind::BlockedTunnel:
       return 80.0;
   }
   return 80.0;

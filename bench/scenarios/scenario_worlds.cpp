@@ -329,24 +329,32 @@ WorldSetResult scenarioWorlds(ScenarioKind kind, const WorldSetSettings& setting
   };
   const int first_half = (settings.tasks + 1) / 2;
   const int second_half = settings.tasks - first_half;
+  // Generated kinds take world seeds 2s-1 and 2s for suite seed s (offices 4s-1 .. 4s+2): suite seeds
+  // never share a world, so a validation seed holds worlds the tuning seed never saw.
   const std::uint64_t seed = settings.seed;
+  const std::uint64_t first_world = 2 * seed - 1;
+  const auto generatedPair = [&](sim::WorldKind world_kind) {
+    const std::string prefix = sim::worldKindName(world_kind);
+    add(seeded(prefix, first_world), sim::generateWorld(world_kind, first_world), first_half);
+    if (second_half > 0 && result.ok()) {
+      add(seeded(prefix, first_world + 1), sim::generateWorld(world_kind, first_world + 1), second_half);
+    }
+  };
   switch (kind) {
     case ScenarioKind::Room:
-    case ScenarioKind::RoomObjects: {
-      const bool objects = kind == ScenarioKind::RoomObjects;
-      const std::string prefix = kindName(kind);
-      add(seeded(prefix, seed), sim::WorldResult::success(sim::generateRoom(seed, objects)), first_half);
-      if (second_half > 0) {
-        add(seeded(prefix, seed + 1), sim::WorldResult::success(sim::generateRoom(seed + 1, objects)),
-            second_half);
-      }
+      generatedPair(sim::WorldKind::Room);
       break;
-    }
+    case ScenarioKind::RoomObjects:
+      generatedPair(sim::WorldKind::RoomObjects);
+      break;
     case ScenarioKind::Tunnel:
-      add(seeded("tunnel", seed), sim::generateWorld(sim::WorldKind::Tunnel, seed), first_half);
-      if (second_half > 0) {
-        add(seeded("tunnel", seed + 1), sim::generateWorld(sim::WorldKind::Tunnel, seed + 1), second_half);
-      }
+      generatedPair(sim::WorldKind::Tunnel);
+      break;
+    case ScenarioKind::BlockedOffice:
+      generatedPair(sim::WorldKind::BlockedOffice);
+      break;
+    case ScenarioKind::BlockedTunnel:
+      generatedPair(sim::WorldKind::BlockedTunnel);
       break;
     case ScenarioKind::Willow:
       if (fileExists(settings.willow_map)) {
@@ -356,13 +364,13 @@ WorldSetResult scenarioWorlds(ScenarioKind kind, const WorldSetSettings& setting
       }
       break;
     case ScenarioKind::Office:
-      // Offices 2s+1 | 2s+2 and 2s+3 | 2s+4, so different suite seeds never share a layout.
+      // Offices 4s-1 | 4s and 4s+1 | 4s+2.
       for (int pair = 0; pair < 2 && result.ok(); ++pair) {
         const int quota = pair == 0 ? first_half : second_half;
         if (quota <= 0) {
           break;
         }
-        const std::uint64_t west_seed = 2 * seed + 1 + 2 * static_cast<std::uint64_t>(pair);
+        const std::uint64_t west_seed = 4 * seed - 1 + 2 * static_cast<std::uint64_t>(pair);
         const sim::WorldResult west = sim::generateWorld(sim::WorldKind::Office, west_seed);
         const sim::WorldResult east = sim::generateWorld(sim::WorldKind::Office, west_seed + 1);
         if (!west.ok() || !east.ok()) {

@@ -201,6 +201,7 @@ std::vector<ResultRow> runSearchSuite(ScenarioKind kind, const std::string& worl
     row.task = task.id;
     row.optimal = task.optimal;
     row.achievable = task.achievable;
+    row.without_pushing = task.without_pushing;
     if (!task.reachable_with_pushing) {
       row.success = false;
       row.status = "unreachable";

@@ -48,11 +48,10 @@ Optimum exactOptimum(const ScenarioMaps& maps, const geometry::Point& start, con
 }
 
 /// Length of the shortest path on the map with only the objects too heavy to push; NaN when there is none.
-double lengthWithPushing(const ScenarioMaps& maps, const geometry::Point& start, const geometry::Point& goal,
-                         graph::SearchScratch& scratch)
+double lengthOn(const PlanningGraph& map, const geometry::Point& start, const geometry::Point& goal,
+                graph::SearchScratch& scratch)
 {
-  const graph::SearchResult result =
-      graph::findPath(maps.pushing.search, maps.pushing.map.obstacles, start, goal, scratch);
+  const graph::SearchResult result = graph::findPath(map.search, map.map.obstacles, start, goal, scratch);
   return result.status == graph::SearchStatus::Found ? result.length : NAN;
 }
 
@@ -87,7 +86,8 @@ std::vector<Task> selectTasks(const sim::World& world, const ScenarioMaps& maps,
     task.start_heading = optimum.heading;
     task.goal = goal;
     task.optimal = optimum.length;
-    task.achievable = lengthWithPushing(maps, start, goal, scratch);
+    task.achievable = lengthOn(maps.pushing, start, goal, scratch);
+    task.without_pushing = lengthOn(maps.far, start, goal, scratch);
     task.reachable_with_pushing = std::isfinite(task.achievable);
     task.from_world = from_world;
     tasks.push_back(task);

@@ -27,6 +27,10 @@ struct Task {
   /// NaN when not reachable with pushing. Not the ground truth (`optimal`); a reference for why
   /// driven SPL falls short of it.
   double achievable = 0.0;
+  /// The same with every movable object as an obstacle: what a vehicle that knew the map but never
+  /// pushed could drive. NaN when objects close every way. 1 - achievable / without_pushing is the most
+  /// pushing can save on the task.
+  double without_pushing = 0.0;
   bool from_world = false;  // the world's own start -> goal
 };
 

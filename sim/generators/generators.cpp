@@ -4,10 +4,17 @@
 
 namespace ifar::sim {
 
+const std::vector<WorldKind>& allWorldKinds()
+{
+  static const std::vector<WorldKind> kinds{
+      WorldKind::Room,     WorldKind::RoomObjects,   WorldKind::Office,       WorldKind::Tunnel,
+      WorldKind::DemoRoom, WorldKind::BlockedOffice, WorldKind::BlockedTunnel};
+  return kinds;
+}
+
 std::optional<WorldKind> parseWorldKind(const std::string& text)
 {
-  for (const WorldKind kind :
-       {WorldKind::Room, WorldKind::RoomObjects, WorldKind::Office, WorldKind::Tunnel, WorldKind::DemoRoom}) {
+  for (const WorldKind kind : allWorldKinds()) {
     if (worldKindName(kind) == text) {
       return kind;
     }
@@ -28,6 +35,10 @@ std::string worldKindName(WorldKind kind)
       return "tunnel";
     case WorldKind::DemoRoom:
       return "demo_room";
+    case WorldKind::BlockedOffice:
+      return "blocked_office";
+    case WorldKind::BlockedTunnel:
+      return "blocked_tunnel";
   }
   return "unknown";
 }
@@ -50,6 +61,12 @@ WorldResult generateWorld(WorldKind kind, std::uint64_t seed)
       break;
     case WorldKind::DemoRoom:
       world = generateDemoRoom();
+      break;
+    case WorldKind::BlockedOffice:
+      world = generateOffice(seed, OfficeObjects::LightBlocked);
+      break;
+    case WorldKind::BlockedTunnel:
+      world = generateTunnel(seed, TunnelCrates::LightOnLongestDetours);
       break;
   }
   const auto problems = findWorldProblems(world);

@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <queue>
 #include <vector>
 
@@ -18,6 +19,7 @@ constexpr double kCrateDepth = 1.2;  // along the tunnel; a crate is 0.4 m narro
 constexpr int kColumns = 7;
 constexpr int kRows = 6;
 constexpr double kTargetPath = 450.0;
+constexpr double kNiche = 4.0;  // rock left out of a closed tunnel's end to take a crate pushed into it
 
 struct Edge {
   int from = 0;  // junction index = row * kColumns + column
@@ -163,6 +165,12 @@ geometry::Point beforeJunction(const Lattice& lattice, int near_end, int far_end
 
 World generateTunnel(std::uint64_t seed)
 {
+  return generateTunnel(seed, TunnelCrates::Mixed);
+}
+
+World generateTunnel(std::uint64_t seed, TunnelCrates crate_choice)
+{
+  const bool light_on_detours = crate_choice == TunnelCrates::LightOnLongestDetours;
   SeededRandom random(seed);
   Lattice lattice(positions(random, kWidth, kColumns), positions(random, kHeight, kRows));
 
@@ -189,7 +197,10 @@ World generateTunnel(std::uint64_t seed)
     }
   }
 
-  WorldBuilder builder("tunnel", "generator tunnel seed " + std::to_string(seed));
+  WorldBuilder builder(
+      light_on_detours ? "blocked_tunnel" : "tunnel",
+      std::string(light_on_detours ? "generator blocked_tunnel seed " : "generator tunnel seed ") +
+          std::to_string(seed));
   const double half = 0.5 * kTunnel;
   builder.addRectangle("rock", {0.0, 0.0, kWidth, kFrame}, 4.0);
   builder.addRectangle("rock", {0.0, kHeight - kFrame, kWidth, kHeight}, 4.0);
@@ -203,23 +214,10 @@ World generateTunnel(std::uint64_t seed)
                            4.0);
     }
   }
-  for (const auto& edge : edges) {
-    if (edge.open) {
-      continue;
-    }
-    const auto a = lattice.junction(edge.from);
-    const auto b = lattice.junction(edge.to);
-    if (edge.horizontal) {
-      builder.addRectangle("rock", {a.x() + half, a.y() - half, b.x() - half, a.y() + half}, 4.0);
-    } else {
-      builder.addRectangle("rock", {a.x() - half, a.y() + half, a.x() + half, b.y() - half}, 4.0);
-    }
-  }
 
   // Goal: the junction whose shortest route from the start junction is nearest the target length.
   const int start_node = 0;
-  std::vector<int> previous;
-  const auto distance = lattice.distances(start_node, -1, &previous);
+  const auto distance = lattice.distances(start_node, -1);
   int goal_node = start_node;
   for (int node = 0; node < static_cast<int>(distance.size()); ++node) {
     if (std::abs(distance[node] - kTargetPath) < std::abs(distance[goal_node] - kTargetPath)) {
@@ -235,42 +233,141 @@ World generateTunnel(std::uint64_t seed)
   // junction and the tunnel straight on is open, so it can be pushed through the junction and out of the
   // way. Never into the goal's junction: a dead end there would leave the crate on the goal. It stands just
   // short of that junction, so the push is a short one.
-  std::vector<int> route_nodes{goal_node};
-  std::vector<int> route;  // edge indices: route[i] joins route_nodes[i] and route_nodes[i + 1]
-  for (int node = goal_node; node != start_node;) {
-    const int via = previous[node];
-    route.push_back(via);
-    node = edges[via].from == node ? edges[via].to : edges[via].from;
-    route_nodes.push_back(node);
+  // The shortest route over the open tunnels, as junctions and the tunnels between them.
+  struct Route {
+    std::vector<int> nodes;  // start to goal
+    std::vector<int> edges;  // edges[i] joins nodes[i] and nodes[i + 1]
+  };
+  const auto shortestRoute = [&]() {
+    std::vector<int> via;
+    lattice.distances(start_node, -1, &via);
+    Route found{{goal_node}, {}};
+    for (int node = goal_node; node != start_node;) {
+      const int edge = via[node];
+      found.edges.push_back(edge);
+      node = edges[edge].from == node ? edges[edge].to : edges[edge].from;
+      found.nodes.push_back(node);
+    }
+    std::reverse(found.nodes.begin(), found.nodes.end());
+    std::reverse(found.edges.begin(), found.edges.end());
+    return found;
+  };
+  // A crate across a route's tunnel, just short of its far junction.
+  struct Crate {
+    int edge;
+    int near_end;
+    int far_end;
+    ObjectWeight weight;
+  };
+  // Where a crate can stand on a route: a tunnel long enough, the route turning at its far junction, and
+  // the tunnel straight on there open to take the pushed crate (or, with light crates on the detours,
+  // closed: a niche is left there for it).
+  const auto crateSteps = [&](const Route& route) {
+    std::vector<std::size_t> steps;
+    for (std::size_t step = 0; step + 2 < route.nodes.size(); ++step) {
+      const int straight_on = lattice.straightOn(route.nodes[step], route.nodes[step + 1]);
+      const bool turns = straight_on != route.edges[step + 1];
+      if (lattice.length(edges[route.edges[step]]) >= 20.0 && turns && straight_on >= 0 &&
+          (edges[straight_on].open || light_on_detours)) {
+        steps.push_back(step);
+      }
+    }
+    return steps;
+  };
+  const Route route = shortestRoute();
+  std::vector<Crate> chosen;
+  if (light_on_detours) {
+    // Light crates, up to five, one at a time: on the current shortest route (the crates before closing
+    // their tunnels), the tunnel whose closing lengthens the way from start to goal most while a way
+    // remains, so that without pushing the goal is still reachable but far.
+    for (int crate = 0; crate < 5; ++crate) {
+      const Route current = shortestRoute();
+      double longest = 0.0;
+      std::optional<Crate> best;
+      for (const std::size_t step : crateSteps(current)) {
+        const int straight_on = lattice.straightOn(current.nodes[step], current.nodes[step + 1]);
+        if (std::any_of(chosen.begin(), chosen.end(),
+                        [&](const Crate& other) { return other.edge == straight_on; })) {
+          continue;  // a crate pushed on would meet another
+        }
+        Edge& tunnel = edges[current.edges[step]];
+        tunnel.open = false;
+        const double way = lattice.distances(start_node, -1)[goal_node];
+        tunnel.open = true;
+        if (std::isfinite(way) && way > longest) {
+          longest = way;
+          best =
+              Crate{current.edges[step], current.nodes[step], current.nodes[step + 1], ObjectWeight::Light};
+        }
+      }
+      if (!best) {
+        break;
+      }
+      edges[best->edge].open = false;
+      chosen.push_back(*best);
+    }
+    for (const Crate& crate : chosen) {
+      edges[crate.edge].open = true;  // the crates stand in open tunnels
+    }
+  } else {
+    // Up to three on the shortest route, the second heavy unless its tunnel is a bridge.
+    for (const std::size_t step : crateSteps(route)) {
+      if (chosen.size() == 3) {
+        break;
+      }
+      const bool bridge = !std::isfinite(lattice.distances(start_node, route.edges[step])[goal_node]);
+      chosen.push_back(Crate{route.edges[step], route.nodes[step], route.nodes[step + 1],
+                             (chosen.size() == 1 && !bridge) ? ObjectWeight::Heavy : ObjectWeight::Light});
+    }
   }
-  std::reverse(route_nodes.begin(), route_nodes.end());  // start to goal
-  std::reverse(route.begin(), route.end());
-  int crates = 0;
-  std::vector<geometry::Point> placed_objects;
-  for (std::size_t step = 0; step + 2 < route_nodes.size(); ++step) {
-    const int edge_index = route[step];
-    const int near_end = route_nodes[step];
-    const int far_end = route_nodes[step + 1];
-    const int straight_on = lattice.straightOn(near_end, far_end);
-    const bool turns = straight_on != route[step + 1];
-    if (crates == 3 || lattice.length(edges[edge_index]) < 20.0 || !turns || straight_on < 0 ||
-        !edges[straight_on].open) {
+  // The closed tunnels' rock; where a crate is to be pushed straight on into a closed tunnel, a niche
+  // of kNiche is left at that junction's end to take it.
+  std::vector<std::pair<int, int>> niches;  // closed edge, junction
+  for (const Crate& crate : chosen) {
+    const int straight_on = lattice.straightOn(crate.near_end, crate.far_end);
+    if (!edges[straight_on].open) {
+      niches.emplace_back(straight_on, crate.far_end);
+    }
+  }
+  for (int index = 0; index < static_cast<int>(edges.size()); ++index) {
+    const Edge& edge = edges[index];
+    if (edge.open) {
       continue;
     }
-    const bool bridge = !std::isfinite(lattice.distances(start_node, edge_index)[goal_node]);
-    const ObjectWeight weight = (crates == 1 && !bridge) ? ObjectWeight::Heavy : ObjectWeight::Light;
-    const auto centre = beforeJunction(lattice, near_end, far_end, random);
-    const bool horizontal = edges[edge_index].horizontal;
+    const auto niche_at = [&](int junction) {
+      return std::find(niches.begin(), niches.end(), std::make_pair(index, junction)) != niches.end() ? kNiche
+                                                                                                      : 0.0;
+    };
+    const auto a = lattice.junction(edge.from);
+    const auto b = lattice.junction(edge.to);
+    if (edge.horizontal) {
+      builder.addRectangle(
+          "rock",
+          {a.x() + half + niche_at(edge.from), a.y() - half, b.x() - half - niche_at(edge.to), a.y() + half},
+          4.0);
+    } else {
+      builder.addRectangle(
+          "rock",
+          {a.x() - half, a.y() + half + niche_at(edge.from), a.x() + half, b.y() - half - niche_at(edge.to)},
+          4.0);
+    }
+  }
+  std::vector<geometry::Point> placed_objects;
+  for (const Crate& crate : chosen) {
+    const auto centre = beforeJunction(lattice, crate.near_end, crate.far_end, random);
+    const bool horizontal = edges[crate.edge].horizontal;
     builder.addObject(centre, horizontal ? kCrateDepth : kTunnel - 0.4,
-                      horizontal ? kTunnel - 0.4 : kCrateDepth, 0.0, weight, random);
+                      horizontal ? kTunnel - 0.4 : kCrateDepth, 0.0, crate.weight, random);
     placed_objects.push_back(centre);
-    ++crates;
   }
   // Loose boxes against tunnel sides elsewhere: they narrow a tunnel but do not close it.
   for (int placed = 0, tries = 0; placed < 12 && tries < 100; ++tries) {
     const int edge_index = random.integer(0, static_cast<int>(edges.size()) - 1);
     const Edge& edge = edges[edge_index];
-    if (!edge.open || std::find(route.begin(), route.end(), edge_index) != route.end() ||
+    const bool crate_tunnel = std::any_of(chosen.begin(), chosen.end(),
+                                          [&](const Crate& crate) { return crate.edge == edge_index; });
+    if (!edge.open || crate_tunnel ||
+        std::find(route.edges.begin(), route.edges.end(), edge_index) != route.edges.end() ||
         lattice.length(edge) < 20.0) {
       continue;
     }

@@ -12,12 +12,16 @@
 
 int main(int argc, char** argv)
 {
-  CLI::App app("Generate a seeded simulator world (room, room_objects, office, tunnel, demo_room) as YAML",
-               "ifar-worldgen");
+  CLI::App app(
+      "Generate a seeded simulator world (room, room_objects, office, tunnel, demo_room,\n"
+      "blocked_office, blocked_tunnel) as YAML",
+      "ifar-worldgen");
   std::string kind_text;
   std::uint64_t seed = 1;
   std::string out;
-  app.add_option("--kind", kind_text, "room | room_objects | office | tunnel | demo_room")->required();
+  app.add_option("--kind", kind_text,
+                 "room | room_objects | office | tunnel | demo_room | blocked_office | blocked_tunnel")
+      ->required();
   app.add_option("--seed", seed, "random seed: the same seed gives the same world")
       ->check(ifar::common::atLeast(0))
       ->capture_default_str();
@@ -28,8 +32,9 @@ int main(int argc, char** argv)
 
   const auto kind = ifar::sim::parseWorldKind(kind_text);
   if (!kind) {
-    std::cerr << "error: --kind: unknown kind '" << kind_text
-              << "' (expected room, room_objects, office, tunnel or demo_room)\n";
+    std::cerr
+        << "error: --kind: unknown kind '" << kind_text
+        << "' (expected room, room_objects, office, tunnel, demo_room, blocked_office or blocked_tunnel)\n";
     return 2;
   }
   const auto result = ifar::sim::generateWorld(*kind, seed);

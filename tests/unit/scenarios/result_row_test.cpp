@@ -48,6 +48,7 @@ ResultRow searchRow()
   row.length = 95.25;
   row.optimal = 90.5;
   row.achievable = 93.0;
+  row.without_pushing = 131.5;
   row.ms = 0.125;
   row.status = "solved";
   row.graph_vertices = 304;
@@ -60,7 +61,7 @@ TEST(JsonLine, SearchRowHasEveryKeyInOrder)
       toJsonLine(searchRow()),
       "{\"table\": \"search\", \"planner\": \"ours\", \"kind\": \"office\", \"world\": \"office2x-3+4\", "
       "\"task\": \"t2\", \"success\": true, \"length\": 95.25, \"optimal\": 90.5, \"achievable\": 93, "
-      "\"ms\": 0.125, "
+      "\"without_pushing\": 131.5, \"ms\": 0.125, "
       "\"status\": \"solved\", \"reason\": \"\", \"graph_vertices\": 304}");
 }
 
@@ -76,7 +77,7 @@ TEST(JsonLine, FailureWritesNullLengthAndEscapedReason)
       toJsonLine(row),
       "{\"table\": \"search\", \"planner\": \"ours\", \"kind\": \"office\", \"world\": \"office2x-3+4\", "
       "\"task\": \"t2\", \"success\": false, \"length\": null, \"optimal\": 90.5, \"achievable\": 93, "
-      "\"ms\": null, "
+      "\"without_pushing\": 131.5, \"ms\": null, "
       "\"status\": \"timeout\", \"reason\": \"cap \\\"5 s\\\"\\nreached\\\\\", \"graph_vertices\": 304}");
 }
 

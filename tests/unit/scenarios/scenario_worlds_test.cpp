@@ -1,3 +1,4 @@
+#include <cmath>
 #include <fstream>
 #include <set>
 
@@ -7,6 +8,7 @@
 #include "bench/scenarios/scenario_worlds.hpp"
 #include "bench/scenarios/task_selection.hpp"
 #include "sim/generators/generators.hpp"
+#include "sim/world/world_geometry.hpp"
 #include "sim/world/world_validation.hpp"
 
 namespace ifar::scenarios {
@@ -98,6 +100,87 @@ TEST(ScenarioWorlds, WillowGetsTheSameObjectsForTheSameSeed)
   }
 }
 
+TEST(ScenarioWorlds, NoTwoSuiteSeedsShareAWorld)
+{
+  for (const ScenarioKind kind : {ScenarioKind::Room, ScenarioKind::Office, ScenarioKind::BlockedOffice}) {
+    std::set<std::string> names;
+    for (const std::uint64_t seed : {1, 2, 3}) {
+      const WorldSetResult set = scenarioWorlds(kind, {seed, 4, ""});
+      ASSERT_TRUE(set.ok()) << set.error;
+      ASSERT_EQ(set.worlds.size(), 2u);
+      for (const ScenarioWorld& world : set.worlds) {
+        EXPECT_TRUE(names.insert(world.name).second) << world.name << " again for seed " << seed;
+      }
+    }
+  }
+  // Seed 1 keeps the worlds it always had.
+  const WorldSetResult office = scenarioWorlds(ScenarioKind::Office, {1, 4, ""});
+  ASSERT_TRUE(office.ok()) << office.error;
+  EXPECT_EQ(office.worlds[0].name, "office2x-3+4");
+  EXPECT_EQ(office.worlds[1].name, "office2x-5+6");
+  EXPECT_EQ(scenarioWorlds(ScenarioKind::Room, {1, 4, ""}).worlds[1].name, "room-2");
+}
+
+TEST(ScenarioWorlds, NeverPushingInTheBlockedOfficeCostsALongWayRound)
+{
+  // Light boxes in the start's and the goal's room's doors and in both fire doors: the way that never
+  // pushes goes round by the rooms' deep side doors, at least 1.4 times as long as the one that pushes.
+  for (const std::uint64_t seed : {1, 2, 3, 4}) {
+    const sim::WorldResult world = sim::generateWorld(sim::WorldKind::BlockedOffice, seed);
+    ASSERT_TRUE(world.ok()) << world.error();
+    // Door boxes stand square to the walls (loose boxes are turned at random): all light, four or more.
+    const common::VehicleSettings vehicle;
+    int door_boxes = 0;
+    for (const sim::MovableObject& object : world.world().objects) {
+      if (object.pose.heading == 0.0) {
+        ++door_boxes;
+        EXPECT_TRUE(sim::isPushable(object, vehicle)) << object.name << ", seed " << seed;
+      }
+    }
+    EXPECT_GE(door_boxes, 4) << "seed " << seed;
+    const ScenarioMaps maps = buildScenarioMaps(world.world(), MapSettings{});
+    TaskSelectionSettings selection;
+    selection.count = 1;
+    selection.min_optimal = minimumOptimalLength(ScenarioKind::BlockedOffice);
+    const std::vector<Task> tasks = selectTasks(world.world(), maps, selection);
+    ASSERT_EQ(tasks.size(), 1u) << "seed " << seed;
+    ASSERT_TRUE(tasks[0].from_world);
+    EXPECT_GE(tasks[0].without_pushing, 1.4 * tasks[0].achievable) << "seed " << seed;
+  }
+}
+
+TEST(ScenarioWorlds, TheBlockedTunnelsCratesAreLightAndAWayRoundRemains)
+{
+  const common::VehicleSettings vehicle;
+  double achievable = 0.0;
+  double without_pushing = 0.0;
+  int crates = 0;
+  for (const std::uint64_t seed : {1, 2, 3, 4}) {
+    const sim::WorldResult world = sim::generateWorld(sim::WorldKind::BlockedTunnel, seed);
+    ASSERT_TRUE(world.ok()) << world.error();
+    for (const sim::MovableObject& object : world.world().objects) {
+      const Eigen::AlignedBox2d box = geometry::boundingBox(sim::placedOutline(object));
+      if (box.sizes().maxCoeff() > 3.0) {  // across the 4 m tunnel: a crate (loose boxes are 1 m)
+        ++crates;
+        EXPECT_TRUE(sim::isPushable(object, vehicle)) << object.name << ", seed " << seed;
+      }
+    }
+    const ScenarioMaps maps = buildScenarioMaps(world.world(), MapSettings{});
+    TaskSelectionSettings selection;
+    selection.count = 1;
+    selection.min_optimal = minimumOptimalLength(ScenarioKind::BlockedTunnel);
+    const std::vector<Task> tasks = selectTasks(world.world(), maps, selection);
+    ASSERT_EQ(tasks.size(), 1u) << "seed " << seed;
+    // Without pushing the goal is still reachable.
+    ASSERT_TRUE(std::isfinite(tasks[0].without_pushing)) << "seed " << seed;
+    achievable += tasks[0].achievable;
+    without_pushing += tasks[0].without_pushing;
+  }
+  EXPECT_GE(crates, 8);
+  // Over the four worlds, never pushing costs the world's tasks at least a fifth more.
+  EXPECT_GE(without_pushing, 1.2 * achievable);
+}
+
 TEST(KindNames, RoundTrip)
 {
   for (const ScenarioKind kind : allKinds()) {
@@ -106,6 +189,8 @@ TEST(KindNames, RoundTrip)
   EXPECT_FALSE(parseKind("garage").has_value());
   EXPECT_EQ(minimumOptimalLength(ScenarioKind::Room), 15.0);
   EXPECT_EQ(minimumOptimalLength(ScenarioKind::Tunnel), 80.0);
+  EXPECT_EQ(kindName(ScenarioKind::BlockedOffice), "blocked_office");
+  EXPECT_EQ(minimumOptimalLength(ScenarioKind::BlockedOffice), 40.0);
 }
 
 }  // namespace

@@ -324,3 +324,34 @@ TEST(LossTable, MeanBucketsPerPlannerAndProfileAndTheLargestGap)
 
 }  // namespace
 }  // namespace ifar::scenarios
+
+namespace ifar::scenarios {
+namespace {
+
+TEST(InteractionGain, TheShareOfWhatPushingCouldSaveOverTheTasksBothArrivedOn)
+{
+  std::vector<ResultRow> rows;
+  const auto driven = [&rows](const std::string& planner, const std::string& task, bool arrived,
+                              double length) {
+    ResultRow result = row("system", planner, "blocked_office", arrived, length, 44.0, 1000.0, task);
+    result.achievable = 45.0;
+    result.without_pushing = 90.0;  // pushing could save half
+    rows.push_back(result);
+  };
+  // t0: FAR mode 100 m, ours 70 m; t1 as well but FAR mode did not arrive: left out.
+  driven("far", "t0", true, 100.0);
+  driven("ours", "t0", true, 70.0);
+  driven("far", "t1", false, 300.0);
+  driven("ours", "t1", true, 50.0);
+  const std::string check = targetCheck(rows);
+  // 30 % less travel of 50 % possible: 60 % captured.
+  EXPECT_EQ(
+      lineStartingWith(check, "| interaction gain captured >= 60% (blocked_office)"),
+      "| interaction gain captured >= 60% (blocked_office) | 60% (30.0% less travel than FAR mode of 50.0% "
+      "possible, 1 tasks) | met |");
+  EXPECT_EQ(lineStartingWith(check, "| interaction gain captured >= 60% (office)"),
+            "| interaction gain captured >= 60% (office) | - | not measured |");
+}
+
+}  // namespace
+}  // namespace ifar::scenarios

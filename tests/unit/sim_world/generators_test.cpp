@@ -13,8 +13,8 @@
 namespace ifar::sim {
 namespace {
 
-const WorldKind kSeededKinds[] = {WorldKind::Room, WorldKind::RoomObjects, WorldKind::Office,
-                                  WorldKind::Tunnel};
+const WorldKind kSeededKinds[] = {WorldKind::Room,   WorldKind::RoomObjects,   WorldKind::Office,
+                                  WorldKind::Tunnel, WorldKind::BlockedOffice, WorldKind::BlockedTunnel};
 
 /// Length of the shortest 8-connected path between start and first goal over grid cells whose centres lie
 /// outside every static obstacle (movable objects ignored): the "short cut" length.
@@ -332,7 +332,9 @@ TEST(SimWorldCheckedIn, LoadAndMatchTheirGenerator)
                                                      {"room_objects.yaml", WorldKind::RoomObjects},
                                                      {"office.yaml", WorldKind::Office},
                                                      {"tunnel.yaml", WorldKind::Tunnel},
-                                                     {"demo_room.yaml", WorldKind::DemoRoom}};
+                                                     {"demo_room.yaml", WorldKind::DemoRoom},
+                                                     {"blocked_office.yaml", WorldKind::BlockedOffice},
+                                                     {"blocked_tunnel.yaml", WorldKind::BlockedTunnel}};
   for (const auto& [file, kind] : files) {
     const std::string path = std::string(IFAR_SOURCE_DIR) + "/config/worlds/" + file;
     const auto loaded = loadWorldFile(path);
