@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <optional>
 #include <utility>
@@ -160,17 +162,19 @@ std::optional<ScoredArc> scoreArc(const ArcScoring& scoring, const VelocityComma
 }
 
 /// Samples the fan of arcs (forward speeds up to `top_speed`, plus turning on the spot, times the turn
-/// rates) and sets `result`'s command, clearance and progress to the best free one; counts the arcs.
+/// rates; with `top_speed` 0 only the turns on the spot) and sets `result`'s command, clearance and
+/// progress to the best free one; counts the arcs.
 void pickArc(const ArcScoring& scoring, double top_speed, const DifferentialDrive& drive,
              FollowerResult& result)
 {
-  const int linear_samples = std::max(1, scoring.settings.linear_samples);
+  const int linear_samples = top_speed > 0.0 ? std::max(1, scoring.settings.linear_samples) : 0;
   const int angular_samples = std::max(2, scoring.settings.angular_samples);
   double best_score = -kInfinity;
   for (int linear_index = 0; linear_index <= linear_samples; ++linear_index) {
     for (int angular_index = 0; angular_index < angular_samples; ++angular_index) {
       const double fraction = -1.0 + 2.0 * angular_index / (angular_samples - 1);
-      VelocityCommand arc{top_speed * linear_index / linear_samples, drive.maxAngularVelocity() * fraction};
+      VelocityCommand arc{linear_samples > 0 ? top_speed * linear_index / linear_samples : 0.0,
+                          drive.maxAngularVelocity() * fraction};
       if (arc.linear == 0.0 && std::abs(arc.angular) < 1e-9) {
         continue;
       }
@@ -189,6 +193,31 @@ void pickArc(const ArcScoring& scoring, double top_speed, const DifferentialDriv
       }
     }
   }
+}
+
+/// The forward speed allowed facing `heading_error` (radians, 0..pi) off the way on (see
+/// FollowerSettings::turn_in_place_rad).
+double headingSpeedCap(double top_speed, double heading_error, const FollowerSettings& settings)
+{
+  if (settings.turn_in_place_rad <= 0.0) {
+    return top_speed;
+  }
+  return top_speed * std::max(0.0, 1.0 - heading_error / settings.turn_in_place_rad);
+}
+
+/// How far the heading is off the way the cost-to-go falls at the pose, signed (counter-clockwise
+/// positive): off the target's bearing when the target is within the sampling circle, or the field has no
+/// way there.
+double headingErrorToTheWayOn(const geometry::Pose2& pose, const geometry::Point& target,
+                              const NavigationField& field, const FollowerSettings& settings)
+{
+  if ((target - pose.position()).norm() > settings.descent_radius_m) {
+    if (const std::optional<double> descent =
+            field.descentDirection(pose.position(), settings.descent_radius_m)) {
+      return wrapToPi(*descent - pose.heading);
+    }
+  }
+  return wrapToPi(std::atan2(target.y() - pose.y, target.x() - pose.x) - pose.heading);
 }
 
 }  // namespace
@@ -244,7 +273,21 @@ FollowerResult follow(const geometry::Pose2& pose, const geometry::Point& target
   const int steps = std::max(1, static_cast<int>(std::ceil(settings.horizon_s / settings.time_step_s)));
   const ArcScoring scoring{pose,       target,        grid,   field, settings, start_distance,
                            start_cost, search_radius, margin, reach, steps};
-  pickArc(scoring, top_speed, drive, result);
+  // Facing off the way on, slower (down to turning on the spot); when that does not turn the vehicle
+  // toward the way on (the turn is blocked: a post beside the rear, a box ahead), the whole fan.
+  const double heading_error = headingErrorToTheWayOn(pose, target, field, settings);
+  const double capped_speed = headingSpeedCap(top_speed, std::abs(heading_error), settings);
+  pickArc(scoring, capped_speed, drive, result);
+  // A turn counts when it gets a good part of the way round within the horizon: a slow turn that is all
+  // the room allows (blocked a few degrees on) is no way to turn.
+  constexpr double kUsefulTurnRad = 0.5;
+  const bool turns_toward = result.free_arcs > 0 && result.command.angular * heading_error > 0.0 &&
+                            std::abs(result.command.angular) * settings.horizon_s >=
+                                std::min(std::abs(heading_error), kUsefulTurnRad);
+  if (capped_speed < top_speed && !turns_toward) {
+    result = FollowerResult{};
+    pickArc(scoring, top_speed, drive, result);
+  }
 
   if (result.free_arcs == 0) {
     result.status = FollowerStatus::Blocked;

@@ -76,6 +76,44 @@ TEST_F(FollowerTest, TurnsTowardTargetBehind)
   EXPECT_GT(result.command.angular, 0.5);  // target is behind and slightly left: turn left hard
 }
 
+/// Drives follow() toward `target` from `start` in 20 ms cycles; the distance driven until it arrives
+/// (infinity when it does not within a minute).
+double drivenTo(const Pose2& start, const Point& target, const FollowerSettings& settings,
+                const DifferentialDrive& drive)
+{
+  Pose2 pose = start;
+  double driven = 0.0;
+  for (int cycle = 0; cycle < 3000; ++cycle) {
+    const FollowerResult result = follow(pose, target, true, {}, settings, drive);
+    if (result.status == FollowerStatus::Arrived) {
+      return driven;
+    }
+    const Pose2 next = testing::drive(pose, result.command, 0.02);
+    driven += (next.position() - pose.position()).norm();
+    pose = next;
+  }
+  return std::numeric_limits<double>::infinity();
+}
+
+TEST_F(FollowerTest, TurnsOnTheSpotWhereThePathTurnsSharplyInsteadOfLooping)
+{
+  // A target square to the left, or far behind: the vehicle pivots first, then drives nearly straight.
+  const FollowerResult square = follow({0.0, 0.0, 0.0}, {0.0, 3.0}, true, {}, settings_, drive_);
+  EXPECT_EQ(square.command.linear, 0.0);
+  EXPECT_GT(square.command.angular, 0.5);
+  const double straight = 3.0 - settings_.goal_tolerance_m;
+  EXPECT_LT(drivenTo({0.0, 0.0, 0.0}, {0.0, 3.0}, settings_, drive_), straight + 0.25);
+  EXPECT_LT(drivenTo({0.0, 0.0, 0.0}, {-2.1, 2.1}, settings_, drive_), straight + 0.25);
+  // Half off the way on: at most half speed, turning toward it.
+  const FollowerResult oblique = follow({0.0, 0.0, 0.0}, {3.0, 3.0}, true, {}, settings_, drive_);
+  EXPECT_LE(oblique.command.linear, 0.5 * settings_.max_linear_velocity + 1e-9);
+  EXPECT_GT(oblique.command.angular, 0.0);
+  // Without the cap, the fastest arcs swing wide: a loop's worth longer.
+  FollowerSettings uncapped = settings_;
+  uncapped.turn_in_place_rad = 0.0;
+  EXPECT_GT(drivenTo({0.0, 0.0, 0.0}, {-2.1, 2.1}, uncapped, drive_), straight + 0.75);
+}
+
 TEST_F(FollowerTest, ReversesTowardATargetBehindInAnAisleTooNarrowToTurnIn)
 {
   // A 1.24 m aisle along x, closed 0.8 m ahead; the target 3 m behind. Turning on the spot is not free
