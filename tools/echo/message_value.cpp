@@ -109,7 +109,7 @@ class ValueReader {
         value.integer = data[0];
         break;
       case FieldKind::kInt8:
-        value.integer = static_cast<std::int8_t>(data[0]);
+        value.integer = data[0] < 0x80 ? data[0] : data[0] - 0x100;  // two's complement
         break;
       case FieldKind::kInt16:
         value.integer = static_cast<std::int16_t>(common::readUint16Be(data));

@@ -30,6 +30,7 @@ LoggerProcess::LoggerProcess(const std::vector<std::string>& arguments)
   // Everything the child needs is prepared before fork: between fork and exec it only makes
   // async-signal-safe calls (LCM's threads may hold locks the child would wait on for ever).
   std::vector<char*> argv;
+  argv.reserve(arguments.size() + 1);
   for (const auto& argument : arguments) {
     argv.push_back(const_cast<char*>(argument.c_str()));  // execv's signature predates const
   }

@@ -94,6 +94,7 @@ class Recorder {
       return;
     }
     if (const std::optional<std::string> exit = logger_.pollExit()) {
+      passOnLoggerOutput();  // its last words, written just before it ended
       watch_.onLoggerExit(*exit);
       logger_died_ = true;
       beat();
