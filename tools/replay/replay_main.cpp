@@ -190,14 +190,17 @@ class Player {
     } else {
       clock_.resume(now);
     }
-    finishProgress();
-    say(std::string(paused ? "paused" : "resumed") + " at " + progressLine());
+    if (line_open_) {
+      std::fprintf(stderr, "\r\033[K");  // the status line gives way to the news
+      line_open_ = false;
+    }
+    say(std::string(paused ? "paused" : "resumed") + " at " + progressLine(false));
   }
 
-  std::string progressLine() const
+  std::string progressLine(bool show_paused = true) const
   {
     const std::int64_t elapsed = first_log_time_us_ ? last_log_time_us_ - *first_log_time_us_ : 0;
-    return report_.progressLine(elapsed, log_.position(), log_.fileSize(), clock_.paused());
+    return report_.progressLine(elapsed, log_.position(), log_.fileSize(), show_paused && clock_.paused());
   }
 
   void showProgress(bool force)
