@@ -25,7 +25,7 @@ std::string javaRegexOfNames(const std::set<std::string>& names)
 }
 
 std::vector<std::string> logPlayerArguments(const std::string& log, const std::set<std::string>& switched_off,
-                                            const std::string& lcm_url)
+                                            const std::string& lcm_url, bool paused)
 {
   std::vector<std::string> arguments;
   if (!lcm_url.empty()) {
@@ -33,6 +33,9 @@ std::vector<std::string> logPlayerArguments(const std::string& log, const std::s
   }
   if (!switched_off.empty()) {
     arguments.push_back("--filter=" + javaRegexOfNames(switched_off));
+  }
+  if (paused) {
+    arguments.emplace_back("--paused");
   }
   arguments.push_back(log);
   return arguments;

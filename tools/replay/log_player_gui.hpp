@@ -13,8 +13,9 @@ namespace ifar::replay {
 /// character of a name is taken as regex syntax; "" for no names.
 std::string javaRegexOfNames(const std::set<std::string>& names);
 
-/// LogPlayer's arguments: `lcm_url` (when not empty), the channels in `switched_off` filtered out, `log`.
+/// LogPlayer's arguments: `lcm_url` (when not empty), the channels in `switched_off` filtered out, paused at
+/// the start when `paused`, `log`.
 std::vector<std::string> logPlayerArguments(const std::string& log, const std::set<std::string>& switched_off,
-                                            const std::string& lcm_url);
+                                            const std::string& lcm_url, bool paused);
 
 }  // namespace ifar::replay

@@ -273,8 +273,8 @@ int runGui(const ReplayOptions& options, const ReplayFilter& filter)
   }
   say(switched_off.empty() ? std::string("lcm-logplayer-gui: every channel on")
                            : "lcm-logplayer-gui with these channels switched off:" + off_list);
-  const std::vector<std::string> arguments =
-      ifar::replay::logPlayerArguments(options.log, switched_off, ifar::bus::resolveLcmUrl(options.lcm_url));
+  const std::vector<std::string> arguments = ifar::replay::logPlayerArguments(
+      options.log, switched_off, ifar::bus::resolveLcmUrl(options.lcm_url), options.start_paused);
   return fail(
       1, ifar::tools::replaceProcess(ifar::tools::lcmJavaCommand({jar}, "lcm.logging.LogPlayer", arguments)));
 }
@@ -333,7 +333,8 @@ int main(int argc, char** argv)
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   app.add_option("--lcm-url", options.lcm_url, "LCM URL (default: LCM_DEFAULT_URL or LCM's default)");
-  app.add_flag("--paused", options.start_paused, "start paused (space or SIGUSR2 starts playing)");
+  app.add_flag("--paused", options.start_paused,
+               "start paused (space or SIGUSR2 starts playing; with --gui, its play button)");
   app.add_flag("--quiet", options.quiet, "no progress lines");
   app.add_flag(
       "--gui", options.gui,

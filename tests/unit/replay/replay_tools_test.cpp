@@ -192,10 +192,12 @@ TEST(LogPlayerGui, SwitchedOffChannelsBecomeOneQuotedJavaRegex)
   EXPECT_EQ(javaRegexOfNames({}), "");
   EXPECT_EQ(javaRegexOfNames({"GOAL", "CAN_VEHICLE"}), "^(\\QCAN_VEHICLE\\E|\\QGOAL\\E)$");
   EXPECT_EQ(javaRegexOfNames({"A.B\\EC"}), "^(\\QA.B\\E\\\\E\\QC\\E)$");
-  EXPECT_EQ(logPlayerArguments("run.lcmlog", {"GOAL"}, "udpm://239.255.76.67:7700?ttl=0"),
+  EXPECT_EQ(logPlayerArguments("run.lcmlog", {"GOAL"}, "udpm://239.255.76.67:7700?ttl=0", false),
             (std::vector<std::string>{"--lcm-url=udpm://239.255.76.67:7700?ttl=0", "--filter=^(\\QGOAL\\E)$",
                                       "run.lcmlog"}));
-  EXPECT_EQ(logPlayerArguments("run.lcmlog", {}, ""), std::vector<std::string>{"run.lcmlog"});
+  EXPECT_EQ(logPlayerArguments("run.lcmlog", {}, "", false), std::vector<std::string>{"run.lcmlog"});
+  EXPECT_EQ(logPlayerArguments("run.lcmlog", {}, "", true),
+            (std::vector<std::string>{"--paused", "run.lcmlog"}));
 }
 
 }  // namespace
