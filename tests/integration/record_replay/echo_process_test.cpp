@@ -10,7 +10,7 @@
 #include "lcmtypes/samples/sample_messages.hpp"
 #include "testing/child_process.hpp"
 #include "testing/temporary_directory.hpp"
-#include "tests/integration/record_replay/bus_listener.hpp"
+#include "tests/integration/record_replay/tool_test_support.hpp"
 
 namespace ifar::record_replay_test {
 namespace {

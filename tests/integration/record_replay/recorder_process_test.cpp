@@ -22,39 +22,13 @@
 #include "lcmtypes/checked_decode.hpp"
 #include "testing/child_process.hpp"
 #include "testing/temporary_directory.hpp"
-#include "tests/integration/record_replay/bus_listener.hpp"
+#include "tests/integration/record_replay/tool_test_support.hpp"
 
 namespace ifar::record_replay_test {
 namespace {
 
 using test_support::ChildOptions;
 using test_support::ChildProcess;
-
-/// The children of process `parent`, from /proc.
-std::vector<pid_t> childrenOf(pid_t parent)
-{
-  std::vector<pid_t> children;
-  for (const auto& entry : std::filesystem::directory_iterator("/proc")) {
-    const std::string name = entry.path().filename().string();
-    if (name.find_first_not_of("0123456789") != std::string::npos) {
-      continue;
-    }
-    const std::string text = test_support::readText((entry.path() / "stat").string());
-    // pid (comm) state ppid ...: the command name may hold spaces, so read after its closing parenthesis.
-    const std::size_t close = text.rfind(')');
-    if (close == std::string::npos) {
-      continue;
-    }
-    std::istringstream fields(text.substr(close + 1));
-    std::string state;
-    pid_t ppid = 0;
-    fields >> state >> ppid;
-    if (ppid == parent) {
-      children.push_back(static_cast<pid_t>(std::stoi(name)));
-    }
-  }
-  return children;
-}
 
 /// The recorder's heartbeats as the bus carries them, newest last.
 std::vector<heartbeat_t> recorderBeats(const BusListener& listener, pid_t recorder)

@@ -21,7 +21,7 @@
 #include "lcmtypes/samples/sample_messages.hpp"
 #include "testing/child_process.hpp"
 #include "testing/temporary_directory.hpp"
-#include "tests/integration/record_replay/bus_listener.hpp"
+#include "tests/integration/record_replay/tool_test_support.hpp"
 
 namespace ifar::record_replay_test {
 namespace {
@@ -80,6 +80,19 @@ std::vector<Received> without(const std::vector<Received>& events, const std::ve
   }
   return kept;
 }
+
+/// Ends a whole process group when it goes (SIGTERM), whatever the test did before.
+struct ProcessGroupStop {
+  pid_t group;
+  ProcessGroupStop(const ProcessGroupStop&) = delete;
+  ProcessGroupStop& operator=(const ProcessGroupStop&) = delete;
+  ~ProcessGroupStop()
+  {
+    if (group > 0) {
+      kill(-group, SIGTERM);
+    }
+  }
+};
 
 class ReplayProcess : public ::testing::Test {
  protected:
@@ -285,10 +298,13 @@ TEST_F(ReplayProcess, GuiStartsLogPlayerOnJava17WithTheCommandChannelsSwitchedOf
   ASSERT_TRUE(writeLog(path("mixed.lcmlog"), events));
   const std::string url = privateUrl(7847);
   BusListener listener(url, ".*");
-  // timeout ends the player (ifar replay execs into java) so xvfb-run ends on its own.
-  ChildProcess child({"/usr/bin/xvfb-run", "-a", "timeout", "15", toolPath("ifar-replay"),
+  // In a process group of its own (setsid execs in place), so that if the test stops early the player
+  // (ifar replay execs into java), xvfb-run and its X server all end together: xvfb-run stopped alone
+  // leaves its server running.
+  ChildProcess child({"/usr/bin/setsid", "/usr/bin/xvfb-run", "-a", toolPath("ifar-replay"),
                       path("mixed.lcmlog"), "--gui", "--lcm-url", url},
                      ChildOptions{path("replay.out"), "", {}});
+  const ProcessGroupStop stop_group{child.pid()};
   // The player cannot leave out single CAN frames: CAN_VEHICLE, with its commands, starts switched off.
   std::vector<Received> expected;
   for (const Received& event : events) {
@@ -300,7 +316,13 @@ TEST_F(ReplayProcess, GuiStartsLogPlayerOnJava17WithTheCommandChannelsSwitchedOf
   ASSERT_EQ(expected.size(), 23U);
   listener.spin(14.0, [&] { return listener.received().size() >= expected.size(); });
   listener.spin(0.5);
-  child.stop(SIGTERM);
+  // The player stopped, xvfb-run stops its X server, removes its files and ends.
+  for (const pid_t process : childrenOf(child.pid())) {
+    if (test_support::readText("/proc/" + std::to_string(process) + "/comm") == "java\n") {
+      kill(process, SIGTERM);
+    }
+  }
+  EXPECT_TRUE(child.waitFor(10.0).has_value()) << "xvfb-run did not end with the player";
   const std::string text = output();
   EXPECT_TRUE(contains(text,
                        "lcm-logplayer-gui with these channels switched off: CAN_VEHICLE E_STOP GOAL "

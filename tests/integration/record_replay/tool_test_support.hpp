@@ -1,14 +1,18 @@
 #pragma once
 // For the record, replay and echo process tests: a private LCM bus in the test process that keeps every
-// message it receives (channel and bytes, in arrival order), the tools' paths, and logs written event by
-// event.
+// message it receives (channel and bytes, in arrival order), the tools' paths, logs written event by event,
+// and the children of a process.
 
 #include <lcm/lcm.h>
 
+#include <sys/types.h>
+
 #include <chrono>
 #include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <utility>
@@ -99,6 +103,32 @@ inline bool writeLog(const std::string& path, const std::vector<Received>& event
     time_us += 5'000;
   }
   return writer.openError().empty();
+}
+
+/// The children of process `parent`, from /proc.
+inline std::vector<pid_t> childrenOf(pid_t parent)
+{
+  std::vector<pid_t> children;
+  for (const auto& entry : std::filesystem::directory_iterator("/proc")) {
+    const std::string name = entry.path().filename().string();
+    if (name.find_first_not_of("0123456789") != std::string::npos) {
+      continue;
+    }
+    const std::string text = test_support::readText((entry.path() / "stat").string());
+    // pid (comm) state ppid ...: the command name may hold spaces, so read after its closing parenthesis.
+    const std::size_t close = text.rfind(')');
+    if (close == std::string::npos) {
+      continue;
+    }
+    std::istringstream fields(text.substr(close + 1));
+    std::string state;
+    pid_t ppid = 0;
+    fields >> state >> ppid;
+    if (ppid == parent) {
+      children.push_back(static_cast<pid_t>(std::stoi(name)));
+    }
+  }
+  return children;
 }
 
 inline bool contains(const std::string& text, const std::string& part)
