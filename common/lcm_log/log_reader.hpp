@@ -73,6 +73,8 @@ class LogReader {
   bool next(LogEvent& event);
 
   std::uint64_t fileSize() const { return file_size_; }
+  /// The offset of the next byte next() reads: with fileSize(), how far through the log a reader is.
+  std::uint64_t position() const { return position_; }
   /// Events next() returned so far.
   std::uint64_t eventCount() const { return event_count_; }
   /// Bytes that belonged to no valid event, so far.

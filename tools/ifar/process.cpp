@@ -1,5 +1,6 @@
 #include "tools/ifar/process.hpp"
 
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -59,6 +60,18 @@ std::string findProgram(const std::string& command)
     }
   }
   return "";
+}
+
+std::string describeExitStatus(int status)
+{
+  if (WIFEXITED(status)) {
+    return "exited with code " + std::to_string(WEXITSTATUS(status));
+  }
+  if (WIFSIGNALED(status)) {
+    return std::string("killed by signal ") + std::to_string(WTERMSIG(status)) + " (" +
+           strsignal(WTERMSIG(status)) + ")";
+  }
+  return "stopped";
 }
 
 }  // namespace ifar::tools

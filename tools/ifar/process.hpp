@@ -1,5 +1,6 @@
 #pragma once
-// Replacing the current process with another program, so signals (Ctrl-C) reach it directly.
+// Running other programs from the ifar commands: replacing the current process (so signals such as Ctrl-C
+// reach the program directly), finding programs and the subcommands beside ifar, and naming how one ended.
 
 #include <string>
 #include <vector>
@@ -17,5 +18,8 @@ std::vector<std::string> externalSubcommands(const std::string& directory);
 
 /// `command` found on PATH (or as given when it contains a slash and exists); "" when not found.
 std::string findProgram(const std::string& command);
+
+/// A wait() status in words: "exited with code 1", "killed by signal 9 (Killed)".
+std::string describeExitStatus(int status);
 
 }  // namespace ifar::tools

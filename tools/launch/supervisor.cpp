@@ -15,6 +15,7 @@
 
 #include "common/signals.hpp"
 #include "common/time.hpp"
+#include "tools/ifar/process.hpp"
 
 namespace ifar::launch {
 namespace {
@@ -30,18 +31,6 @@ sigset_t handledSignals()
   sigaddset(&signals, SIGTERM);
   sigaddset(&signals, SIGCHLD);
   return signals;
-}
-
-std::string describeStatus(int status)
-{
-  if (WIFEXITED(status)) {
-    return "exited with code " + std::to_string(WEXITSTATUS(status));
-  }
-  if (WIFSIGNALED(status)) {
-    return std::string("killed by signal ") + std::to_string(WTERMSIG(status)) + " (" +
-           strsignal(WTERMSIG(status)) + ")";
-  }
-  return "stopped";
 }
 
 const char* colourOf(std::size_t index)
@@ -197,7 +186,7 @@ void Supervisor::reapChildren(bool stopping, SupervisorResult& result)
       }
       drainOutput(child, true);
       child.pid = -1;
-      say("launch", child.spec.name + " " + describeStatus(status));
+      say("launch", child.spec.name + " " + tools::describeExitStatus(status));
       if (stopping) {
         child.done = true;
         break;
@@ -216,7 +205,7 @@ void Supervisor::reapChildren(bool stopping, SupervisorResult& result)
         child.done = true;
         if (child.spec.required) {
           const bool failed = !(WIFEXITED(status) && WEXITSTATUS(status) == 0);
-          result.reason = "required process " + child.spec.name + " " + describeStatus(status);
+          result.reason = "required process " + child.spec.name + " " + tools::describeExitStatus(status);
           result.exit_code = failed ? 1 : 0;
         }
       }

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # `ifar record` logs every project type published by another process on the default udpm URL;
-# `ifar replay` (lcm-logplayer) puts them back on the bus and a third process decodes the values sent.
+# `ifar replay` puts them back on the bus and a third process decodes the values sent (the command channels
+# too: --allow-command names each).
 set -euo pipefail
 tool=$1
 unset LCM_DEFAULT_URL  # the check is on LCM's default URL
@@ -21,11 +22,14 @@ grep -q 'Opening log file' "$work/record.out" || { echo "FAIL: ifar record did n
 
 # lcm-logger prints 'Opening log file' before it subscribes, and udpm binds its receive socket only on
 # subscribe: a message published in between is never seen (AFFORDANCE, the first, was lost so once).
-# Wait until the logger process owns a UDP socket on LCM's default port 7667 (hex 1DF3).
+# Wait until the logger process (lcm-logger, the child of ifar record, which has a socket of its own for
+# its heartbeat) owns a UDP socket on LCM's default port 7667 (hex 1DF3).
 logger_listens() {
-  local inode
+  local inode child
+  child=$(pgrep -P "$logger_pid" -x lcm-logger | head -1)
+  [ -n "$child" ] || return 1
   for inode in $(awk '$2 ~ /:1DF3$/ {print $10}' /proc/net/udp /proc/net/udp6 2>/dev/null); do
-    ls -l "/proc/$logger_pid/fd" 2>/dev/null | grep -q "socket:\[$inode\]" && return 0
+    ls -l "/proc/$child/fd" 2>/dev/null | grep -q "socket:\[$inode\]" && return 0
   done
   return 1
 }
@@ -47,7 +51,7 @@ echo "recorded $(stat -c %s "$log") bytes to $(basename "$log")"
 "$tool" expect 30 > "$work/expect.out" 2>&1 &
 listener_pid=$!
 for _ in $(seq 50); do grep -q listening "$work/expect.out" && break; sleep 0.1; done
-ifar replay "$log" --speed 1
+ifar replay "$log" --speed 1 --allow-command VELOCITY_CMD --allow-command E_STOP --allow-command GOAL
 status=0
 wait "$listener_pid" || status=$?
 listener_pid=""

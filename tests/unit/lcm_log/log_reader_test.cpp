@@ -66,13 +66,16 @@ TEST_F(LcmLogReader, ATwoEventLogIsReadBackExactly)
   ASSERT_EQ(reader.openError(), "");
   EXPECT_EQ(reader.fileSize(), 28U + 4 + 7 + 28 + 11);
 
+  EXPECT_EQ(reader.position(), 0U);
   LogEvent event;
   ASSERT_TRUE(reader.next(event));
+  EXPECT_EQ(reader.position(), 28U + 4 + 7);
   EXPECT_EQ(event.event_number, 0);
   EXPECT_EQ(event.timestamp_us, 1'700'000'000'000'001);
   EXPECT_EQ(event.channel, "POSE");
   EXPECT_EQ(event.data, kPoseData);
   ASSERT_TRUE(reader.next(event));
+  EXPECT_EQ(reader.position(), reader.fileSize());
   EXPECT_EQ(event.event_number, 1);
   EXPECT_EQ(event.timestamp_us, 1'700'000'000'250'000);
   EXPECT_EQ(event.channel, "EXEC_STATUS");

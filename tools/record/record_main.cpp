@@ -1,0 +1,201 @@
+// ifar record: lcm-logger into logs/ with a timestamped name, split every 512 MB, recording the channels of
+// --channels only; and a heartbeat for the recorder. `ifar record` runs lcm-logger as its child, subscribes
+// to the same channels itself, and publishes heartbeat_t "recorder" on HEARTBEAT once a second: health OK
+// while lcm-logger runs and its file grows as messages arrive, ERROR (at once, with the reason) when it has
+// died or its file has not grown for --stall-seconds while messages arrived. When lcm-logger dies
+// `ifar record` exits 1, so `ifar launch` restarts both.
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <spdlog/sinks/stdout_sinks.h>
+#include <spdlog/spdlog.h>
+#include <CLI/CLI.hpp>
+
+#include "bus/heartbeat.hpp"
+#include "bus/run_loop.hpp"
+#include "common/command_line.hpp"
+#include "common/time.hpp"
+#include "ifar/heartbeat_t.hpp"
+#include "tools/record/logger_command.hpp"
+#include "tools/record/logger_process.hpp"
+#include "tools/record/recorder_watch.hpp"
+
+namespace {
+
+constexpr const char* kProcessName = "recorder";
+constexpr double kWatchPeriodS = 0.1;
+constexpr double kHeartbeatPeriodS = 1.0;
+constexpr double kLoggerStopTimeoutS = 5.0;
+
+struct RecordOptions {
+  std::string directory = "logs";
+  std::string name_pattern = "ifar-%Y-%m-%d-%H%M%S.lcmlog";
+  double split_mb = 512.0;
+  int rotate = 0;
+  std::string channels = ".*";
+  std::string lcm_url;
+  double stall_seconds = 3.0;
+};
+
+int fail(const std::string& message)
+{
+  std::fprintf(stderr, "ifar record: error: %s\n", message.c_str());
+  return 1;
+}
+
+/// Watches lcm-logger from the run loop and publishes the recorder's heartbeats.
+class Recorder {
+ public:
+  Recorder(ifar::bus::RunLoop& loop, ifar::record::LoggerProcess& logger, const RecordOptions& options)
+      : loop_(loop), logger_(logger), watch_(ifar::common::secondsToMicroseconds(options.stall_seconds))
+  {
+    beat_.process = kProcessName;
+    beat_.pid = static_cast<std::int32_t>(getpid());
+    loop.subscribeRaw(options.channels, [this](const lcm::ReceiveBuffer*, const std::string& /*channel*/) {
+      watch_.onMessage(ifar::common::monotonicMicroseconds());
+    });
+    loop.every(kWatchPeriodS, [this] { look(); });
+    loop.every(kHeartbeatPeriodS, [this] { beat(); });
+  }
+
+  /// 1 when lcm-logger died on its own, 0 when the recorder was asked to stop.
+  int exitCode() const { return logger_died_ ? 1 : 0; }
+
+  /// Passes on what lcm-logger wrote (to standard error) and notes each file it opened.
+  void passOnLoggerOutput()
+  {
+    for (const std::string& line : logger_.readLines()) {
+      std::fprintf(stderr, "%s\n", line.c_str());
+      if (const std::optional<std::string> file = ifar::record::openedLogFile(line)) {
+        watch_.onLogFile(*file, ifar::common::monotonicMicroseconds());
+      }
+    }
+  }
+
+ private:
+  void look()
+  {
+    passOnLoggerOutput();
+    const std::int64_t now = ifar::common::monotonicMicroseconds();
+    if (!watch_.logFile().empty()) {
+      std::error_code error;
+      const std::uintmax_t size = std::filesystem::file_size(watch_.logFile(), error);
+      watch_.onFileSize(error ? std::nullopt : std::optional<std::uint64_t>(size), now);
+    }
+    // On SIGINT to the process group lcm-logger stops with the recorder: no alarm for that.
+    if (loop_.stopping()) {
+      return;
+    }
+    if (const std::optional<std::string> exit = logger_.pollExit()) {
+      passOnLoggerOutput();  // its last words, written just before it ended
+      watch_.onLoggerExit(*exit);
+      logger_died_ = true;
+      beat();
+      loop_.stop();
+      return;
+    }
+    // A change of health is reported at once, not at the next beat.
+    if (watch_.health(now).level != beat_.health) {
+      beat();
+    }
+  }
+
+  void beat()
+  {
+    const ifar::record::RecorderHealth health = watch_.health(ifar::common::monotonicMicroseconds());
+    if (health.level != beat_.health || health.message != beat_.message) {
+      std::fprintf(stderr, "ifar record: %s\n",
+                   health.message.empty() ? "recording" : health.message.c_str());
+    }
+    beat_.utime = ifar::common::nowMicroseconds();
+    beat_.health = health.level;
+    beat_.message = health.message;
+    loop_.publish(ifar::bus::kHeartbeatChannel, beat_);
+    ++beat_.sequence;
+  }
+
+  ifar::bus::RunLoop& loop_;
+  ifar::record::LoggerProcess& logger_;
+  ifar::record::RecorderWatch watch_;
+  ifar::heartbeat_t beat_{};
+  bool logger_died_ = false;
+};
+
+int record(const RecordOptions& options)
+{
+  std::error_code error;
+  std::filesystem::create_directories(options.directory, error);
+  if (error) {
+    return fail("cannot create the log folder '" + options.directory + "': " + error.message());
+  }
+  if (!options.lcm_url.empty()) {
+    setenv("LCM_DEFAULT_URL", options.lcm_url.c_str(), 1);  // lcm-logger's URL too
+  }
+  ifar::record::LoggerRequest request;
+  request.file_pattern = (std::filesystem::path(options.directory) / options.name_pattern).string();
+  request.channels = options.channels;
+  request.split_mb = options.split_mb;
+  request.rotate = options.rotate;
+  // The run loop first: it blocks SIGINT/SIGTERM before LCM's threads start; lcm-logger unblocks them.
+  ifar::bus::RunLoop loop(options.lcm_url, spdlog::stderr_logger_mt("record"));
+  ifar::record::LoggerProcess logger(ifar::record::loggerArguments(request));
+  if (!logger.startError().empty()) {
+    return fail(logger.startError() + " (install liblcm-bin; scripts/setup does)");
+  }
+  Recorder recorder(loop, logger, options);
+  std::fprintf(
+      stderr,
+      "ifar record: logging channels '%s' to %s (%s); heartbeat \"%s\" on HEARTBEAT; stop with Ctrl-C\n",
+      options.channels.c_str(), request.file_pattern.c_str(),
+      options.rotate > 0 ? ("rotating " + std::to_string(options.rotate) + " files").c_str() : "numbered",
+      kProcessName);
+  loop.run();
+  if (recorder.exitCode() == 0) {
+    const std::string how = logger.stop(kLoggerStopTimeoutS);
+    recorder.passOnLoggerOutput();
+    std::fprintf(stderr, "ifar record: lcm-logger %s\n", how.c_str());
+  }
+  return recorder.exitCode();
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+  CLI::App app{
+      "Records LCM channels with lcm-logger into logs/ (timestamped name, split every 512 MB) and "
+      "publishes a heartbeat \"recorder\" on HEARTBEAT: ERROR when lcm-logger dies or its file "
+      "stops growing while messages arrive"};
+  RecordOptions options;
+  app.add_option("--dir", options.directory, "folder for the logs")->capture_default_str();
+  app.add_option("--name", options.name_pattern, "file name, strftime-formatted")->capture_default_str();
+  app.add_option("--split-mb", options.split_mb, "start a new numbered file after this many MB (0 = never)")
+      ->check(ifar::common::atLeast(0))
+      ->capture_default_str();
+  app.add_option("--rotate", options.rotate,
+                 "keep only this many files, newest as NAME.0 (0 = number them instead)")
+      ->check(ifar::common::atLeast(0))
+      ->capture_default_str();
+  app.add_option("--channels", options.channels, "regular expression of the channels to record (whole names)")
+      ->capture_default_str();
+  app.add_option("--stall-seconds", options.stall_seconds,
+                 "health ERROR when the log file has not grown for this long while messages arrived")
+      ->check(ifar::common::atLeast(0.2))
+      ->capture_default_str();
+  app.add_option("--lcm-url", options.lcm_url, "LCM URL (default: LCM_DEFAULT_URL or LCM's default)");
+  if (const auto exit_code = ifar::common::parseCommandLine(app, argc, argv)) {
+    return *exit_code;
+  }
+  try {
+    return record(options);
+  } catch (const std::exception& error) {
+    return fail(error.what());
+  }
+}
