@@ -142,9 +142,10 @@ int runGppcSuite(const std::string& data_folder, const std::string& results_fold
   markdown << "# GPPC any-angle maps: exactness, query and build time, memory\n\n"
            << "Machine: " << header << ". Commit: " << commit << ".\nCommand: `" << command << "`\n\n"
            << "Exact: within a relative 1e" << std::lround(std::log10(ifar::bench::kExactRelativeTolerance))
-           << " of the .scen length. Query times: wall time of one graph::findPath (nearest-rank "
-              "percentiles). Build: grid to prior map (every core) to search snapshot, wall. Graph MB: heap "
-              "held by the obstacle set, the DV-graph and its search snapshot.\n\n"
+           << " of the .scen length. Query times: one graph::findPath, CPU time of the planning thread "
+              "(wall time beside it; nearest-rank percentiles). Build: grid to prior map (every core) to "
+              "search snapshot, wall. Graph MB: heap held by the obstacle set, the DV-graph and its search "
+              "snapshot.\n\n"
            << ifar::bench::gppcTable(results);
   std::cout << markdown.str();
   std::error_code error;

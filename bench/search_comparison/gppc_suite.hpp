@@ -27,9 +27,11 @@ struct GppcMapResult {
   std::size_t exact = 0;
   double worst_relative_error = 0.0;  // over the queries found
   std::vector<GppcQueryMiss> misses;  // the queries that are not exact
-  double median_us = 0.0;             // wall time of one query (graph::findPath)
+  double median_us = 0.0;             // one query (graph::findPath): CPU time of the planning thread
   double p99_us = 0.0;
   double max_us = 0.0;
+  double wall_median_us = 0.0;  // the same in wall time (a loaded machine stretches it)
+  double wall_p99_us = 0.0;
   double build_seconds = 0.0;  // wall time: grid to prior map to search snapshot
   std::size_t vertices = 0;
   std::size_t edges = 0;

@@ -31,6 +31,8 @@ TEST(GppcSuite, EveryQueryOfTheDoubleCornerMapIsExact)
   EXPECT_GT(result.graph_mb, 0.0);
   EXPECT_LE(result.median_us, result.p99_us);
   EXPECT_LE(result.p99_us, result.max_us);
+  EXPECT_GT(result.wall_median_us, 0.0);
+  EXPECT_LE(result.wall_median_us, result.wall_p99_us);
   const std::string table = gppcTable({result});
   EXPECT_NE(table.find("| double_corner | 5x5 | 8 | 8 | "), std::string::npos) << table;
   EXPECT_EQ(table.find("Not exact"), std::string::npos) << table;
