@@ -1,15 +1,20 @@
 // ifar bench-search: runs grid A*, RRT*, BIT* and ours (the DV-graph search, FAR mode on a static map)
 // on the same queries of one map and prints per query and planner: success, length, exact optimum and
-// time; then median and p99 per planner. Issue 8, Table I.
+// time; then median and p99 per planner (Table I). With --gppc-suite: ours on the GPPC maps and their
+// .scen lengths instead, per map exactness, query and build times and memory (gppc_suite.hpp).
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <optional>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <CLI/CLI.hpp>
@@ -17,6 +22,7 @@
 #include "bench/baselines/cpu_clock.hpp"
 #include "bench/baselines/grid_astar.hpp"
 #include "bench/baselines/sampling_planners.hpp"
+#include "bench/search_comparison/gppc_suite.hpp"
 #include "bench/search_comparison/query_set.hpp"
 #include "common/command_line.hpp"
 #include "common/grid_map/readers.hpp"
@@ -77,6 +83,90 @@ std::vector<std::string> splitList(const std::string& text)
   return items;
 }
 
+// The maps of --gppc-suite under the shared data folder: GPPC's own, then the three gppc-extra ones.
+const std::vector<std::string> kGppcMaps{"gppc/AcrosstheCape.map", "gppc-extra/den520d.map",
+                                         "gppc-extra/ArcticStation.map", "gppc-extra/Nightshade.map"};
+
+std::string firstValueOf(const std::string& path, const std::string& key)
+{
+  std::ifstream file(path);
+  std::string line;
+  while (std::getline(file, line)) {
+    if (line.rfind(key, 0) == 0) {
+      const auto colon = line.find(':');
+      return colon == std::string::npos ? "" : line.substr(colon + 2);
+    }
+  }
+  return "";
+}
+
+/// "CPU model, N cores, load average L; YYYY-MM-DD HH:MM UTC": what the times were measured on.
+std::string machineAndDate()
+{
+  const unsigned cores = std::thread::hardware_concurrency();
+  double load = NAN;
+  std::ifstream("/proc/loadavg") >> load;
+  const std::time_t now = std::time(nullptr);
+  std::tm parts{};
+  gmtime_r(&now, &parts);
+  char date[32];
+  std::strftime(date, sizeof(date), "%Y-%m-%d %H:%M UTC", &parts);
+  std::ostringstream text;
+  text << firstValueOf("/proc/cpuinfo", "model name") << ", " << cores << " cores, load average " << load
+       << " at the start; " << date;
+  return text.str();
+}
+
+/// --gppc-suite: every map in kGppcMaps under `data_folder`, results into `results_folder`/gppc.md and
+/// gppc.jsonl. Exit 0 when every query is exact, 1 when one is not, 2 when a file is missing or bad.
+int runGppcSuite(const std::string& data_folder, const std::string& results_folder, const std::string& commit,
+                 const std::string& command)
+{
+  const std::string header = machineAndDate();
+  std::vector<ifar::bench::GppcMapResult> results;
+  bool every_file = true;
+  bool every_query_exact = true;
+  for (const std::string& map : kGppcMaps) {
+    std::cerr << "ifar bench-search: " << map << " ...\n";
+    std::string map_path = data_folder;
+    map_path.append("/").append(map);
+    results.push_back(ifar::bench::runGppcMap(map_path));
+    const auto& result = results.back();
+    if (!result.error.empty()) {
+      std::cerr << "ifar bench-search: " << result.error << "\n";
+      every_file = false;
+    }
+    every_query_exact = every_query_exact && result.exact == result.queries;
+  }
+  std::ostringstream markdown;
+  markdown << "# GPPC any-angle maps: exactness, query and build time, memory\n\n"
+           << "Machine: " << header << ". Commit: " << commit << ".\nCommand: `" << command << "`\n\n"
+           << "Exact: within a relative 1e" << std::lround(std::log10(ifar::bench::kExactRelativeTolerance))
+           << " of the .scen length. Query times: one graph::findPath, CPU time of the planning thread "
+              "(wall time beside it; nearest-rank percentiles). Build: grid to prior map (every core) to "
+              "search snapshot, wall. Graph MB: heap held by the obstacle set, the DV-graph and its search "
+              "snapshot.\n\n"
+           << ifar::bench::gppcTable(results);
+  std::cout << markdown.str();
+  std::error_code error;
+  std::filesystem::create_directories(results_folder, error);
+  std::ofstream table_file(results_folder + "/gppc.md");
+  std::ofstream json_file(results_folder + "/gppc.jsonl");
+  table_file << markdown.str();
+  for (const auto& result : results) {
+    json_file << ifar::bench::gppcJsonLine(result) << "\n";
+  }
+  if (!table_file || !json_file) {
+    std::cerr << "ifar bench-search: --results: cannot write into '" << results_folder << "'\n";
+    return ifar::common::kBadInputExitCode;
+  }
+  std::cerr << "ifar bench-search: wrote " << results_folder << "/gppc.md and gppc.jsonl\n";
+  if (!every_file) {
+    return ifar::common::kBadInputExitCode;
+  }
+  return every_query_exact ? 0 : 1;
+}
+
 Row fromBaseline(const std::string& planner, const std::string& task, double optimal,
                  const baselines::BaselineResult& result)
 {
@@ -111,6 +201,10 @@ int main(int argc, char** argv)
   double inflate = 0.0;
   double min_length = 0.0;
   bool unknown_free = false;
+  bool gppc_suite = false;
+  std::string data_folder = "../shared/data";
+  std::string results_folder = "bench/results/search";
+  std::string commit = "unknown";
   baselines::SamplingSettings sampling;
   auto* map_option =
       app.add_option("--map", map_path, "MovingAI .map or map_server .yaml")->check(CLI::ExistingFile);
@@ -144,8 +238,26 @@ int main(int argc, char** argv)
       ->check(CLI::Range(1.0, 100.0))
       ->capture_default_str();
   app.add_flag("--unknown-free", unknown_free, "treat unknown map_server cells as free (default: blocked)");
+  auto* gppc_option = app.add_flag(
+      "--gppc-suite", gppc_suite,
+      "instead: ours on the GPPC map and the three gppc-extra maps with their .scen lengths; per map\n"
+      "exact count, worst relative error, median/p99 query time, build time, graph memory; writes\n"
+      "gppc.md and gppc.jsonl into --results (exit 1 when a query is not exact)");
+  gppc_option->excludes(map_option)->excludes(world_option);
+  app.add_option("--data", data_folder, "--gppc-suite: the shared data folder (gppc/, gppc-extra/)")
+      ->capture_default_str();
+  app.add_option("--results", results_folder, "--gppc-suite: folder for gppc.md and gppc.jsonl")
+      ->capture_default_str();
+  app.add_option("--commit", commit, "--gppc-suite: commit named in gppc.md")->capture_default_str();
   if (const auto exit_code = ifar::common::parseCommandLine(app, argc, argv)) {
     return *exit_code;
+  }
+  if (gppc_suite) {
+    std::ostringstream command;
+    for (int index = 0; index < argc; ++index) {
+      command << (index == 0 ? "" : " ") << argv[index];
+    }
+    return runGppcSuite(data_folder, results_folder, commit, command.str());
   }
 
   const std::vector<std::string> planners = splitList(planner_list);

@@ -171,4 +171,15 @@ std::size_t DvGraph::interactionEdgeCount() const
                                                 [](const InteractionEdge& edge) { return edge.alive; }));
 }
 
+std::size_t DvGraph::memoryBytes() const
+{
+  std::size_t bytes = vertices_.capacity() * sizeof(Vertex) +
+                      links_.capacity() * sizeof(std::vector<VisibilityLink>) +
+                      interaction_edges_.capacity() * sizeof(InteractionEdge);
+  for (const auto& links : links_) {
+    bytes += links.capacity() * sizeof(VisibilityLink);
+  }
+  return bytes;
+}
+
 }  // namespace ifar::graph

@@ -93,6 +93,8 @@ class DvGraph {
   std::size_t vertexCount() const { return live_vertices_; }
   std::size_t visibilityEdgeCount() const { return visibility_edges_; }
   std::size_t interactionEdgeCount() const;
+  /// Heap bytes held (vertex slots, adjacency lists, interaction edges), by capacity.
+  std::size_t memoryBytes() const;
 
  private:
   std::vector<Vertex> vertices_;

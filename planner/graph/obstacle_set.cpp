@@ -5,6 +5,7 @@
 #include <limits>
 #include <utility>
 
+#include "common/geometry/angle.hpp"
 #include "common/geometry/segment.hpp"
 
 namespace ifar::graph {
@@ -78,6 +79,51 @@ bool isConvexCorner(const LoopCorner& corner)
   return crossSign(corner.next - corner.position, corner.previous - corner.position) > 0;
 }
 
+namespace {
+
+/// For several loop vertices at one position: true when some direction lies strictly inside none of
+/// their blocked wedges (two outlines that touch); false at a pinch point such as a double corner.
+bool seesAnyDirection(const std::vector<LoopCorner>& visits)
+{
+  // The directions an end point at the vertex may take are those inside no visit's blocked wedge: the
+  // intersection of the closed free wedges. When not empty it holds an edge of one of them.
+  const auto freeForAll = [&](const Vector& direction) {
+    return std::none_of(visits.begin(), visits.end(),
+                        [&](const LoopCorner& visit) { return pointsIntoWedge(visit, direction); });
+  };
+  return std::any_of(visits.begin(), visits.end(), [&](const LoopCorner& visit) {
+    return freeForAll(visit.previous - visit.position) || freeForAll(visit.next - visit.position);
+  });
+}
+
+/// The visit whose free wedge an end point at a pinch point stands in: the one holding the direction
+/// (1, 1), else the first met turning from (1, 1) towards (1, 0). Index into `visits` (not empty).
+std::size_t homeVisit(const std::vector<LoopCorner>& visits)
+{
+  // A visit's free wedge runs counter-clockwise from its previous edge to its next one, so turning
+  // clockwise from (1, 1) a wedge is entered through its next edge. A wedge holding (1, 1) wins.
+  const Vector home_direction(1.0, 1.0);
+  const double home_angle = std::atan2(home_direction.y(), home_direction.x());
+  constexpr double kFullTurn = 2.0 * geometry::kPi;
+  std::size_t home = 0;
+  double home_turn = kFullTurn;
+  for (std::size_t index = 0; index < visits.size(); ++index) {
+    const LoopCorner& visit = visits[index];
+    double turn = 0.0;
+    if (pointsIntoWedge(visit, home_direction)) {
+      const Vector to_next = visit.next - visit.position;
+      turn = std::fmod(home_angle - std::atan2(to_next.y(), to_next.x()) + 2.0 * kFullTurn, kFullTurn);
+    }
+    if (turn < home_turn) {
+      home_turn = turn;
+      home = index;
+    }
+  }
+  return home;
+}
+
+}  // namespace
+
 ObstacleSet::ObstacleSet(std::vector<ObstacleLoop> loops, std::optional<Bounds> bounds, double bucket_size)
     : bounds_(std::move(bounds))
 {
@@ -98,6 +144,67 @@ ObstacleSet::ObstacleSet(std::vector<ObstacleLoop> loops, std::optional<Bounds> 
     }
   }
   buildIndex(bucket_size);
+  findPinchPoints();
+}
+
+void ObstacleSet::findPinchPoints()
+{
+  aside_at_end_point_.assign(edges_.size(), 0);
+  if (columns_ == 0) {
+    return;
+  }
+  // Every direction blocked at a point takes blocked wedges of 360 degrees or more, so one of its visits
+  // is reflex: only those are looked at, with the other edges starting there from the point's bucket
+  // (an edge lies in every bucket its box touches).
+  std::vector<std::uint32_t> group;
+  std::vector<LoopCorner> visits;
+  for (std::uint32_t index = 0; index < edges_.size(); ++index) {
+    const Edge& edge = edges_[index];
+    if (crossSign(edge.end - edge.start, edge.previous - edge.start) >= 0) {
+      continue;  // convex or straight
+    }
+    const int column = std::clamp(
+        static_cast<int>(std::floor((edge.start.x() - grid_min_.x()) / bucket_size_)), 0, columns_ - 1);
+    const int row = std::clamp(static_cast<int>(std::floor((edge.start.y() - grid_min_.y()) / bucket_size_)),
+                               0, rows_ - 1);
+    const std::size_t bucket =
+        static_cast<std::size_t>(row) * static_cast<std::size_t>(columns_) + static_cast<std::size_t>(column);
+    group.clear();
+    for (std::uint32_t slot = bucket_offsets_[bucket]; slot < bucket_offsets_[bucket + 1]; ++slot) {
+      if (edges_[bucket_edges_[slot]].start == edge.start) {
+        group.push_back(bucket_edges_[slot]);
+      }
+    }
+    // Each point once: from its first reflex visit in the bucket's order.
+    const auto first_reflex = std::find_if(group.begin(), group.end(), [&](std::uint32_t other) {
+      const Edge& visit = edges_[other];
+      return crossSign(visit.end - visit.start, visit.previous - visit.start) < 0;
+    });
+    if (group.size() < 2 || *first_reflex != index) {
+      continue;
+    }
+    visits.clear();
+    for (const std::uint32_t other : group) {
+      const Edge& visit = edges_[other];
+      visits.push_back(LoopCorner{visit.start, visit.previous, visit.end, 0});
+    }
+    if (!seesAnyDirection(visits)) {
+      const std::size_t home = homeVisit(visits);
+      for (std::size_t slot = 0; slot < group.size(); ++slot) {
+        aside_at_end_point_[group[slot]] = slot == home ? 0 : 1;
+      }
+    }
+  }
+}
+
+std::size_t ObstacleSet::memoryBytes() const
+{
+  std::size_t bytes = loops_.capacity() * sizeof(ObstacleLoop);
+  for (const auto& loop : loops_) {
+    bytes += loop.vertices.capacity() * sizeof(Point);
+  }
+  return bytes + edges_.capacity() * sizeof(Edge) + aside_at_end_point_.capacity() +
+         (bucket_offsets_.capacity() + bucket_edges_.capacity()) * sizeof(std::uint32_t);
 }
 
 std::vector<LoopCorner> ObstacleSet::corners() const
@@ -189,8 +296,9 @@ ObstacleSet::Segment::Segment(const Point& from_point, const Point& to_point)
   tolerance_scale = kRelativeTolerance * (std::abs(direction.x()) + std::abs(direction.y()));
 }
 
-bool ObstacleSet::edgeBlocks(const Edge& edge, const Segment& segment) const
+bool ObstacleSet::edgeBlocks(std::uint32_t edge_index, const Segment& segment) const
 {
+  const Edge& edge = edges_[edge_index];
   const Point& p = edge.start;
   const Point& q = edge.end;
   if (std::max(p.x(), q.x()) < segment.box_low.x() || std::min(p.x(), q.x()) > segment.box_high.x() ||
@@ -237,10 +345,10 @@ bool ObstacleSet::edgeBlocks(const Edge& edge, const Segment& segment) const
   const double scale = std::abs(direction.x()) + std::abs(direction.y());
   const LoopCorner corner{p, edge.previous, q, 0};
   if (samePoint(p, from, scale + from.cwiseAbs().maxCoeff())) {
-    return pointsIntoWedge(corner, direction);
+    return aside_at_end_point_[edge_index] == 0 && pointsIntoWedge(corner, direction);
   }
   if (samePoint(p, to, scale + to.cwiseAbs().maxCoeff())) {
-    return pointsIntoWedge(corner, -direction);
+    return aside_at_end_point_[edge_index] == 0 && pointsIntoWedge(corner, -direction);
   }
   if (parameter <= 0.0 || parameter >= 1.0) {
     return false;
@@ -260,7 +368,7 @@ bool ObstacleSet::visible(const Point& from, const Point& to, BlockerCache& cach
   }
   const Segment segment(from, to);
   for (std::size_t slot = 0; slot < cache.count; ++slot) {
-    if (edgeBlocks(edges_[cache.edges[slot]], segment)) {
+    if (edgeBlocks(cache.edges[slot], segment)) {
       return false;
     }
   }
@@ -294,12 +402,12 @@ bool ObstacleSet::visibleFrom(const Point& to, SectorBlockerCache& cache) const
       SectorBlockerCache::kSectors - 1,
       static_cast<std::size_t>(pseudo_angle * (static_cast<double>(SectorBlockerCache::kSectors) / 4.0)));
   std::uint32_t& remembered = cache.edges[sector];
-  if (remembered != SectorBlockerCache::kEmpty && edgeBlocks(edges_[remembered], segment)) {
+  if (remembered != SectorBlockerCache::kEmpty && edgeBlocks(remembered, segment)) {
     return false;
   }
   BlockerCache& recent = cache.recent;
   for (std::size_t slot = 0; slot < recent.count; ++slot) {
-    if (edgeBlocks(edges_[recent.edges[slot]], segment)) {
+    if (edgeBlocks(recent.edges[slot], segment)) {
       remembered = recent.edges[slot];
       return false;
     }
@@ -379,7 +487,7 @@ std::uint32_t ObstacleSet::findBlocker(const Segment& segment) const
     const std::size_t bucket =
         static_cast<std::size_t>(row) * static_cast<std::size_t>(columns_) + static_cast<std::size_t>(column);
     for (std::uint32_t slot = bucket_offsets_[bucket]; slot < bucket_offsets_[bucket + 1]; ++slot) {
-      if (edgeBlocks(edges_[bucket_edges_[slot]], segment)) {
+      if (edgeBlocks(bucket_edges_[slot], segment)) {
         return bucket_edges_[slot];
       }
     }

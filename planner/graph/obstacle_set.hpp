@@ -8,6 +8,12 @@
 // counter-clockwise from the next edge to the previous one; a segment through the vertex is blocked when
 // either of its directions lies strictly inside the wedge. Where two blocked cells touch diagonally the
 // loop visits the corner twice with reflex wedges, so squeezing through is refused.
+//
+// A segment that starts or ends at such a pinch point (two or more loop vertices at one position whose
+// blocked wedges together cover every direction) stands in one of the free wedges there and is tested
+// against that visit's wedge only (GPPC: a start or target on a double corner leaves or is reached
+// through the cell whose top-left corner it is): the free wedge that holds the direction (1, 1), else
+// the first one met turning from (1, 1) towards (1, 0). Outlines that merely touch keep every wedge.
 
 #include <array>
 #include <cmath>
@@ -113,6 +119,8 @@ class ObstacleSet {
   std::size_t edgeCount() const { return edges_.size(); }
   std::size_t skippedLoops() const { return skipped_loops_; }
   double bucketSize() const { return bucket_size_; }
+  /// Heap bytes held (loops, edges, index), by capacity.
+  std::size_t memoryBytes() const;
 
   /// Every loop vertex with its neighbours, in loop order.
   std::vector<LoopCorner> corners() const;
@@ -149,16 +157,20 @@ class ObstacleSet {
     geometry::Point box_high;
     double tolerance_scale;  // orientation tolerance per unit of the other operand's size
   };
-  bool edgeBlocks(const Edge& edge, const Segment& segment) const;
+  bool edgeBlocks(std::uint32_t edge_index, const Segment& segment) const;
   /// Index of an edge that blocks the segment, or kNoEdge.
   std::uint32_t findBlocker(const Segment& segment) const;
   static constexpr std::uint32_t kNoEdge = 0xFFFFFFFFu;
   void buildIndex(double bucket_size);
+  void findPinchPoints();
 
   std::vector<ObstacleLoop> loops_;
   std::optional<Bounds> bounds_;
   std::vector<Edge> edges_;
   std::size_t skipped_loops_ = 0;
+  // Per edge: 1 when its start is a pinch point and its wedge is not the one an end point there stands in
+  // (see the rule above), so the end point's test skips it.
+  std::vector<std::uint8_t> aside_at_end_point_;
   // Uniform grid over the edges' extent; bucket b holds edges bucket_edges_[bucket_offsets_[b] ..
   // bucket_offsets_[b + 1]).
   geometry::Point grid_min_ = geometry::Point::Zero();

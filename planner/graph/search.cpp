@@ -30,8 +30,32 @@ const char* toString(SearchStatus status)
       return "start_off_map";
     case SearchStatus::GoalOffMap:
       return "goal_off_map";
+    case SearchStatus::StartInObstacle:
+      return "start_in_obstacle";
+    case SearchStatus::GoalInObstacle:
+      return "goal_in_obstacle";
   }
   return "unknown";
+}
+
+int exitCodeOf(SearchStatus status)
+{
+  switch (status) {
+    case SearchStatus::Found:
+      return 0;
+    case SearchStatus::NoPath:
+      return 1;
+    case SearchStatus::InvalidStart:
+    case SearchStatus::InvalidGoal:
+    case SearchStatus::StartOffMap:
+    case SearchStatus::GoalOffMap:
+      return 2;
+    case SearchStatus::StartInObstacle:
+      return 4;
+    case SearchStatus::GoalInObstacle:
+      return 5;
+  }
+  return 1;
 }
 
 SearchGraph SearchGraph::fromDvGraph(const DvGraph& graph)
@@ -88,6 +112,15 @@ SearchGraph SearchGraph::fromDvGraph(const DvGraph& graph)
   return result;
 }
 
+std::size_t SearchGraph::memoryBytes() const
+{
+  const auto bytesOf = [](const auto& values) { return values.capacity() * sizeof(values[0]); };
+  return bytesOf(ids_) + bytesOf(index_of_) + bytesOf(positions_) + bytesOf(previous_) + bytesOf(next_) +
+         bytesOf(kinds_) + bytesOf(offsets_) + bytesOf(targets_) + bytesOf(costs_) + bytesOf(interaction_) +
+         bytesOf(interaction_objects_) + bytesOf(interaction_plans_) + bytesOf(interaction_contacts_) +
+         bytesOf(interaction_approaches_) + bytesOf(cell_offsets_) + bytesOf(cell_vertices_);
+}
+
 void SearchGraph::buildVertexGrid()
 {
   cell_offsets_.clear();
@@ -138,7 +171,7 @@ void SearchGraph::buildVertexGrid()
 SearchResult AStarSearch::run(const SearchGraph& graph, const ObstacleSet& obstacles,
                               const geometry::Point& start_in, const geometry::Point& goal_in,
                               SearchScratch& scratch, const RoutePreference& preference,
-                              const WaySurcharge& surcharge)
+                              const WaySurcharge& surcharge, InsideObstacle inside)
 {
   SearchResult result;
   if (!start_in.allFinite()) {
@@ -156,6 +189,16 @@ SearchResult AStarSearch::run(const SearchGraph& graph, const ObstacleSet& obsta
   }
   if (bounds && !bounds->contains(goal_in)) {
     result.status = SearchStatus::GoalOffMap;
+    return result;
+  }
+  result.start = start_in;
+  result.goal = goal_in;
+  if (inside == InsideObstacle::Refuse && obstacles.isBlocked(start_in)) {
+    result.status = SearchStatus::StartInObstacle;
+    return result;
+  }
+  if (inside == InsideObstacle::Refuse && obstacles.isBlocked(goal_in)) {
+    result.status = SearchStatus::GoalInObstacle;
     return result;
   }
   const SnapResult start_snap = obstacles.snapToFree(start_in);

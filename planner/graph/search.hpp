@@ -30,6 +30,8 @@ class SearchGraph {
 
   std::size_t size() const { return positions_.size(); }
   std::size_t arcCount() const { return targets_.size(); }
+  /// Heap bytes held (vertices, arcs, the vertex grid), by capacity.
+  std::size_t memoryBytes() const;
 
  private:
   friend class AStarSearch;
@@ -66,9 +68,22 @@ enum class SearchStatus {
   InvalidGoal,
   StartOffMap,  // outside the prior map's bounds
   GoalOffMap,
+  StartInObstacle,  // strictly inside a blocked region, and the query asked not to snap
+  GoalInObstacle,
 };
 
 const char* toString(SearchStatus status);
+
+/// The exit code of a command whose query ended with `status`, the same in every command that answers
+/// path queries: 0 found, 1 no path, 2 bad input (a point that is not finite or off the map, as a bad
+/// command line), 4 start inside an obstacle, 5 goal inside an obstacle.
+int exitCodeOf(SearchStatus status);
+
+/// What a search does with a start or goal strictly inside an obstacle.
+enum class InsideObstacle {
+  Snap,    // move it to the nearest boundary point and flag it (the vehicle's pose in an inflated wall)
+  Refuse,  // report StartInObstacle / GoalInObstacle
+};
 
 struct PathPoint {
   geometry::Point position = geometry::Point::Zero();
@@ -83,9 +98,10 @@ struct SearchResult {
   std::vector<PathPoint> path;                      // robot first, goal last (when Found)
   double cost = 0.0;                                // sum of edge costs: length, J, any surcharge
   double length = 0.0;                              // geometric length
-  geometry::Point start = geometry::Point::Zero();  // after snapping
+  geometry::Point start = geometry::Point::Zero();  // after snapping (as given when refused)
   geometry::Point goal = geometry::Point::Zero();
-  bool start_snapped = false;  // was inside an obstacle, moved to the nearest free point
+  bool start_snapped =
+      false;  // was inside an obstacle, moved to the nearest free point (InsideObstacle::Snap)
   bool goal_snapped = false;
   std::size_t expansions = 0;
   std::size_t start_links = 0;  // vertices found to see the robot (tested lazily, in priority order)
@@ -136,13 +152,15 @@ class SearchScratch {
 class AStarSearch {
  public:
   /// Plans from `start` to `goal`. A start or goal inside an obstacle is snapped to the nearest
-  /// boundary point and flagged; one off a bounded map or not finite is refused with a status. With a
+  /// boundary point and flagged, or refused with a status when `inside` says so; one off a bounded map or
+  /// not finite is refused with a status. With a
   /// preference the result's cost is still the true one (no discount), and the path may be the preferred
   /// one where another is shorter by less than about the discount on the preferred arcs. A surcharge adds
   /// to every stretch it prices (robot links, arcs, goal links) and is part of the cost reported.
   static SearchResult run(const SearchGraph& graph, const ObstacleSet& obstacles,
                           const geometry::Point& start, const geometry::Point& goal, SearchScratch& scratch,
-                          const RoutePreference& preference = {}, const WaySurcharge& surcharge = {});
+                          const RoutePreference& preference = {}, const WaySurcharge& surcharge = {},
+                          InsideObstacle inside = InsideObstacle::Snap);
 
  private:
   class Query;  // one query's roles: validity, heuristic, arc costs, robot links, expansion
@@ -153,9 +171,9 @@ class AStarSearch {
 inline SearchResult findPath(const SearchGraph& graph, const ObstacleSet& obstacles,
                              const geometry::Point& start, const geometry::Point& goal,
                              SearchScratch& scratch, const RoutePreference& preference = {},
-                             const WaySurcharge& surcharge = {})
+                             const WaySurcharge& surcharge = {}, InsideObstacle inside = InsideObstacle::Snap)
 {
-  return AStarSearch::run(graph, obstacles, start, goal, scratch, preference, surcharge);
+  return AStarSearch::run(graph, obstacles, start, goal, scratch, preference, surcharge, inside);
 }
 
 }  // namespace ifar::graph

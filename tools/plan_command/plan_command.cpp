@@ -1,5 +1,6 @@
 // ifar plan: the prior-map planner. Builds the DV-graph of a MovingAI .map or map_server PGM+YAML and
-// answers .scen queries or one --start/--goal query.
+// answers .scen queries or one --start/--goal query. Exit codes: those of graph::exitCodeOf for the first
+// query not found, else 2 on bad input or a --check mismatch, 3 when the graph could not be saved.
 
 #include <sys/resource.h>
 
@@ -50,6 +51,13 @@ struct Query {
   double expected = NAN;  // from the .scen file
 };
 
+constexpr int kSaveFailedExitCode = 3;
+
+const char* boolean(bool value)
+{
+  return value ? "true" : "false";
+}
+
 }  // namespace
 
 int main(int argc, char** argv)
@@ -67,6 +75,7 @@ int main(int argc, char** argv)
   double tolerance = 1e-6;
   std::string save_path;
   bool check = false;
+  bool snap = false;
   app.add_option("--map", map_path, "MovingAI .map or map_server .yaml")
       ->required()
       ->check(CLI::ExistingFile);
@@ -80,32 +89,35 @@ int main(int argc, char** argv)
   app.add_flag("--check", check, "compare with the .scen optimal lengths; exit 2 on a mismatch");
   app.add_option("--tolerance", tolerance, "relative tolerance for --check")->check(CLI::PositiveNumber);
   app.add_option("--save-graph", save_path, "also save the built DV-graph (prior map) to this file");
+  app.add_flag("--snap", snap,
+               "move a start or goal inside an obstacle to the nearest free point (default: report\n"
+               "start_in_obstacle / goal_in_obstacle, exit 4 / 5)");
   if (const auto exit_code = ifar::common::parseCommandLine(app, argc, argv)) {
     return *exit_code;
   }
 
   if (scen_path.empty() && (start.size() != 2 || goal.size() != 2)) {
     std::cerr << "ifar plan: give --scen FILE or both --start X Y and --goal X Y\n";
-    return 1;
+    return ifar::common::kBadInputExitCode;
   }
   const auto map_result = ifar::grid_map::readGridMapFile(map_path);
   if (!map_result.ok()) {
     std::cerr << "ifar plan: " << map_result.error << "\n";
-    return 1;
+    return ifar::common::kBadInputExitCode;
   }
   std::vector<Query> queries;
   if (!scen_path.empty()) {
     const auto scenarios = ifar::grid_map::readMovingAiScenarios(scen_path);
     if (!scenarios.ok()) {
       std::cerr << "ifar plan: " << scenarios.error << "\n";
-      return 1;
+      return ifar::common::kBadInputExitCode;
     }
     for (const auto& scenario : scenarios.scenarios) {
       if (scenario.map_width != map_result.map.width() || scenario.map_height != map_result.map.height()) {
         std::cerr << "ifar plan: " << scen_path << ": query " << queries.size() << " is for a "
                   << scenario.map_width << "x" << scenario.map_height << " map, " << map_path << " is "
                   << map_result.map.width() << "x" << map_result.map.height() << "\n";
-        return 1;
+        return ifar::common::kBadInputExitCode;
       }
       // Scenario coordinates are grid lattice points; map them into the map's world frame.
       queries.push_back(Query{map_result.map.cornerToWorld(scenario.start.x(), scenario.start.y()),
@@ -144,19 +156,24 @@ int main(int argc, char** argv)
     const std::string error = ifar::graph::saveGraph(prior.graph, save_path);
     if (!error.empty()) {
       std::cerr << "ifar plan: " << error << "\n";
-      return 1;
+      return kSaveFailedExitCode;
     }
   }
 
+  const auto inside = snap ? ifar::graph::InsideObstacle::Snap : ifar::graph::InsideObstacle::Refuse;
   ifar::graph::SearchScratch scratch;
   int mismatches = 0;
+  int failed_query_exit_code = 0;  // of the first query not found
   for (std::size_t index = 0; index < queries.size(); ++index) {
     const Query& query = queries[index];
     const auto query_start = Clock::now();
-    const auto result =
-        ifar::graph::findPath(search_graph, prior.obstacles, query.start, query.goal, scratch);
+    const auto result = ifar::graph::findPath(search_graph, prior.obstacles, query.start, query.goal, scratch,
+                                              {}, {}, inside);
     const double microseconds = std::chrono::duration<double, std::micro>(Clock::now() - query_start).count();
     const bool found = result.status == ifar::graph::SearchStatus::Found;
+    if (!found && failed_query_exit_code == 0) {
+      failed_query_exit_code = ifar::graph::exitCodeOf(result.status);
+    }
     const double length = found ? result.length : NAN;
     bool matches = true;
     if (std::isfinite(query.expected)) {
@@ -172,7 +189,8 @@ int main(int argc, char** argv)
       if (std::isfinite(query.expected)) {
         std::cout << ", \"expected\": " << number(query.expected);
       }
-      std::cout << ", \"goal_snapped\": " << (result.goal_snapped ? "true" : "false") << "}\n";
+      std::cout << ", \"start_snapped\": " << boolean(result.start_snapped)
+                << ", \"goal_snapped\": " << boolean(result.goal_snapped) << "}\n";
     } else {
       std::cout << "query " << index << ": (" << query.start.x() << ", " << query.start.y() << ") -> ("
                 << query.goal.x() << ", " << query.goal.y() << "): " << toString(result.status);
@@ -183,6 +201,9 @@ int main(int argc, char** argv)
       }
       if (std::isfinite(query.expected)) {
         std::cout << " (expected " << number(query.expected) << (matches ? ", ok" : ", MISMATCH") << ")";
+      }
+      if (result.start_snapped) {
+        std::cout << " [start snapped to free space]";
       }
       if (result.goal_snapped) {
         std::cout << " [goal snapped to free space]";
@@ -203,5 +224,8 @@ int main(int argc, char** argv)
     }
     std::cout << "\n";
   }
-  return check && mismatches > 0 ? 2 : 0;
+  if (failed_query_exit_code != 0) {
+    return failed_query_exit_code;
+  }
+  return check && mismatches > 0 ? ifar::common::kBadInputExitCode : 0;
 }

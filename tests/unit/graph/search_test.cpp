@@ -87,6 +87,57 @@ TEST(Search, GoalInsideObstacleIsSnapped)
   EXPECT_NEAR(result.length, std::hypot(2.5, 1.0), 1e-12);
 }
 
+SearchResult planRefusingInside(const PriorMap& prior, const Point& start, const Point& goal)
+{
+  SearchScratch scratch;
+  return findPath(SearchGraph::fromDvGraph(prior.graph), prior.obstacles, start, goal, scratch, {}, {},
+                  InsideObstacle::Refuse);
+}
+
+TEST(Search, StartOrGoalInsideAnObstacleIsReportedWhenNotSnapping)
+{
+  const PriorMap prior = buildPriorMap(mapFromRows({".....", ".@@@.", ".@@@.", ".@@@.", "....."}), 0.0);
+  const auto start_inside = planRefusingInside(prior, Point(2.5, 1.4), Point(0, 0));
+  EXPECT_EQ(start_inside.status, SearchStatus::StartInObstacle);
+  EXPECT_TRUE(start_inside.path.empty());
+  EXPECT_FALSE(start_inside.start_snapped);
+  EXPECT_EQ(start_inside.start, Point(2.5, 1.4));  // as given, not moved
+  const auto goal_inside = planRefusingInside(prior, Point(0, 0), Point(2.5, 1.4));
+  EXPECT_EQ(goal_inside.status, SearchStatus::GoalInObstacle);
+  EXPECT_FALSE(goal_inside.goal_snapped);
+  // Both inside: the start is named.
+  EXPECT_EQ(planRefusingInside(prior, Point(2, 2), Point(3, 3)).status, SearchStatus::StartInObstacle);
+  // On the boundary is not inside.
+  const auto on_boundary = planRefusingInside(prior, Point(2.5, 1.0), Point(0, 0));
+  ASSERT_EQ(on_boundary.status, SearchStatus::Found);
+  EXPECT_NEAR(on_boundary.length, std::hypot(2.5, 1.0), 1e-12);
+  EXPECT_STREQ(toString(SearchStatus::StartInObstacle), "start_in_obstacle");
+  EXPECT_STREQ(toString(SearchStatus::GoalInObstacle), "goal_in_obstacle");
+}
+
+TEST(Search, StartInsideObstacleIsSnappedWhenAsked)
+{
+  const PriorMap prior = buildPriorMap(mapFromRows({".....", ".@@@.", ".@@@.", ".@@@.", "....."}), 0.0);
+  const auto result = plan(prior, Point(2.5, 1.4), Point(0, 0));
+  ASSERT_EQ(result.status, SearchStatus::Found);
+  EXPECT_TRUE(result.start_snapped);
+  EXPECT_FALSE(result.goal_snapped);
+  EXPECT_EQ(result.start, Point(2.5, 1.0));  // the block's top side
+  EXPECT_NEAR(result.length, std::hypot(2.5, 1.0), 1e-12);
+}
+
+TEST(Search, ExitCodesPerStatus)
+{
+  EXPECT_EQ(exitCodeOf(SearchStatus::Found), 0);
+  EXPECT_EQ(exitCodeOf(SearchStatus::NoPath), 1);
+  EXPECT_EQ(exitCodeOf(SearchStatus::InvalidStart), 2);
+  EXPECT_EQ(exitCodeOf(SearchStatus::InvalidGoal), 2);
+  EXPECT_EQ(exitCodeOf(SearchStatus::StartOffMap), 2);
+  EXPECT_EQ(exitCodeOf(SearchStatus::GoalOffMap), 2);
+  EXPECT_EQ(exitCodeOf(SearchStatus::StartInObstacle), 4);
+  EXPECT_EQ(exitCodeOf(SearchStatus::GoalInObstacle), 5);
+}
+
 TEST(Search, GoalOffTheMapIsFlagged)
 {
   const PriorMap prior = buildPriorMap(mapFromRows({"...", "...", "..."}), 0.0);
