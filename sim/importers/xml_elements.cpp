@@ -75,14 +75,22 @@ class Scanner {
         if (!skipPast("]]>", scan)) {
           return scan;
         }
-      } else if (startsWith("<?") || startsWith("<!") || startsWith("</")) {
-        // Declarations, doctype and end tags carry nothing the importer reads.
+      } else if (startsWith("</")) {
+        if (!readEndTag(scan)) {
+          return scan;
+        }
+      } else if (startsWith("<?") || startsWith("<!")) {
+        // Declarations and the doctype carry nothing the importer reads.
         if (!skipPast(">", scan)) {
           return scan;
         }
       } else if (!readElement(scan)) {
         return scan;
       }
+    }
+    if (!open_.empty()) {
+      const XmlElement& unclosed = scan.elements[static_cast<std::size_t>(open_.back())];
+      fail(scan, "element <" + unclosed.name + "> (line " + std::to_string(unclosed.line) + ") not closed");
     }
     return scan;
   }
@@ -135,15 +143,38 @@ class Scanner {
     return text_.substr(begin, position_ - begin);
   }
 
+  bool readEndTag(XmlScan& scan)
+  {
+    position_ += 2;  // "</"
+    const std::string name = readName();
+    skipSpace();
+    if (position_ >= text_.size() || text_[position_] != '>') {
+      return fail(scan, "end tag </" + name + "> not closed by '>'");
+    }
+    ++position_;
+    if (open_.empty()) {
+      return fail(scan, "end tag </" + name + "> without a start tag");
+    }
+    const XmlElement& innermost = scan.elements[static_cast<std::size_t>(open_.back())];
+    if (innermost.name != name) {
+      return fail(scan, "end tag </" + name + "> does not match <" + innermost.name + "> (line " +
+                            std::to_string(innermost.line) + ")");
+    }
+    open_.pop_back();
+    return true;
+  }
+
   bool readElement(XmlScan& scan)
   {
     XmlElement element;
     element.line = line_;
+    element.parent = open_.empty() ? -1 : open_.back();
     ++position_;  // '<'
     element.name = readName();
     if (element.name.empty()) {
       return fail(scan, "'<' not followed by an element name");
     }
+    bool has_content = false;
     while (true) {
       skipSpace();
       if (position_ >= text_.size()) {
@@ -151,6 +182,7 @@ class Scanner {
       }
       if (text_[position_] == '>') {
         ++position_;
+        has_content = true;
         break;
       }
       if (startsWith("/>")) {
@@ -182,6 +214,12 @@ class Scanner {
         return fail(scan, "element <" + element.name + ">: attribute '" + key + "' repeated");
       }
     }
+    if (has_content) {
+      if (static_cast<int>(open_.size()) >= kXmlMaxDepth) {
+        return fail(scan, "elements nested more than " + std::to_string(kXmlMaxDepth) + " deep");
+      }
+      open_.push_back(static_cast<int>(scan.elements.size()));
+    }
     scan.elements.push_back(std::move(element));
     return true;
   }
@@ -189,6 +227,7 @@ class Scanner {
   const std::string& text_;
   std::size_t position_ = 0;
   int line_ = 1;
+  std::vector<int> open_;  // indices of the elements whose end tag is still to come, outermost first
 };
 
 }  // namespace
