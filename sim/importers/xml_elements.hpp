@@ -1,7 +1,7 @@
 #pragma once
-// A small reader for the elements of an XML document: name, attributes, line and enclosing element.
-// Enough for SVG scenario files, whose content is in attributes; text content, namespaces and entities
-// beyond the five predefined ones are not interpreted. End tags must match their start tags.
+// The elements of an XML document as the SVG importers read them: name, attributes, line and enclosing
+// element, in document order. tinyxml2 parses (well-formedness, entities, comments, CDATA); this keeps the
+// project's bound on nesting and states its errors as one line ("line 3: element <path>: ...").
 
 #include <map>
 #include <optional>
@@ -26,7 +26,7 @@ constexpr int kXmlMaxDepth = 256;
 
 struct XmlScan {
   std::vector<XmlElement> elements;  // start and empty-element tags in document order
-  std::string error;                 // "line N: problem" when the markup is malformed; elements then partial
+  std::string error;                 // "line N: problem" when the markup is malformed; elements then empty
 };
 
 XmlScan scanXmlElements(const std::string& text);

@@ -145,13 +145,15 @@ TEST(SimWorldNamosimSvg, MalformedInputNamesTheElement)
       "bad.svg: element <path> 'w3' (line 3): transform: at character 0: "
       "'scale' with 3 numbers is not an SVG transform (matrix 6, translate 1-2, scale 1-2, rotate 1 or 3, "
       "skewX/skewY 1)");
-  EXPECT_EQ(svgError(std::string("<svg viewBox=\"0 0 10 10\">\n") + kRobot +
-                     "<path id=\"w4\" type=\"wall\" d=\"M 5 5\n</svg>"),
-            "bad.svg: malformed XML at line 3: element <path>: attribute 'd' value not closed");
+  EXPECT_EQ(
+      svgError(std::string("<svg viewBox=\"0 0 10 10\">\n") + kRobot +
+               "<path id=\"w4\" type=\"wall\" d=\"M 5 5\n</svg>"),
+      "bad.svg: malformed XML at line 3: element <path>: an attribute cannot be read (a value not quoted or "
+      "not closed, or a name repeated)");
   EXPECT_EQ(svgError("<svg width=\"10\">\n</svg>"),
             "bad.svg: element <svg> (line 1): no viewBox attribute (needed to flip y)");
   EXPECT_EQ(svgError("<svg viewBox=\"0 0 10 10\">\n<g>\n</svg>"),
-            "bad.svg: malformed XML at line 3: end tag </svg> does not match <g> (line 2)");
+            "bad.svg: malformed XML at line 2: element <g>: not closed by its own end tag");
 }
 
 TEST(SimWorldNamosimSvg, MovableInsideWallIsRejectedAfterConversion)

@@ -13,6 +13,7 @@
 #include "sim/importers/svg_path.hpp"
 #include "sim/importers/svg_shapes.hpp"
 #include "sim/importers/svg_transform.hpp"
+#include "sim/importers/xml_elements.hpp"
 
 namespace ifar::sim {
 namespace {
@@ -26,6 +27,44 @@ SvgPathParse parseFine(const std::string& data, double tolerance = 1e-3)
   SvgFlattening flattening;
   flattening.tolerance = tolerance;
   return parseSvgPath(data, flattening);
+}
+
+TEST(SimWorldXmlElements, ElementsInDocumentOrderWithParentsLinesAndEntities)
+{
+  const XmlScan scan = scanXmlElements(
+      "<?xml version=\"1.0\"?>\n<!-- a comment <g> -->\n<svg:svg a=\"&lt;&amp;&#65;\">\n"
+      "  <g id=\"outer\">\n    <path id=\"p\"/>\n    <![CDATA[ <path id=\"no\"/> ]]>\n  </g>\n  "
+      "<rect/>\n</svg:svg>");
+  ASSERT_TRUE(scan.error.empty()) << scan.error;
+  ASSERT_EQ(scan.elements.size(), 4u);
+  EXPECT_EQ(scan.elements[0].localName(), "svg");
+  EXPECT_EQ(scan.elements[0].attribute("a"), "<&A");
+  EXPECT_EQ(scan.elements[0].parent, -1);
+  EXPECT_EQ(scan.elements[1].attribute("id"), "outer");
+  EXPECT_EQ(scan.elements[1].line, 4);
+  EXPECT_EQ(scan.elements[2].attribute("id"), "p");
+  EXPECT_EQ(scan.elements[2].parent, 1);
+  EXPECT_EQ(scan.elements[2].line, 5);
+  EXPECT_EQ(scan.elements[3].name, "rect");
+  EXPECT_EQ(scan.elements[3].parent, 0);
+}
+
+TEST(SimWorldXmlElements, MalformedOrTooDeepMarkupIsOneLine)
+{
+  EXPECT_EQ(scanXmlElements("<svg a=\"1\" a=\"2\"/>").error,
+            "line 1: element <svg>: an attribute cannot be read (a value not quoted or not closed, or a name "
+            "repeated)");
+  EXPECT_EQ(scanXmlElements("<svg>\n<!-- open").error, "line 2: comment not closed (missing '-->')");
+  EXPECT_EQ(scanXmlElements("").error, "line 0: no element in the document");
+  std::string deep;
+  for (int level = 0; level < 300; ++level) {
+    deep += "<g>";
+  }
+  for (int level = 0; level < 300; ++level) {
+    deep += "</g>";
+  }
+  EXPECT_EQ(scanXmlElements(deep).error, "line 1: elements nested more than 256 deep");
+  EXPECT_TRUE(scanXmlElements(deep).elements.empty());
 }
 
 TEST(SimWorldSvgNumber, ReadsCompactSvgNumbers)
