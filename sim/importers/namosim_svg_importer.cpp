@@ -152,7 +152,11 @@ std::optional<Point> freePointNear(const World& world, const Point& target, cons
   for (const auto& object : world.objects) {
     outlines.push_back(placedOutline(object));
   }
-  const auto steps = [spacing](double length) { return std::min(200, static_cast<int>(length / spacing)); };
+  // At most 200 steps a side (a bound for any drawing, and for non-finite sizes from absurd scales).
+  const auto steps = [spacing](double length) {
+    const double count = length / spacing;
+    return count >= 0.0 && count < 200.0 ? static_cast<int>(count) : (count >= 200.0 ? 200 : 0);
+  };
   std::vector<Point> candidates;
   for (int column = 0; column <= steps(area.sizes().x()); ++column) {
     for (int row = 0; row <= steps(area.sizes().y()); ++row) {
