@@ -7,8 +7,10 @@
 #include <sstream>
 
 #include "common/geometry/polygon.hpp"
+#include "sim/importers/grid_importer.hpp"
 #include "sim/importers/namosim_scene.hpp"
 #include "sim/importers/svg_document.hpp"
+#include "sim/importers/svg_map_image.hpp"
 #include "sim/world/world_geometry.hpp"
 #include "sim/world/world_validation.hpp"
 
@@ -140,6 +142,47 @@ std::string goalList(const NamosimRobot& robot)
   return list;
 }
 
+/// The blocked (and unknown) cells of a map bitmap as wall rectangles in root units, `space` mapping the
+/// image element's units to the root's. Cells under a movable are free: a map made by a robot's lidar holds
+/// the movable objects that stood there, and the scenario's movables take their place.
+std::vector<Polygon> mapWalls(SvgMapImage map, const SvgTransform& space,
+                              const std::vector<Polygon>& movables)
+{
+  const auto toRoot = [&](double x, double y) { return Point(space * map.cornerAt(x, y)); };
+  if (std::abs(space.linear().determinant()) > 0.0 && map.pixel_size.x() > 0.0 && map.pixel_size.y() > 0.0) {
+    const SvgTransform to_image = space.inverse();
+    for (const Polygon& movable : movables) {
+      Polygon in_pixels;
+      for (const Point& vertex : movable) {
+        const Point local = to_image * vertex;
+        in_pixels.push_back((local - map.origin).cwiseQuotient(map.pixel_size));
+      }
+      const Eigen::AlignedBox2d box = geometry::boundingBox(in_pixels);
+      const auto clampedCell = [](double value, int cells) {
+        return value < 0.0 ? 0 : (value >= cells - 1 ? cells - 1 : static_cast<int>(value));
+      };
+      const int x0 = clampedCell(box.min().x(), map.cells.width());
+      const int y0 = clampedCell(box.min().y(), map.cells.height());
+      const int x1 = clampedCell(box.max().x(), map.cells.width());
+      const int y1 = clampedCell(box.max().y(), map.cells.height());
+      for (int y = y0; y <= y1; ++y) {
+        for (int x = x0; x <= x1; ++x) {
+          const Polygon cell = {Point(x, y), Point(x + 1, y), Point(x + 1, y + 1), Point(x, y + 1)};
+          if (geometry::polygonsIntersect(cell, in_pixels)) {
+            map.cells.set(x, y, grid_map::Cell::Free);
+          }
+        }
+      }
+    }
+  }
+  std::vector<Polygon> walls;
+  for (const CellRectangle& cells : blockedRectangles(map.cells, grid_map::UnknownPolicy::AsBlocked)) {
+    walls.push_back({toRoot(cells.x0, cells.y0), toRoot(cells.x1, cells.y0), toRoot(cells.x1, cells.y1),
+                     toRoot(cells.x0, cells.y1)});
+  }
+  return walls;
+}
+
 /// The grid point nearest `target` (at `spacing` over `area`) that lies outside every obstacle and object
 /// with `clearance` to spare, for a start the file does not give; nullopt when there is none.
 std::optional<Point> freePointNear(const World& world, const Point& target, const Eigen::AlignedBox2d& area,
@@ -231,8 +274,13 @@ NamosimImport parseNamosimSvg(const std::string& text, const std::string& source
     } else {
       metres_per_unit = kNamosimMetresPerUnit;
       import.warnings.push_back(
-          "no robot drawn to take the scale from: 1 SVG unit = 1 cm, namosim's unit "
-          "(--scale sets metres per unit)");
+          std::string(
+              "no robot drawn to take the scale from: 1 SVG unit = 1 cm, namosim's unit (--scale sets "
+              "metres per unit") +
+          (scene.images.empty()
+               ? ")"
+               : "; where a map bitmap gives the walls a unit is one of its pixels, and --scale "
+                 "is the map's resolution)"));
     }
   }
   if (body) {
@@ -265,6 +313,7 @@ NamosimImport parseNamosimSvg(const std::string& text, const std::string& source
     }
   }
   std::int64_t next_id = 1;
+  std::vector<Polygon> movable_outlines;  // root units, for the map bitmaps below
   for (const std::size_t movable : scene.movables) {
     std::vector<Polygon> rings;
     if (const auto bad = closedOutlines(document, movable, curve_tolerance, closing, rings)) {
@@ -274,6 +323,7 @@ NamosimImport parseNamosimSvg(const std::string& text, const std::string& source
       return failure(source_name + ": " + document.describe(movable) +
                      ": a movable needs exactly one closed outline, got " + std::to_string(rings.size()));
     }
+    movable_outlines.push_back(rings.front());
     MovableObject object;
     object.id = next_id++;
     const std::string id = document.element(movable).attribute("id").value_or("");
@@ -295,9 +345,22 @@ NamosimImport parseNamosimSvg(const std::string& text, const std::string& source
     world.objects.push_back(std::move(object));
   }
   for (const std::size_t image : scene.images) {
-    import.warnings.push_back(document.describe(image) +
-                              ": map_layer image not read (namosim takes this layered scenario's walls from "
-                              "the ROS map its YAML names: import that map's .yaml for them)");
+    std::string image_problem;
+    const auto map = readSvgMapImage(document.element(image), image_problem);
+    if (!map) {
+      import.warnings.push_back(document.describe(image) + ": map_layer image not read: " + image_problem);
+      continue;
+    }
+    const std::string id = document.element(image).attribute("id").value_or("map_image");
+    std::size_t index = 0;
+    for (Polygon& wall : mapWalls(*map, document.userSpace(image), movable_outlines)) {
+      StaticObstacle obstacle;
+      obstacle.name = id + "_cells_" + std::to_string(index++);
+      obstacle.outline = converter.toWorld(wall);
+      obstacle.height_m = settings.wall_height_m;
+      obstacle.reflectivity = settings.wall_reflectivity;
+      world.obstacles.push_back(std::move(obstacle));
+    }
   }
 
   // Every robot in the world frame; the vehicle's start and goals go into the world.
@@ -348,7 +411,8 @@ NamosimImport parseNamosimSvg(const std::string& text, const std::string& source
   // A world without walls, vehicle or goals is written, but said to be incomplete.
   if (world.obstacles.empty()) {
     import.incomplete = true;
-    import.warnings.push_back("no walls: no drawing element has type=\"wall\"");
+    import.warnings.push_back(
+        "no walls: no drawing element has type=\"wall\" and no map_layer bitmap holds any");
   }
   if (!drawn_start && !settings.start) {
     import.incomplete = true;

@@ -9,29 +9,6 @@
 namespace ifar::sim {
 namespace {
 
-/// A length attribute: a number, optionally followed by "px" (a user unit); `fallback` when absent.
-std::optional<double> lengthAttribute(const XmlElement& element, const std::string& key, double fallback,
-                                      std::string& error)
-{
-  const auto text = element.attribute(key);
-  if (!text) {
-    return fallback;
-  }
-  std::size_t position = 0;
-  double value = 0.0;
-  if (readSvgNumber(*text, position, value)) {
-    std::string rest = text->substr(position);
-    rest.erase(std::remove_if(rest.begin(), rest.end(),
-                              [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; }),
-               rest.end());
-    if (rest.empty() || rest == "px") {
-      return value;
-    }
-  }
-  error = "attribute '" + key + "' is not a length in user units: '" + text->substr(0, 40) + "'";
-  return std::nullopt;
-}
-
 std::string number(double value)
 {
   char buffer[32];
@@ -55,7 +32,7 @@ bool fourLengths(const XmlElement& element, const char* const (&keys)[4], double
                  std::string& error)
 {
   for (int index = 0; index < 4; ++index) {
-    const auto value = lengthAttribute(element, keys[index], 0.0, error);
+    const auto value = svgLengthAttribute(element, keys[index], 0.0, error);
     if (!value) {
       return false;
     }
@@ -81,8 +58,8 @@ std::optional<std::string> rectData(const XmlElement& element, std::string& erro
   if (width == 0.0 || height == 0.0) {
     return std::string();  // not rendered
   }
-  const auto rx_given = lengthAttribute(element, "rx", -1.0, error);
-  const auto ry_given = lengthAttribute(element, "ry", -1.0, error);
+  const auto rx_given = svgLengthAttribute(element, "rx", -1.0, error);
+  const auto ry_given = svgLengthAttribute(element, "ry", -1.0, error);
   if (!rx_given || !ry_given) {
     return std::nullopt;
   }
@@ -103,10 +80,10 @@ std::optional<std::string> rectData(const XmlElement& element, std::string& erro
 
 std::optional<std::string> ellipseData(const XmlElement& element, bool circle, std::string& error)
 {
-  const auto cx = lengthAttribute(element, "cx", 0.0, error);
-  const auto cy = lengthAttribute(element, "cy", 0.0, error);
-  const auto rx = lengthAttribute(element, circle ? "r" : "rx", 0.0, error);
-  const auto ry = lengthAttribute(element, circle ? "r" : "ry", 0.0, error);
+  const auto cx = svgLengthAttribute(element, "cx", 0.0, error);
+  const auto cy = svgLengthAttribute(element, "cy", 0.0, error);
+  const auto rx = svgLengthAttribute(element, circle ? "r" : "rx", 0.0, error);
+  const auto ry = svgLengthAttribute(element, circle ? "r" : "ry", 0.0, error);
   if (!cx || !cy || !rx || !ry) {
     return std::nullopt;
   }
@@ -150,6 +127,28 @@ std::optional<std::string> lineData(const XmlElement& element, std::string& erro
 }
 
 }  // namespace
+
+std::optional<double> svgLengthAttribute(const XmlElement& element, const std::string& key, double fallback,
+                                         std::string& error)
+{
+  const auto text = element.attribute(key);
+  if (!text) {
+    return fallback;
+  }
+  std::size_t position = 0;
+  double value = 0.0;
+  if (readSvgNumber(*text, position, value)) {
+    std::string rest = text->substr(position);
+    rest.erase(std::remove_if(rest.begin(), rest.end(),
+                              [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; }),
+               rest.end());
+    if (rest.empty() || rest == "px") {
+      return value;
+    }
+  }
+  error = "attribute '" + key + "' is not a length in user units: '" + text->substr(0, 40) + "'";
+  return std::nullopt;
+}
 
 bool isSvgShapeElement(const std::string& local_name)
 {

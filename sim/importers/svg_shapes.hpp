@@ -11,6 +11,11 @@
 
 namespace ifar::sim {
 
+/// A length attribute: a number, optionally followed by "px" (a user unit); `fallback` when absent; nullopt
+/// with `error` set for anything else ("attribute 'r' is not a length in user units: '2cm'").
+std::optional<double> svgLengthAttribute(const XmlElement& element, const std::string& key, double fallback,
+                                         std::string& error);
+
 /// True for the element names (without namespace prefix) svgShapeOutline reads.
 bool isSvgShapeElement(const std::string& local_name);
 

@@ -10,6 +10,7 @@
 
 #include "common/geometry/polygon.hpp"
 #include "sim/importers/namosim_svg_importer.hpp"
+#include "sim/importers/svg_map_image.hpp"
 
 namespace ifar::sim {
 namespace {
@@ -189,6 +190,65 @@ TEST(SimWorldNamosimConventions, LayersOfARosMapScenario)
   EXPECT_TRUE(import.warnings.empty()) << allWarnings(import);
 }
 
+// A 4 x 3 grey PNG: row 0 = 255 0 255 255, row 1 = 255 0 205 255, row 2 all 255 (0 is occupied, 205 is
+// map_server's unknown: occupancy 0.196 is not below the free threshold).
+const char* const kMapPng =
+    "iVBORw0KGgoAAAANSUhEUgAAAAQAAAADCAAAAACRn/EaAAAAE0lEQVR4nGP4z/AfiBjOguj//"
+    "wFDbAnFKL1LbQAAAABJRU5ErkJggg==";
+
+TEST(SimWorldNamosimConventions, MapLayerBitmapBecomesWallsAndMovablesClearTheirCells)
+{
+  // Drawn at (100, 200), 10 units a pixel: blocked cells (1,0), (1,1) and unknown (2,1).
+  const auto scenario = [](const std::string& movables) {
+    return drawing(
+        "<g id=\"map_layer\"><image id=\"map\" x=\"100\" y=\"200\" width=\"40\" height=\"30\" "
+        "preserveAspectRatio=\"none\" xlink:href=\"data:image/png;base64," +
+        std::string(kMapPng) + "\"/></g>\n<g id=\"movables_layer\">" + movables + "</g>\n" +
+        marker("robot_0", 100, 900) + marker("goal_0", 900, 900));
+  };
+  const NamosimImport bare = importText(scenario(""));
+  ASSERT_TRUE(bare.world.ok()) << bare.world.error();
+  const World& walls = bare.world.world();
+  ASSERT_EQ(walls.obstacles.size(), 2u);
+  EXPECT_EQ(walls.obstacles[0].name, "map_cells_0");
+  // Cell (1,0): x 110..120, y 200..210 in the file; y flips to 7.9..8.0 m.
+  const Eigen::AlignedBox2d first = geometry::boundingBox(walls.obstacles[0].outline);
+  EXPECT_NEAR((first.min() - Point(1.1, 7.9)).norm(), 0.0, 1e-12);
+  EXPECT_NEAR((first.max() - Point(1.2, 8.0)).norm(), 0.0, 1e-12);
+  // Cells (1,1) and (2,1): x 110..130, y 210..220.
+  const Eigen::AlignedBox2d second = geometry::boundingBox(walls.obstacles[1].outline);
+  EXPECT_NEAR((second.min() - Point(1.1, 7.8)).norm(), 0.0, 1e-12);
+  EXPECT_NEAR((second.max() - Point(1.3, 7.9)).norm(), 0.0, 1e-12);
+  EXPECT_FALSE(bare.incomplete) << allWarnings(bare);
+  // A movable standing on cell (2,1) frees it: one wall of cells (1,0) and (1,1) is left, and no overlap.
+  const NamosimImport boxed =
+      importText(scenario("<rect id=\"crate\" x=\"121\" y=\"211\" width=\"8\" height=\"8\"/>"));
+  ASSERT_TRUE(boxed.world.ok()) << boxed.world.error();
+  ASSERT_EQ(boxed.world.world().obstacles.size(), 1u);
+  const Eigen::AlignedBox2d merged = geometry::boundingBox(boxed.world.world().obstacles[0].outline);
+  EXPECT_NEAR((merged.min() - Point(1.1, 7.8)).norm(), 0.0, 1e-12);
+  EXPECT_NEAR((merged.max() - Point(1.2, 8.0)).norm(), 0.0, 1e-12);
+  ASSERT_EQ(boxed.world.world().objects.size(), 1u);
+  // A bitmap that is not a PNG data URI is named in a warning.
+  const NamosimImport linked =
+      importText(drawing(std::string(kWalls) + marker("robot_0", 100, 900) + marker("goal_0", 900, 900) +
+                         "<g id=\"map_layer\"><image href=\"map.pgm\"/></g>\n"));
+  ASSERT_TRUE(linked.world.ok()) << linked.world.error();
+  EXPECT_TRUE(hasWarning(linked,
+                         "element <image> (line 6): map_layer image not read: only PNG data URIs "
+                         "(data:image/png;base64,...) are read, not 'map.pgm'"))
+      << allWarnings(linked);
+}
+
+TEST(SimWorldNamosimConventions, Base64DecodesAndRefusesOtherCharacters)
+{
+  EXPECT_EQ(decodeBase64("TWFu"), "Man");
+  EXPECT_EQ(decodeBase64(" TW\nE= "), "Ma");
+  EXPECT_EQ(decodeBase64("TQ=="), "M");
+  EXPECT_FALSE(decodeBase64("TW*u"));
+  EXPECT_FALSE(decodeBase64("TQ==TQ"));
+}
+
 TEST(SimWorldNamosimConventions, NamespacedTypeCountsButInkscapeTypesDoNot)
 {
   const std::string svg =
@@ -291,7 +351,9 @@ TEST(SimWorldNamosimConventions, MissingWallsRobotOrGoalsMakeAnIncompleteWorld)
   const NamosimImport empty = importText(drawing(marker("robot_0", 100, 900)));
   ASSERT_TRUE(empty.world.ok()) << empty.world.error();
   EXPECT_TRUE(empty.incomplete);
-  EXPECT_TRUE(hasWarning(empty, "no walls: no drawing element has type=\"wall\"")) << allWarnings(empty);
+  EXPECT_TRUE(
+      hasWarning(empty, "no walls: no drawing element has type=\"wall\" and no map_layer bitmap holds any"))
+      << allWarnings(empty);
   EXPECT_TRUE(hasWarning(empty, "no goals: robot 'robot_0' has none")) << allWarnings(empty);
   // Nothing at all: no robot to scale by either.
   const NamosimImport nothing = parseNamosimSvg(drawing(""), "test.svg", NamosimImportSettings());

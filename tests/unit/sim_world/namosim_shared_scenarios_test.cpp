@@ -54,8 +54,8 @@ TEST(SimWorldNamosimSharedScenarios, EveryFileImportsWithWhatItHolds)
       // movable_box: M 176.78291,44.470695 H 135.17584 V 86.10679 h 41.60707 z, height 461.7291.
       {"3_robots.svg", 3, 1, 3, {"goal_0"}, 0, 1.55979375, 3.964403575, false},
       // box_0, a rotated square of the movables_layer: the mean of its corners (126.36589, 123.20633),
-      // height 242. No walls (the map is a bitmap) and no robot drawn: incomplete.
-      {"citi_ing.svg", 0, 2, 1, {"goal_0"}, 0, 1.2636589, 1.1879367, true},
+      // height 242. Walls from the map_layer bitmap; no robot drawn: incomplete.
+      {"citi_ing.svg", 617, 2, 1, {"goal_0"}, 0, 1.2636589, 1.1879367, true},
       // movable_box: m 1908.0228,1822.7312 h -80 v 80 h 80 z, height 3000.
       {"mapgen.svg", 3, 1, 1, {"goal_0"}, 0, 18.680228, 11.372688, false},
       // movable_box: m 63.027053,20.770784 h -15.11811 v 15.11811 h 15.11811 z, height 147.25102.
@@ -168,7 +168,7 @@ TEST(SimWorldNamosimSharedScenarios, SeveralRobotsEachWithTheirGoals)
   EXPECT_TRUE(generated.warnings.empty());
 }
 
-TEST(SimWorldNamosimSharedScenarios, LayeredScenarioWithoutItsMapSaysWhatIsMissing)
+TEST(SimWorldNamosimSharedScenarios, LayeredScenarioTakesItsWallsFromTheMapBitmap)
 {
   const std::string path = namosimFile("citi_ing.svg");
   if (!std::filesystem::exists(path)) {
@@ -183,14 +183,25 @@ TEST(SimWorldNamosimSharedScenarios, LayeredScenarioWithoutItsMapSaysWhatIsMissi
   // goal_0 is a 20-sided star about sodipodi:cx, cy = (148.11133, 145.55975).
   EXPECT_NEAR(import.world.world().goals.at(0).position.x(), 1.4811133, 1e-6);
   EXPECT_NEAR(import.world.world().goals.at(0).position.y(), 0.9644025, 1e-6);
-  const std::vector<std::string> expected = {
-      "element <image> 'image10' (line 41): map_layer image not read (namosim takes this layered scenario's "
-      "walls from the ROS map its YAML names: import that map's .yaml for them)",
-      "no walls: no drawing element has type=\"wall\""};
-  for (const auto& warning : expected) {
-    EXPECT_NE(std::find(import.warnings.begin(), import.warnings.end(), warning), import.warnings.end())
-        << warning;
-  }
+  // The map bitmap (215 x 242 pixels drawn at 0,0 over 215 x 242 units) has unknown grey all round its
+  // edge: its walls span the whole viewBox, 2.15 m x 2.42 m at 1 unit = 1 cm.
+  const World& world = import.world.world();
+  EXPECT_EQ(world.obstacles.front().name, "image10_cells_0");
+  EXPECT_NEAR((world.bounds_min - geometry::Point(0.0, 0.0)).norm(), 0.0, 1e-12);
+  EXPECT_NEAR((world.bounds_max - geometry::Point(2.15, 2.42)).norm(), 0.0, 1e-12);
+  ASSERT_EQ(import.warnings.size(), 1u);
+  EXPECT_EQ(import.warnings[0].rfind("robot 'robot_0' is not drawn: the start is the free spot nearest", 0),
+            0u)
+      << import.warnings[0];
+  // Without --scale no robot gives one: namosim's centimetre, and the warning says what a unit is here.
+  const NamosimImport unscaled = importNamosimSvg(path, NamosimImportSettings());
+  ASSERT_TRUE(unscaled.world.ok()) << unscaled.world.error();
+  EXPECT_DOUBLE_EQ(unscaled.metres_per_unit, 0.01);
+  EXPECT_EQ(
+      unscaled.warnings.at(0),
+      "no robot drawn to take the scale from: 1 SVG unit = 1 cm, namosim's unit (--scale sets metres per "
+      "unit; where a map bitmap gives the walls a unit is one of its pixels, and --scale is the map's "
+      "resolution)");
 }
 
 }  // namespace
