@@ -31,7 +31,7 @@ void addImportOptions(CLI::App& app, ImportCommandLine& options)
   app.add_option(
          "--start", options.start,
          "Grid maps, and SVGs that draw no robot: start X Y [HEADING_RAD] in metres, spaces or commas "
-         "(default: the free cell nearest a grid's centre, the centre of an SVG's viewBox)")
+         "(default: the free spot nearest the centre of the grid or the SVG's viewBox)")
       ->expected(2, 3)
       ->delimiter(',')
       ->group(group);
