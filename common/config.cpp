@@ -52,11 +52,24 @@ std::string joinPath(const std::string& parent, const std::string& key)
   return parent.empty() ? key : parent + "." + key;
 }
 
+/// A scalar as an error quotes it: its first line, at most 80 characters (a file of another format read as
+/// YAML is one long scalar, and a message must not repeat the file).
+std::string quoteScalar(const std::string& scalar)
+{
+  constexpr std::size_t kQuotedLength = 80;
+  const std::size_t line_end = scalar.find('\n');
+  std::string quoted = scalar.substr(0, std::min(line_end, kQuotedLength));
+  if (quoted.size() < scalar.size()) {
+    quoted += "...";
+  }
+  return "'" + quoted + "'";
+}
+
 std::string describeValue(const YAML::Node& node)
 {
   switch (node.Type()) {
     case YAML::NodeType::Scalar:
-      return "'" + node.Scalar() + "'";
+      return quoteScalar(node.Scalar());
     case YAML::NodeType::Sequence:
       return "a list";
     case YAML::NodeType::Map:

@@ -20,6 +20,8 @@
 #include "common/command_line.hpp"
 #include "common/config.hpp"
 #include "sim/generators/generators.hpp"
+#include "sim/importers/import_command_line.hpp"
+#include "sim/importers/world_loader.hpp"
 #include "sim/simulator/builtin_worlds.hpp"
 #include "sim/world/world_file.hpp"
 #include "system/graph_picture.hpp"
@@ -67,19 +69,24 @@ std::optional<ifar::geometry::Point> parseGoal(const std::string& text)
   return ifar::geometry::Point(x, y);
 }
 
-/// A world file, else a builtin world or a generator kind of that name. The error names the input.
-ifar::sim::WorldResult loadWorld(const std::string& name, std::uint64_t seed)
+/// A world file or a map the importers read (namosim .svg, MovingAI .map, map_server .yaml), else a builtin
+/// world or a generator kind of that name. The error names the input.
+ifar::sim::WorldLoad loadWorld(const std::string& name, std::uint64_t seed,
+                               const ifar::sim::WorldImportSettings& settings)
 {
   if (!std::filesystem::exists(name)) {
+    ifar::sim::WorldLoad named;
     ifar::sim::World builtin;
     if (ifar::sim::builtinWorldByName(name, builtin)) {
-      return ifar::sim::WorldResult::success(std::move(builtin));
+      named.world = ifar::sim::WorldResult::success(std::move(builtin));
+      return named;
     }
     if (const auto kind = ifar::sim::parseWorldKind(name)) {
-      return ifar::sim::generateWorld(*kind, seed);
+      named.world = ifar::sim::generateWorld(*kind, seed);
+      return named;
     }
   }
-  return ifar::sim::loadWorldFile(name);
+  return ifar::sim::loadAnyWorld(name, settings);
 }
 
 /// Why a picture cannot be written to `path` (its folder missing, not a folder or not writable), checked
@@ -115,9 +122,13 @@ int main(int argc, char** argv)
   std::string graph_png_path;
   double graph_at_s = 0.0;
   std::string config_dir = "config";
-  app.add_option("world", world_name,
-                 "World file (YAML, docs/worlds.md), or a builtin (room, push_light, push_heavy, tunnel) or "
-                 "generated kind (room, room_objects, office, tunnel, demo_room) when no such file exists");
+  app.add_option(
+      "world", world_name,
+      "World file (YAML, docs/worlds.md), namosim .svg, MovingAI .map or map_server .yaml, or a builtin "
+      "(room, push_light, push_heavy, tunnel) or generated kind (room, room_objects, office, tunnel, "
+      "demo_room) when no such file exists");
+  ifar::sim::ImportCommandLine import_options;
+  ifar::sim::addImportOptions(app, import_options);
   app.add_option("--goal", goal_text, "Goal as X,Y in metres (default: the world's first goal)");
   app.add_option("--max-time", max_time_s, "Simulated seconds before the run counts as failed")
       ->capture_default_str();
@@ -220,12 +231,20 @@ int main(int argc, char** argv)
   request.known_map = known_map;
   request.log_path = log_path;
 
-  ifar::sim::WorldResult loaded = loadWorld(world_name, request.sim.simulator.seed);
-  if (!loaded.ok()) {
-    std::cerr << "error: world: " << loaded.error() << "\n";
+  std::string import_problem;
+  const auto import_settings =
+      ifar::sim::importSettings(import_options, request.vehicle.width_m, import_problem);
+  if (!import_settings) {
+    std::cerr << "error: " << import_problem << "\n";
     return kExitBadInput;
   }
-  request.world = std::move(loaded.world());
+  ifar::sim::WorldLoad loaded = loadWorld(world_name, request.sim.simulator.seed, *import_settings);
+  if (!loaded.world.ok()) {
+    std::cerr << "error: world: " << loaded.world.error() << "\n";
+    return kExitBadInput;
+  }
+  ifar::sim::printImportReport(loaded, std::cerr);
+  request.world = std::move(loaded.world.world());
 
   if (goal_text.empty()) {
     if (request.world.goals.empty()) {

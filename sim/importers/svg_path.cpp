@@ -1,22 +1,70 @@
 #include "sim/importers/svg_path.hpp"
 
+#include <algorithm>
 #include <cctype>
-#include <charconv>
+#include <cmath>
 #include <cstring>
+
+#include "sim/importers/svg_arc.hpp"
+#include "sim/importers/svg_number.hpp"
 
 namespace ifar::sim {
 namespace {
 
 using geometry::Point;
 
+constexpr double kPi = 3.14159265358979323846;
+
 bool isCommand(char character)
 {
-  return std::strchr("MmLlHhVvZzCcSsQqTtAa", character) != nullptr && character != '\0';
+  return character != '\0' && std::strchr("MmLlHhVvZzCcSsQqTtAa", character) != nullptr;
+}
+
+/// A piece count as an int within 1..kSvgCurveMaxPieces (non-finite counts, from huge coordinates or a
+/// zero-size curve, stay in range too).
+int boundedPieces(double pieces)
+{
+  if (!(pieces >= 1.0)) {
+    return 1;
+  }
+  return pieces >= kSvgCurveMaxPieces ? kSvgCurveMaxPieces : static_cast<int>(std::ceil(pieces));
+}
+
+/// Pieces of a Bezier curve of `degree` with control points `points` so that the uniform-parameter
+/// polyline stays within `tolerance` of it (Wang's bound: sqrt(d (d - 1) / 8 x max second difference / tol)).
+int bezierPieces(const Point* points, int degree, const SvgFlattening& flattening)
+{
+  if (!(flattening.tolerance > 0.0)) {
+    return flattening.curve_segments;
+  }
+  double largest_second_difference = 0.0;
+  for (int index = 0; index + 2 <= degree; ++index) {
+    largest_second_difference = std::max(
+        largest_second_difference, (points[index] - 2.0 * points[index + 1] + points[index + 2]).norm());
+  }
+  return boundedPieces(
+      std::sqrt(degree * (degree - 1) / 8.0 * largest_second_difference / flattening.tolerance));
+}
+
+/// Pieces of an arc: equal parameter steps whose chords stay within the tolerance of the larger circle
+/// (an ellipse's deviation from a chord is at most its larger radius times the unit circle's).
+int arcPieces(const SvgArcCentre& arc, const SvgFlattening& flattening)
+{
+  const double turn = std::abs(arc.sweep_angle);
+  if (!(flattening.tolerance > 0.0)) {
+    return boundedPieces(flattening.curve_segments * std::ceil(turn / (0.5 * kPi) - 1e-9));
+  }
+  const double radius = std::max(arc.radius_x, arc.radius_y);
+  const double step =
+      std::min(0.5 * kPi, 2.0 * std::acos(1.0 - std::min(1.0, flattening.tolerance / radius)));
+  return boundedPieces(turn / step);
 }
 
 class PathParser {
  public:
-  PathParser(const std::string& data, int curve_segments) : data_(data), curve_segments_(curve_segments) {}
+  PathParser(const std::string& data, const SvgFlattening& flattening) : data_(data), flattening_(flattening)
+  {
+  }
 
   SvgPathParse run()
   {
@@ -32,9 +80,6 @@ class PathParser {
         if (!isCommand(next)) {
           return fail(result, "unknown path command '" + std::string(1, next) + "'");
         }
-        if (next == 'A' || next == 'a') {
-          return fail(result, "elliptical arc command '" + std::string(1, next) + "' is not supported");
-        }
         command = next;
         ++position_;
         if (command == 'Z' || command == 'z') {
@@ -48,6 +93,10 @@ class PathParser {
       }
       if (!execute(command, result)) {
         return result;
+      }
+      if (points_ > kSvgPathMaxPoints) {
+        return fail(result, "more than " + std::to_string(kSvgPathMaxPoints) +
+                                " points after flattening the curves (tolerance too fine for the drawing)");
       }
       // After a moveto, further coordinate pairs are implicit linetos.
       if (command == 'M') {
@@ -63,62 +112,24 @@ class PathParser {
  private:
   SvgPathParse& fail(SvgPathParse& result, const std::string& problem) const
   {
+    result.subpaths.clear();
     result.error = "at character " + std::to_string(position_) + ": " + problem;
     return result;
   }
 
-  void skipSeparators()
-  {
-    while (position_ < data_.size() &&
-           (std::isspace(static_cast<unsigned char>(data_[position_])) != 0 || data_[position_] == ',')) {
-      ++position_;
-    }
-  }
+  void skipSeparators() { skipSvgSeparators(data_, position_); }
 
-  /// SVG number: sign, digits, fraction, exponent; "1.5.5" reads as 1.5 then .5.
-  bool readNumber(double& value)
+  bool readNumber(double& value) { return readSvgNumber(data_, position_, value); }
+
+  /// An arc flag: a single '0' or '1', which may run straight into the next number ("011").
+  bool readFlag(bool& flag)
   {
     skipSeparators();
-    std::size_t end = position_;
-    if (end < data_.size() && (data_[end] == '-' || data_[end] == '+')) {
-      ++end;
-    }
-    bool digits = false;
-    while (end < data_.size() && std::isdigit(static_cast<unsigned char>(data_[end])) != 0) {
-      ++end;
-      digits = true;
-    }
-    if (end < data_.size() && data_[end] == '.') {
-      ++end;
-      while (end < data_.size() && std::isdigit(static_cast<unsigned char>(data_[end])) != 0) {
-        ++end;
-        digits = true;
-      }
-    }
-    if (!digits) {
+    if (position_ >= data_.size() || (data_[position_] != '0' && data_[position_] != '1')) {
       return false;
     }
-    if (end < data_.size() && (data_[end] == 'e' || data_[end] == 'E')) {
-      std::size_t exponent = end + 1;
-      if (exponent < data_.size() && (data_[exponent] == '-' || data_[exponent] == '+')) {
-        ++exponent;
-      }
-      if (exponent < data_.size() && std::isdigit(static_cast<unsigned char>(data_[exponent])) != 0) {
-        end = exponent;
-        while (end < data_.size() && std::isdigit(static_cast<unsigned char>(data_[end])) != 0) {
-          ++end;
-        }
-      }
-    }
-    std::size_t begin = position_;
-    if (data_[begin] == '+') {
-      ++begin;  // from_chars does not take a plus sign
-    }
-    const auto parsed = std::from_chars(data_.data() + begin, data_.data() + end, value);
-    if (parsed.ec != std::errc() || parsed.ptr != data_.data() + end) {
-      return false;
-    }
-    position_ = end;
+    flag = data_[position_] == '1';
+    ++position_;
     return true;
   }
 
@@ -155,18 +166,23 @@ class PathParser {
   {
     if (current_.points.empty()) {
       current_.points.push_back(pen_);  // drawing after Z continues from the subpath's start
+      ++points_;
     }
     current_.points.push_back(point);
+    ++points_;
     pen_ = point;
   }
 
   void cubic(const Point& first, const Point& second, const Point& end)
   {
-    const Point begin = pen_;
-    for (int step = 1; step <= curve_segments_; ++step) {
-      const double t = static_cast<double>(step) / curve_segments_;
+    const Point controls[4] = {pen_, first, second, end};
+    const int pieces = bezierPieces(controls, 3, flattening_);
+    for (int step = 1; step <= pieces; ++step) {
+      const double t = static_cast<double>(step) / pieces;
       const double u = 1.0 - t;
-      lineTo(u * u * u * begin + 3.0 * u * u * t * first + 3.0 * u * t * t * second + t * t * t * end);
+      lineTo(step == pieces ? end
+                            : Point(u * u * u * controls[0] + 3.0 * u * u * t * first +
+                                    3.0 * u * t * t * second + t * t * t * end));
     }
     last_control_ = second;
     last_control_valid_ = true;
@@ -175,15 +191,34 @@ class PathParser {
 
   void quadratic(const Point& control, const Point& end)
   {
-    const Point begin = pen_;
-    for (int step = 1; step <= curve_segments_; ++step) {
-      const double t = static_cast<double>(step) / curve_segments_;
+    const Point controls[3] = {pen_, control, end};
+    const int pieces = bezierPieces(controls, 2, flattening_);
+    for (int step = 1; step <= pieces; ++step) {
+      const double t = static_cast<double>(step) / pieces;
       const double u = 1.0 - t;
-      lineTo(u * u * begin + 2.0 * u * t * control + t * t * end);
+      lineTo(step == pieces ? end : Point(u * u * controls[0] + 2.0 * u * t * control + t * t * end));
     }
     last_control_ = control;
     last_control_valid_ = true;
     last_was_cubic_ = false;
+  }
+
+  /// SVG F.6.2: an arc to the current point is drawn as nothing, one with a zero radius as a line.
+  void arc(double radius_x, double radius_y, double rotation_deg, bool large_arc, bool sweep,
+           const Point& end)
+  {
+    if (end == pen_) {
+      return;
+    }
+    if (radius_x == 0.0 || radius_y == 0.0) {
+      lineTo(end);
+      return;
+    }
+    const SvgArcCentre centre = svgArcCentre(pen_, radius_x, radius_y, rotation_deg, large_arc, sweep, end);
+    const int pieces = arcPieces(centre, flattening_);
+    for (int step = 1; step <= pieces; ++step) {
+      lineTo(step == pieces ? end : centre.pointAt(centre.start_angle + centre.sweep_angle * step / pieces));
+    }
   }
 
   /// The reflection of the previous curve's control point, or the pen when the previous command differs.
@@ -193,6 +228,28 @@ class PathParser {
       return 2.0 * pen_ - last_control_;
     }
     return pen_;
+  }
+
+  bool readArc(SvgPathParse& result, char command, const Point& origin)
+  {
+    double radii_and_rotation[3];
+    bool large_arc = false;
+    bool sweep = false;
+    double end[2];
+    if (!readNumbers(radii_and_rotation, 3, result, command)) {
+      return false;
+    }
+    if (!readFlag(large_arc) || !readFlag(sweep)) {
+      fail(result,
+           std::string("command '") + command + "' expects flags 0 or 1 after the radii and rotation");
+      return false;
+    }
+    if (!readNumbers(end, 2, result, command)) {
+      return false;
+    }
+    arc(radii_and_rotation[0], radii_and_rotation[1], radii_and_rotation[2], large_arc, sweep,
+        origin + Point(end[0], end[1]));
+    return true;
   }
 
   bool execute(char command, SvgPathParse& result)
@@ -210,6 +267,7 @@ class PathParser {
         pen_ = origin + Point(values[0], values[1]);
         subpath_start_ = pen_;
         current_.points.push_back(pen_);
+        ++points_;
         break;
       }
       case 'L': {
@@ -266,6 +324,12 @@ class PathParser {
         curve = true;
         break;
       }
+      case 'A': {
+        if (!readArc(result, command, origin)) {
+          return false;
+        }
+        break;
+      }
       default:
         fail(result, std::string("unexpected command '") + command + "'");
         return false;
@@ -277,8 +341,9 @@ class PathParser {
   }
 
   const std::string& data_;
-  const int curve_segments_;
+  const SvgFlattening flattening_;
   std::size_t position_ = 0;
+  std::size_t points_ = 0;
   Point pen_ = Point(0.0, 0.0);
   Point subpath_start_ = Point(0.0, 0.0);
   Point last_control_ = Point(0.0, 0.0);
@@ -289,9 +354,21 @@ class PathParser {
 
 }  // namespace
 
+SvgPathParse parseSvgPath(const std::string& data, const SvgFlattening& flattening)
+{
+  SvgFlattening checked = flattening;
+  checked.curve_segments = std::clamp(checked.curve_segments, 1, kSvgCurveMaxPieces);
+  if (!std::isfinite(checked.tolerance) || checked.tolerance < 0.0) {
+    checked.tolerance = 0.0;
+  }
+  return PathParser(data, checked).run();
+}
+
 SvgPathParse parseSvgPath(const std::string& data, int curve_segments)
 {
-  return PathParser(data, curve_segments < 1 ? 1 : curve_segments).run();
+  SvgFlattening flattening;
+  flattening.curve_segments = curve_segments;
+  return parseSvgPath(data, flattening);
 }
 
 }  // namespace ifar::sim

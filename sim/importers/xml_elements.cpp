@@ -1,7 +1,8 @@
 #include "sim/importers/xml_elements.hpp"
 
-#include <algorithm>
-#include <cctype>
+#include <tinyxml2.h>
+
+#include <utility>
 
 namespace ifar::sim {
 
@@ -22,180 +23,86 @@ std::optional<std::string> XmlElement::attribute(const std::string& key) const
 
 namespace {
 
-bool isNameCharacter(char character)
+/// tinyxml2's error as the project states it: what went wrong, naming the element when tinyxml2 does.
+std::string describeError(const tinyxml2::XMLDocument& document)
 {
-  const auto byte = static_cast<unsigned char>(character);
-  return std::isalnum(byte) != 0 || character == ':' || character == '_' || character == '-' ||
-         character == '.' || byte >= 0x80;
+  // ErrorStr() ends in "Line number=N: XMLElement name=NAME" when the error is about an element.
+  const std::string detail = document.ErrorStr();
+  const std::string marker = "XMLElement name=";
+  const auto named = detail.find(marker);
+  const std::string element =
+      named == std::string::npos ? std::string() : "element <" + detail.substr(named + marker.size()) + ">";
+  const std::string prefix = element.empty() ? std::string() : element + ": ";
+  switch (document.ErrorID()) {
+    case tinyxml2::XML_ERROR_PARSING_ATTRIBUTE:
+      return prefix + "an attribute cannot be read (a value not quoted or not closed, or a name repeated)";
+    case tinyxml2::XML_ERROR_MISMATCHED_ELEMENT:
+      return prefix + "not closed by its own end tag";
+    case tinyxml2::XML_ERROR_PARSING_ELEMENT:
+      return prefix + "markup not closed";
+    case tinyxml2::XML_ERROR_PARSING_COMMENT:
+      return "comment not closed (missing '-->')";
+    case tinyxml2::XML_ERROR_PARSING_CDATA:
+      return "CDATA section not closed (missing ']]>')";
+    case tinyxml2::XML_ERROR_PARSING_DECLARATION:
+      return "declaration not closed (missing '?>')";
+    case tinyxml2::XML_ERROR_PARSING_UNKNOWN:
+      return "markup '<!...' not closed";
+    case tinyxml2::XML_ERROR_EMPTY_DOCUMENT:
+      return "no element in the document";
+    case tinyxml2::XML_ELEMENT_DEPTH_EXCEEDED:
+      return "elements nested more than " + std::to_string(kXmlMaxDepth) + " deep";
+    default:
+      return prefix + document.ErrorName();
+  }
 }
-
-std::string decodeEntities(const std::string& raw)
-{
-  static const std::pair<const char*, char> kEntities[] = {
-      {"&lt;", '<'}, {"&gt;", '>'}, {"&amp;", '&'}, {"&quot;", '"'}, {"&apos;", '\''}};
-  std::string out;
-  for (std::size_t index = 0; index < raw.size();) {
-    bool replaced = false;
-    if (raw[index] == '&') {
-      for (const auto& [entity, character] : kEntities) {
-        const std::string name(entity);
-        if (raw.compare(index, name.size(), name) == 0) {
-          out += character;
-          index += name.size();
-          replaced = true;
-          break;
-        }
-      }
-    }
-    if (!replaced) {
-      out += raw[index++];
-    }
-  }
-  return out;
-}
-
-class Scanner {
- public:
-  explicit Scanner(const std::string& text) : text_(text) {}
-
-  XmlScan run()
-  {
-    XmlScan scan;
-    while (position_ < text_.size()) {
-      const auto open = text_.find('<', position_);
-      if (open == std::string::npos) {
-        break;
-      }
-      advanceTo(open);
-      if (startsWith("<!--")) {
-        if (!skipPast("-->", scan)) {
-          return scan;
-        }
-      } else if (startsWith("<![CDATA[")) {
-        if (!skipPast("]]>", scan)) {
-          return scan;
-        }
-      } else if (startsWith("<?") || startsWith("<!") || startsWith("</")) {
-        // Declarations, doctype and end tags carry nothing the importer reads.
-        if (!skipPast(">", scan)) {
-          return scan;
-        }
-      } else if (!readElement(scan)) {
-        return scan;
-      }
-    }
-    return scan;
-  }
-
- private:
-  bool startsWith(const char* prefix) const
-  {
-    return text_.compare(position_, std::char_traits<char>::length(prefix), prefix) == 0;
-  }
-
-  void advanceTo(std::size_t target)
-  {
-    line_ += static_cast<int>(std::count(text_.begin() + static_cast<std::ptrdiff_t>(position_),
-                                         text_.begin() + static_cast<std::ptrdiff_t>(target), '\n'));
-    position_ = target;
-  }
-
-  bool fail(XmlScan& scan, const std::string& problem) const
-  {
-    scan.error = "line " + std::to_string(line_) + ": " + problem;
-    return false;
-  }
-
-  bool skipPast(const std::string& terminator, XmlScan& scan)
-  {
-    const auto end = text_.find(terminator, position_);
-    if (end == std::string::npos) {
-      return fail(scan, "markup not closed (missing '" + terminator + "')");
-    }
-    advanceTo(end + terminator.size());
-    return true;
-  }
-
-  void skipSpace()
-  {
-    while (position_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[position_])) != 0) {
-      if (text_[position_] == '\n') {
-        ++line_;
-      }
-      ++position_;
-    }
-  }
-
-  std::string readName()
-  {
-    const auto begin = position_;
-    while (position_ < text_.size() && isNameCharacter(text_[position_])) {
-      ++position_;
-    }
-    return text_.substr(begin, position_ - begin);
-  }
-
-  bool readElement(XmlScan& scan)
-  {
-    XmlElement element;
-    element.line = line_;
-    ++position_;  // '<'
-    element.name = readName();
-    if (element.name.empty()) {
-      return fail(scan, "'<' not followed by an element name");
-    }
-    while (true) {
-      skipSpace();
-      if (position_ >= text_.size()) {
-        return fail(scan, "element <" + element.name + "> not closed");
-      }
-      if (text_[position_] == '>') {
-        ++position_;
-        break;
-      }
-      if (startsWith("/>")) {
-        position_ += 2;
-        break;
-      }
-      const auto key = readName();
-      if (key.empty()) {
-        return fail(scan, "element <" + element.name + ">: unexpected character '" +
-                              std::string(1, text_[position_]) + "'");
-      }
-      skipSpace();
-      if (position_ >= text_.size() || text_[position_] != '=') {
-        return fail(scan, "element <" + element.name + ">: attribute '" + key + "' has no value");
-      }
-      ++position_;
-      skipSpace();
-      if (position_ >= text_.size() || (text_[position_] != '"' && text_[position_] != '\'')) {
-        return fail(scan, "element <" + element.name + ">: attribute '" + key + "' value not quoted");
-      }
-      const char quote = text_[position_];
-      const auto close = text_.find(quote, position_ + 1);
-      if (close == std::string::npos) {
-        return fail(scan, "element <" + element.name + ">: attribute '" + key + "' value not closed");
-      }
-      const std::string raw = text_.substr(position_ + 1, close - position_ - 1);
-      advanceTo(close + 1);
-      if (!element.attributes.emplace(key, decodeEntities(raw)).second) {
-        return fail(scan, "element <" + element.name + ">: attribute '" + key + "' repeated");
-      }
-    }
-    scan.elements.push_back(std::move(element));
-    return true;
-  }
-
-  const std::string& text_;
-  std::size_t position_ = 0;
-  int line_ = 1;
-};
 
 }  // namespace
 
 XmlScan scanXmlElements(const std::string& text)
 {
-  return Scanner(text).run();
+  XmlScan scan;
+  tinyxml2::XMLDocument document(true, tinyxml2::PRESERVE_WHITESPACE);
+  if (document.Parse(text.data(), text.size()) != tinyxml2::XML_SUCCESS) {
+    scan.error = "line " + std::to_string(document.ErrorLineNum()) + ": " + describeError(document);
+    return scan;
+  }
+  // Depth first in document order, without recursion: (element, index of its parent, its depth).
+  struct Pending {
+    const tinyxml2::XMLElement* element;
+    int parent;
+    int depth;
+  };
+  std::vector<Pending> pending;
+  for (const tinyxml2::XMLElement* top = document.LastChildElement(); top != nullptr;
+       top = top->PreviousSiblingElement()) {
+    pending.push_back({top, -1, 1});
+  }
+  while (!pending.empty()) {
+    const Pending next = pending.back();
+    pending.pop_back();
+    if (next.depth > kXmlMaxDepth) {
+      scan.elements.clear();
+      scan.error = "line " + std::to_string(next.element->GetLineNum()) + ": elements nested more than " +
+                   std::to_string(kXmlMaxDepth) + " deep";
+      return scan;
+    }
+    XmlElement element;
+    element.name = next.element->Name();
+    element.line = next.element->GetLineNum();
+    element.parent = next.parent;
+    for (const tinyxml2::XMLAttribute* attribute = next.element->FirstAttribute(); attribute != nullptr;
+         attribute = attribute->Next()) {
+      element.attributes.emplace(attribute->Name(), attribute->Value());
+    }
+    const int index = static_cast<int>(scan.elements.size());
+    scan.elements.push_back(std::move(element));
+    for (const tinyxml2::XMLElement* child = next.element->LastChildElement(); child != nullptr;
+         child = child->PreviousSiblingElement()) {
+      pending.push_back({child, index, next.depth + 1});
+    }
+  }
+  return scan;
 }
 
 }  // namespace ifar::sim

@@ -1,4 +1,5 @@
-// ifar-render: a PNG picture of a world file.
+// ifar-render: a PNG picture of a world file, or of a namosim SVG, MovingAI .map or map_server .yaml read
+// through the importers `ifar import` uses.
 
 #include <iostream>
 #include <string>
@@ -8,31 +9,36 @@
 #include "common/command_line.hpp"
 #include "common/config.hpp"
 #include "common/vehicle.hpp"
-#include "sim/world/world_file.hpp"
+#include "sim/importers/import_command_line.hpp"
+#include "sim/importers/world_loader.hpp"
 #include "viz/world_picture.hpp"
 
 int main(int argc, char** argv)
 {
-  CLI::App app("Draw a simulator world file (walls, movable objects, start, goals) as a PNG", "ifar-render");
+  CLI::App app(
+      "Draw a simulator world (walls, movable objects, start, goals) as a PNG: a world file, a namosim SVG, "
+      "a "
+      "MovingAI .map or a map_server .yaml",
+      "ifar-render");
   std::string world_path;
   std::string out;
   double resolution = 0.0;
   std::string vehicle_path;
-  app.add_option("WORLD", world_path, "world file (YAML, docs/worlds.md)")->required();
+  app.add_option("WORLD", world_path,
+                 "world file (YAML, docs/worlds.md), namosim .svg, MovingAI .map or map_server .yaml")
+      ->required();
   app.add_option("--out", out, "PNG to write (default: the world file's name with .png)");
   app.add_option("--resolution", resolution, "metres per pixel (default 0.05, coarser for large worlds)");
   app.add_option(
       "--vehicle", vehicle_path,
-      "vehicle.yaml for the push limit and footprint (default: built-in values of config/vehicle.yaml)");
+      "vehicle.yaml for the push limit, the footprint and an SVG's scale (default: built-in values of "
+      "config/vehicle.yaml)");
+  ifar::sim::ImportCommandLine import_options;
+  ifar::sim::addImportOptions(app, import_options);
   if (const auto exit_code = ifar::common::parseCommandLine(app, argc, argv)) {
     return *exit_code;
   }
 
-  const auto loaded = ifar::sim::loadWorldFile(world_path);
-  if (!loaded.ok()) {
-    std::cerr << "error: " << loaded.error() << "\n";
-    return ifar::common::kBadInputExitCode;
-  }
   ifar::common::VehicleSettings vehicle;
   if (!vehicle_path.empty()) {
     try {
@@ -42,11 +48,23 @@ int main(int argc, char** argv)
       return ifar::common::kBadInputExitCode;
     }
   }
+  std::string problem;
+  const auto settings = ifar::sim::importSettings(import_options, vehicle.width_m, problem);
+  if (!settings) {
+    std::cerr << "error: " << problem << "\n";
+    return ifar::common::kBadInputExitCode;
+  }
+  const ifar::sim::WorldLoad load = ifar::sim::loadAnyWorld(world_path, *settings);
+  if (!load.world.ok()) {
+    std::cerr << "error: " << load.world.error() << "\n";
+    return ifar::common::kBadInputExitCode;
+  }
+  ifar::sim::printImportReport(load, std::cerr);
   if (resolution < 0.0 || (app.count("--resolution") > 0 && !(resolution > 0.0))) {
     std::cerr << "error: --resolution must be positive metres per pixel\n";
     return ifar::common::kBadInputExitCode;
   }
-  const auto& world = loaded.world();
+  const auto& world = load.world.world();
   if (resolution == 0.0) {
     resolution = ifar::viz::defaultResolution(world);
   }

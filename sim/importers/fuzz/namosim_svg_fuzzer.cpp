@@ -22,7 +22,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       std::abort();
     }
     settings.metres_per_unit = 0.01;  // true size
-    settings.curve_segments = 3;
+    settings.curve_tolerance_m = 0.05;
   }
   return 0;
 }
