@@ -109,6 +109,7 @@ class Scenario {
   std::vector<std::string>
       findings_;  // the executive's AFFORDANCE and BLOCKED_PASSAGE texts not yet answered
   std::int64_t stopped_since_us_ = -1;
+  std::string planner_no_path_;  // the planner's status message while it has no path
   bool ended_ = false;
   SaturatedPushWatch saturated_pushes_;
   std::vector<double> frame_ms_;        // per planner frame, for summary_.planner_frame
@@ -181,6 +182,12 @@ void Scenario::plannerFinished(const planner::PlannerJob& job, const planner::Pl
       }
     }
     findings_.clear();
+  }
+  // Why the planner has no path, while it has none: the run's reason says so if it ends that way.
+  if (result.status.state == planner::PlannerState::NoPath) {
+    planner_no_path_ = result.status.message;
+  } else if (result.path.valid) {
+    planner_no_path_.clear();
   }
   if (!job.frame) {
     return;
@@ -284,6 +291,9 @@ RunSummary Scenario::run()
     }
   }
   stack_.flush();
+  if (!summary_.arrived && !planner_no_path_.empty()) {
+    summary_.reason += "; planner: " + planner_no_path_;
+  }
   if (!stack_.recordingError().empty() && progress_) {
     progress_("log: " + stack_.recordingError());
   }

@@ -527,7 +527,9 @@ void Planner::search(FrameResult& result)
     status.state = arrived ? PlannerState::Arrived : PlannerState::Planning;
   } else {
     status.state = PlannerState::NoPath;
-    appendMessage(status.message, std::string("search: ") + graph::toString(found.status));
+    const std::string why = graph::describeNoPath(found);
+    appendMessage(status.message,
+                  std::string("search: ") + graph::toString(found.status) + (why.empty() ? "" : ": " + why));
     if (sealed_.size() > 0 || object_seals_.size() > 0) {
       // A seal is a guess from stalls (the follower may have failed at a passage the vehicle fits): with
       // no way left at all, trying a sealed passage again beats stopping. From the next frame.

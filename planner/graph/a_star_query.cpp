@@ -80,6 +80,11 @@ void AStarSearch::Query::run(SearchResult& result)
       found = true;
       break;
     }
+    // The heuristic is the straight-line distance to the goal: where a failed search got nearest.
+    if (scratch_.states_[vertex].heuristic < result.nearest_reached_distance) {
+      result.nearest_reached_distance = scratch_.states_[vertex].heuristic;
+      result.nearest_reached = graph_.positions_[vertex];
+    }
     expand(vertex, result);
   }
   if (!found) {

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include <fmt/format.h>
+
 #include "planner/graph/a_star_query.hpp"
 
 namespace ifar::graph {
@@ -14,6 +16,24 @@ constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
 constexpr double kVerticesPerCell = 6.0;
 
 }  // namespace
+
+std::string describeNoPath(const SearchResult& result)
+{
+  if (result.status != SearchStatus::NoPath) {
+    return {};
+  }
+  if (result.start_links == 0) {
+    return "no graph vertex is visible from the start: it is enclosed";
+  }
+  if (!std::isfinite(result.nearest_reached_distance)) {
+    return fmt::format("{} vertices are visible from the start and none leads on", result.start_links);
+  }
+  return fmt::format(
+      "the {} vertices reachable from the start do not see the goal: the nearest, at ({:.2f}, {:.2f}), is "
+      "{:.2f} m from it (the graph is cut off there)",
+      result.expansions - 1, result.nearest_reached.x(), result.nearest_reached.y(),
+      result.nearest_reached_distance);
+}
 
 const char* toString(SearchStatus status)
 {

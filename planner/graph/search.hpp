@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -106,7 +107,16 @@ struct SearchResult {
   std::size_t expansions = 0;
   std::size_t start_links = 0;  // vertices found to see the robot (tested lazily, in priority order)
   std::size_t goal_links = 0;   // expanded vertices found to see the goal (tested lazily)
+  /// With NoPath: of the vertices the search reached, the one nearest the goal (straight line) and how
+  /// far it is from it; infinity when it reached none.
+  geometry::Point nearest_reached = geometry::Point::Zero();
+  double nearest_reached_distance = std::numeric_limits<double>::infinity();
 };
+
+/// Why `result` found no path, in words for a status line: nothing visible from the start (it is
+/// enclosed), or how many vertices were reached and where the nearest of them to the goal is (where the
+/// graph stops short of it). Empty when the status is not NoPath.
+std::string describeNoPath(const SearchResult& result);
 
 /// The route the previous search chose, kept when a new one is not clearly better: its arcs cost
 /// `discount` (a fraction) less, and all of them together at most `cap_m` less, taken from its first

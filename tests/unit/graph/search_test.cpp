@@ -426,3 +426,36 @@ TEST(ObstacleSet, NonFiniteAndFarPointsHandled)
 
 }  // namespace
 }  // namespace ifar::graph
+
+namespace ifar::graph {
+namespace {
+
+TEST(SearchNoPath, SaysWhereTheGraphIsCutOff)
+{
+  // Column 3 is a wall from rim to rim; the start's side holds one blocked cell, whose four corners are
+  // all the search reaches. The nearest of them to the goal (4.5, 3) is (2, 2).
+  const PriorMap prior = buildPriorMap(mapFromRows({"...@.", ".@.@.", "...@.", "...@."}), 0.0);
+  const SearchResult result = plan(prior, Point(0.5, 0.5), Point(4.5, 3.0));
+  ASSERT_EQ(result.status, SearchStatus::NoPath);
+  EXPECT_EQ(result.nearest_reached, Point(2.0, 2.0));
+  EXPECT_DOUBLE_EQ(result.nearest_reached_distance, std::hypot(2.5, 1.0));
+  EXPECT_EQ(
+      describeNoPath(result),
+      "the 4 vertices reachable from the start do not see the goal: the nearest, at (2.00, 2.00), is 2.69 m "
+      "from it (the graph is cut off there)");
+}
+
+TEST(SearchNoPath, SaysWhenTheStartIsEnclosed)
+{
+  // The start's side of the wall has no corner at all.
+  const PriorMap prior = buildPriorMap(mapFromRows({"..@..", "..@.@", "..@..", "..@.."}), 0.0);
+  const SearchResult result = plan(prior, Point(0.5, 0.5), Point(3.5, 3.0));
+  ASSERT_EQ(result.status, SearchStatus::NoPath);
+  EXPECT_EQ(describeNoPath(result), "no graph vertex is visible from the start: it is enclosed");
+  const SearchResult found = plan(prior, Point(0.5, 0.5), Point(1.5, 3.0));
+  EXPECT_EQ(found.status, SearchStatus::Found);
+  EXPECT_EQ(describeNoPath(found), "");
+}
+
+}  // namespace
+}  // namespace ifar::graph
