@@ -202,7 +202,11 @@ double headingSpeedCap(double top_speed, double heading_error, const FollowerSet
   if (settings.turn_in_place_rad <= 0.0) {
     return top_speed;
   }
-  return top_speed * std::max(0.0, 1.0 - heading_error / settings.turn_in_place_rad);
+  // Small corrections keep full speed: the cap starts at a third of the pivot angle.
+  const double free_error = settings.turn_in_place_rad / 3.0;
+  return top_speed *
+         std::clamp((settings.turn_in_place_rad - heading_error) / (settings.turn_in_place_rad - free_error),
+                    0.0, 1.0);
 }
 
 /// How far the heading is off the way the cost-to-go falls at the pose, signed (counter-clockwise

@@ -42,10 +42,11 @@ struct FollowerSettings {
   /// The cost-to-go is sampled on a circle this wide around a point for the way it falls (the way to
   /// face); a target closer than this is faced itself, since the circle reaches past it.
   double descent_radius_m = 0.5;
-  /// Facing this far or more off the way the cost-to-go falls, the vehicle turns on the spot; less far,
-  /// its forward speed is capped at top speed x (1 - error / this). A sharp turn of the path is then a
-  /// pivot, not a loop as wide as the fastest arc's radius. 0: no cap.
-  double turn_in_place_rad = 1.5707963267948966;
+  /// Facing this far or more off the way the cost-to-go falls, the vehicle turns on the spot; from a
+  /// third of this on, its forward speed cap falls linearly from top speed to 0. A sharp turn of the path
+  /// is then a pivot, not a loop as wide as the fastest arc's radius. 0: no cap (the shipped setting: see
+  /// docs/executive.md for what the cap costs in time).
+  double turn_in_place_rad = 0.0;
   Footprint footprint;
 };
 

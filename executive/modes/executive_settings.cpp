@@ -144,9 +144,8 @@ void addFollower(Table& table)
   add("descent_radius_m", &S::descent_radius_m, "m", Range::positive(),
       "the way to face: where the cost-to-go falls fastest on a circle this wide");
   add("turn_in_place_rad", &S::turn_in_place_rad, "rad", Range::between(0.0, 3.141592653589793),
-      "facing this far off the way on, turn on the spot; less far, forward speed capped at top x (1 - error "
-      "/ "
-      "this): a sharp turn of the path is a pivot, not a loop; 0 = no cap");
+      "facing this far off the way on, turn on the spot; from a third of this on, the forward speed cap "
+      "falls linearly to 0: a sharp turn of the path is a pivot, not a loop; 0 = no cap");
 }
 
 void addDoorway(Table& table)
