@@ -161,6 +161,13 @@ void ViewFeed::noticeTimeJump(common::ByteView bytes, FeedUpdate& update)
   if (last_pose_utime_ != 0 && utime < last_pose_utime_ - kTimeJumpBackUs) {
     trajectory_.clear();
     first_pose_utime_ = 0;
+    // What the old timeline left is not the new one's: a late page must not see a graph from its future.
+    for (auto& [name, channel] : channels_) {
+      channel.held.reset();
+      if (channel.statistics.type_name != "heartbeat_t") {
+        channel.latest.clear();
+      }
+    }
     update.reset = "the pose time went back " +
                    numberText(static_cast<double>(last_pose_utime_ - utime) * 1e-6) +
                    " s (a replay or simulator started again)";

@@ -53,7 +53,8 @@ struct TrajectoryPoint {
 
 /// What one message from the bus gives.
 struct FeedUpdate {
-  /// The log's or the simulator's time went back (a replay started again): pages drop their trajectory.
+  /// The log's or the simulator's time went back (a replay started again): the trajectory and the newest
+  /// messages (heartbeats aside) are dropped, here and on the pages.
   std::optional<std::string> reset;
   /// Sent on now; empty when counted only (raw stream, undecodable) or held back by the rate limit.
   std::optional<Publication> publication;

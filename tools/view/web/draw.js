@@ -29,7 +29,7 @@ IfarView.Colours = {
   backgroundEdge: "#9aa4b8",
   movableFill: "rgba(255, 152, 0, 0.35)",
   movableEdge: "#ffa726",
-  visibility: "rgba(100, 170, 255, 0.22)",
+  visibility: "rgba(100, 170, 255, 0.16)",
   interaction: "#e040fb",
   corner: "#b0bfd6",
   topological: "#ffd54f",
@@ -254,14 +254,21 @@ IfarView.Scene = class {
 
   drawGoalAndTarget(model) {
     const g = this.context, C = IfarView.Colours;
-    if (model.goal && !model.goal.cancel) {
-      const [px, py] = this.toScreen(model.goal.x, model.goal.y);
+    // The goal as sent; on a replay (which never publishes GOAL) the end of the path the planner works to.
+    let goal = model.goal && !model.goal.cancel ? model.goal : null;
+    if (!goal && model.path && model.path.valid && model.path.waypoints.length > 0) {
+      const last = model.path.waypoints[model.path.waypoints.length - 1];
+      goal = { x: last.x, y: last.y, goal_id: model.path.goal_id };
+    }
+    if (goal) {
+      const [px, py] = this.toScreen(goal.x, goal.y);
       g.strokeStyle = C.goal; g.lineWidth = 2.5;
       g.beginPath(); g.arc(px, py, 9, 0, 2 * Math.PI); g.stroke();
       g.beginPath(); g.moveTo(px - 13, py); g.lineTo(px + 13, py); g.moveTo(px, py - 13); g.lineTo(px, py + 13); g.stroke();
-      this.label(`goal ${model.goal.goal_id}`, px + 12, py - 10, C.goal);
+      this.label(`goal ${goal.goal_id}`, px + 12, py - 10, C.goal);
     }
-    if (model.exec && model.exec.mode !== 0 && model.exec.mode !== 7) {
+    // The executive's target while it drives: following, approaching, pushing or waiting for a replan.
+    if (model.exec && model.exec.mode >= 1 && model.exec.mode <= 4) {
       const [px, py] = this.toScreen(model.exec.target_x, model.exec.target_y);
       g.strokeStyle = C.target; g.lineWidth = 1.5;
       g.beginPath(); g.arc(px, py, 5, 0, 2 * Math.PI); g.stroke();

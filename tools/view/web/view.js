@@ -26,6 +26,7 @@
   let userMoved = false;  // after a pan or zoom the view stays where the user put it
   let serverClock = null;  // {utime, at}: the view's clock at a performance.now() instant
   let dirty = true;
+  let drawn = { frames: 0, pixelsPerMetre: 0, messages: 0 };  // the last picture drawn
 
   let newestReceive = 0;  // the view's receive time of the newest message
 
@@ -44,7 +45,7 @@
   const handlers = {
     pose_t(message) {
       const pose = { x: message.position[0], y: message.position[1], yaw: yawOf(message.orientation),
-                     utime: message.utime };
+                     utime: message.utime, speed: Math.hypot(message.velocity[0], message.velocity[1]) };
       if (!Number.isFinite(pose.x) || !Number.isFinite(pose.y)) return;
       model.pose = pose;
       if (!model.firstPose) model.firstPose = pose;
@@ -82,10 +83,10 @@
         model.trajectory = line.points;
         if (line.first_utime) model.firstPose = { utime: line.first_utime };
       } else if (line.view === "reset") {
-        model.trajectory = [];
-        model.firstPose = null;
-        model.forceHistory = [];
-        model.blockedPassages = [];
+        // A new timeline (a replay started again): keep only the vehicle's size and the heartbeats.
+        const kept = { vehicle: model.vehicle, heartbeats: model.heartbeats, channels: model.channels,
+                       lcmUrl: model.lcmUrl, messages: model.messages };
+        model = Object.assign(emptyModel(), kept);
       } else if (line.view === "channels") {
         model.channels = line.channels;
         serverClock = { utime: line.now_utime, at: performance.now() };
@@ -125,7 +126,30 @@
   // ---- drawing -------------------------------------------------------------------------------------------
   function shown() { return frozen || model; }
 
+  const pageErrors = [];  // what went wrong while drawing, for summary(): a test fails on any
+  window.addEventListener("error", (event) => pageErrors.push(String(event.message)));
+
+  // The next picture on the browser's animation frame, or after 100 ms where none comes (a hidden window
+  // draws no animation frames, yet its panels and screenshots must stay current).
+  let frameRequest = null, frameTimer = null;
+  function scheduleFrame() {
+    frameRequest = requestAnimationFrame(frame);
+    frameTimer = setTimeout(frame, 100);
+  }
+
   function frame() {
+    cancelAnimationFrame(frameRequest);
+    clearTimeout(frameTimer);
+    try {
+      drawFrame();
+    } catch (error) {
+      if (pageErrors.length < 20) pageErrors.push(String(error && error.stack || error));
+      dirty = false;
+    }
+    scheduleFrame();
+  }
+
+  function drawFrame() {
     const current = shown();
     if (following && current.pose) { scene.centre = { x: current.pose.x, y: current.pose.y }; }
     if (!userMoved && !following && dirty) scene.fit(IfarView.boundsOf(current));
@@ -134,12 +158,12 @@
       const bar = scene.scaleBar(120);
       document.getElementById("scale-bar-line").style.width = `${bar.pixels}px`;
       document.getElementById("scale-bar-text").textContent = bar.text;
+      drawn = { frames: drawn.frames + 1, pixelsPerMetre: scene.pixelsPerMetre, messages: current.messages };
       panels.update(current, nowUtime());
       showClock(current);
       showConnection();
       dirty = false;
     }
-    requestAnimationFrame(frame);
   }
 
   function showClock(current) {
@@ -147,7 +171,9 @@
     if (!current.pose) { element.textContent = "no pose yet"; return; }
     const time = new Date(current.pose.utime / 1000).toISOString().replace("T", " ").slice(0, 23);
     const since = current.firstPose ? ((current.pose.utime - current.firstPose.utime) / 1e6).toFixed(1) : "0.0";
-    element.textContent = `${time} UTC · t ${since} s · ${current.pose.x.toFixed(2)}, ${current.pose.y.toFixed(2)} m`;
+    const heading = (current.pose.yaw * 180 / Math.PI).toFixed(0);
+    element.textContent = `${time} UTC · t ${since} s · ${current.pose.x.toFixed(2)}, ${current.pose.y.toFixed(2)} m, ` +
+                          `${heading}° · ${(current.pose.speed || 0).toFixed(2)} m/s`;
   }
 
   // The panels age heartbeats by the clock even when no message comes.
@@ -186,8 +212,9 @@
 
   const legend = document.getElementById("legend");
   const C = IfarView.Colours;
-  legend.innerHTML = [["path", C.path], ["trajectory", C.trajectory], ["interaction edge / push", C.interaction],
-                      ["movable", C.movableEdge], ["background", C.backgroundEdge], ["goal", C.goal]]
+  legend.innerHTML = [["global path", C.path], ["trajectory", C.trajectory], ["vehicle (POSE)", C.vehicleEdge],
+                      ["interaction edge, push plan", C.interaction], ["visibility edge", "rgba(100, 170, 255, 0.6)"],
+                      ["movable polygon", C.movableEdge], ["background polygon", C.backgroundEdge], ["goal", C.goal]]
     .map(([name, colour]) => `<div><span class="swatch" style="background:${colour}"></span>${name}</div>`).join("");
 
   document.getElementById("pause").onclick = () => setPaused(!frozen);
@@ -236,16 +263,24 @@
         connected, paused: frozen !== null, messages: current.messages,
         pose: current.pose, firstPose: current.firstPose, poses: current.poses,
         trajectoryPoints: current.trajectory.length,
-        graph: current.graph && { polygons: current.graph.polygons.length, vertices: current.graph.vertices.length,
+        graph: current.graph && { utime: current.graph.utime, sequence: current.graph.sequence,
+                                  polygons: current.graph.polygons.length, vertices: current.graph.vertices.length,
                                   edges: current.graph.edges.length,
                                   interactionEdges: current.graph.edges.filter((edge) => edge.kind === 1).length },
         pathWaypoints: current.path ? current.path.waypoints.length : 0,
         mode: current.exec ? IfarView.ExecutiveModes[current.exec.mode] : null,
+        force: current.force ? current.force.force_n : null,
+        pushPlans: current.path ? current.path.push_plans.length : 0,
         health: Object.keys(current.heartbeats).sort().map((process) => ({
           process, health: IfarView.HealthNames[current.heartbeats[process].message.health],
+          utime: current.heartbeats[process].message.utime,
           ageS: now ? (now - current.heartbeats[process].receive_utime) / 1e6 : null })),
         scaleBar: document.getElementById("scale-bar-text").textContent,
+        drawn,
+        errors: pageErrors.slice(),
         pixelsPerMetre: scene.pixelsPerMetre,
+        centre: Object.assign({}, scene.centre),
+        following,
       };
     },
     pause() { setPaused(true); },
@@ -261,5 +296,5 @@
   };
 
   connect();
-  requestAnimationFrame(frame);
+  scheduleFrame();
 })();
