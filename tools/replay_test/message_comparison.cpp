@@ -49,11 +49,17 @@ class Comparison {
   {
     for (std::size_t index = 0; index < recorded.size() && index < replayed.size(); ++index) {
       const std::string& name = recorded[index].first;
-      if (prefix.empty() && settings_.ignored.count(type_name + "." + name) > 0) {
+      std::string qualified = type_name;
+      qualified.append(".").append(name);
+      if (prefix.empty() && settings_.ignored.count(qualified) > 0) {
         continue;
       }
-      const std::string difference = value(recorded[index].second, replayed[index].second,
-                                           prefix.empty() ? name : prefix + "." + name, type_name);
+      std::string where = prefix;
+      if (!where.empty()) {
+        where += '.';
+      }
+      where += name;
+      std::string difference = value(recorded[index].second, replayed[index].second, where, type_name);
       if (!difference.empty()) {
         return difference;
       }
@@ -91,8 +97,10 @@ class Comparison {
           return differs();
         }
         for (std::size_t index = 0; index < recorded.elements.size(); ++index) {
-          const std::string difference = value(recorded.elements[index], replayed.elements[index],
-                                               where + "[" + std::to_string(index) + "]", type_name);
+          std::string element = where;
+          element.append("[").append(std::to_string(index)).append("]");
+          std::string difference =
+              value(recorded.elements[index], replayed.elements[index], element, type_name);
           if (!difference.empty()) {
             return difference;
           }
