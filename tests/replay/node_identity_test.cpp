@@ -28,6 +28,7 @@
 #include "system/scenario_runner.hpp"
 #include "system/simulated_stack.hpp"
 #include "testing/temporary_directory.hpp"
+#include "tools/replay_test/log_clock_feed.hpp"
 
 namespace ifar::runner {
 namespace {
@@ -76,8 +77,8 @@ std::vector<std::uint8_t> withoutTimings(const std::vector<std::uint8_t>& bytes)
 }
 
 /// Replays `events` on `inputs` into a daemon on `loop` whose manual clock reads `clock`: at each logged
-/// time, first the inputs of that time, then the timers due, as the runner steps. Returns what the daemon
-/// published on `outputs`.
+/// time, first the inputs of that time, then the timers due, as the runner steps (LogClockFeed). Returns what
+/// the daemon published on `outputs`.
 Publications replay(bus::RunLoop& loop, std::int64_t& clock, const std::vector<lcm_log::LogEvent>& events,
                     const std::set<std::string>& inputs, const std::set<std::string>& outputs)
 {
@@ -88,19 +89,20 @@ Publications replay(bus::RunLoop& loop, std::int64_t& clock, const std::vector<l
       published[name].emplace_back(data, data + buffer->data_size);
     });
   }
-  std::size_t index = 0;
-  while (index < events.size()) {
-    clock = events[index].timestamp_us;
-    for (; index < events.size() && events[index].timestamp_us == clock; ++index) {
-      const lcm_log::LogEvent& event = events[index];
-      if (inputs.count(event.channel) > 0) {
-        loop.lcm().publish(event.channel, event.data.data(), static_cast<unsigned>(event.data.size()));
-      }
-    }
-    loop.deliverPending();
-    loop.runDueTimers();
-    loop.deliverPending();
+  replay_test::LogClockFeed feed(inputs, {[&clock](std::int64_t utime) { clock = utime; },
+                                          [&loop](const lcm_log::LogEvent& event) {
+                                            loop.lcm().publish(event.channel, event.data.data(),
+                                                               static_cast<unsigned>(event.data.size()));
+                                          },
+                                          [&loop](std::int64_t /*utime*/) {
+                                            loop.deliverPending();
+                                            loop.runDueTimers();
+                                            loop.deliverPending();
+                                          }});
+  for (const lcm_log::LogEvent& event : events) {
+    feed.add(event);
   }
+  feed.finish();
   return published;
 }
 

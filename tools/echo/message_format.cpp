@@ -136,12 +136,17 @@ std::string utimeText(std::int64_t utime)
 
 }  // namespace
 
+std::string jsonObject(const Members& members)
+{
+  return membersInline(members, true);
+}
+
 std::string jsonLine(const MessageOrigin& origin, const Members& members)
 {
   return "{\"channel\":" + common::jsonString(origin.channel) +
          ",\"type\":" + common::jsonString(origin.type_name) +
          ",\"receive_utime\":" + std::to_string(origin.receive_utime) +
-         ",\"message\":" + membersInline(members, true) + "}";
+         ",\"message\":" + jsonObject(members) + "}";
 }
 
 std::string textBlock(const MessageOrigin& origin, const Members& members)

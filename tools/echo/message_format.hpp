@@ -19,6 +19,9 @@ struct MessageOrigin {
   std::int64_t receive_utime = 0;
 };
 
+/// The members as one JSON object: {"utime":...,...}.
+std::string jsonObject(const Members& members);
+
 /// One line of JSON, without the newline: {"channel":...,"type":...,"receive_utime":...,"message":{...}}.
 std::string jsonLine(const MessageOrigin& origin, const Members& members);
 

@@ -1,12 +1,16 @@
 // ifar run-summary LOG --goal X Y: what a recorded run achieved, from its LCM log: arrived or not, distance
 // driven and time (simulator ground truth, else POSE), pushes and replans (EXEC_STATUS), affordance
-// updates, and the executive's last mode and reason. --json prints the same as one JSON line. A corrupt
+// updates, and the executive's last mode and reason. --json prints the same as one JSON line. --png with
+// --world draws the run as `ifar run --png` does: the world, the trajectory (ground truth, else POSE) and
+// the objects where the log last saw them (SIM_GROUND_TRUTH), with the outcome in the legend. A corrupt
 // log is summarised from the events that could be read, with a warning on stderr naming the first bad
 // byte; a log in which no event can be read is an error.
 
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -19,6 +23,8 @@
 #include "ifar/pose_t.hpp"
 #include "ifar/world_state_t.hpp"
 #include "lcmtypes/checked_decode.hpp"
+#include "sim/world/world_file.hpp"
+#include "system/run_picture.hpp"
 
 namespace {
 
@@ -66,8 +72,29 @@ int main(int argc, char** argv)
   app.add_option("--goal-y", goal_y, "goal y, metres")->required();
   app.add_option("--tolerance", tolerance, "arrival radius, metres")->capture_default_str();
   app.add_flag("--json", json, "one JSON line instead of text");
+  std::string world_path;
+  std::string png_path;
+  app.add_option("--world", world_path, "the world file the run was in (for --png)")
+      ->check(CLI::ExistingFile);
+  app.add_option(
+      "--png", png_path,
+      "draw the run as ifar run --png does: world, trajectory, objects where they ended (needs --world)");
   if (const auto exit_code = ifar::common::parseCommandLine(app, argc, argv)) {
     return *exit_code;
+  }
+
+  if (!png_path.empty() && world_path.empty()) {
+    std::fprintf(stderr, "ifar run-summary: error: --png needs --world\n");
+    return ifar::common::kBadInputExitCode;
+  }
+  ifar::sim::World world;
+  if (!world_path.empty()) {
+    ifar::sim::WorldResult loaded = ifar::sim::loadWorldFile(world_path);
+    if (!loaded.ok()) {
+      std::fprintf(stderr, "ifar run-summary: error: --world: %s\n", loaded.error().c_str());
+      return ifar::common::kBadInputExitCode;
+    }
+    world = std::move(loaded.world());
   }
 
   ifar::lcm_log::LogReader log = ifar::lcm_log::LogReader::open(path);
@@ -77,6 +104,9 @@ int main(int argc, char** argv)
   }
   Track truth;
   Track pose;
+  std::vector<ifar::geometry::Pose2> truth_poses;
+  std::vector<ifar::geometry::Pose2> estimated_poses;
+  std::map<std::int64_t, ifar::geometry::Pose2> last_objects;  // by world-file id
   ifar::exec_status_t last_status{};
   bool has_status = false;
   bool arrived_mode = false;
@@ -89,6 +119,10 @@ int main(int argc, char** argv)
       ifar::world_state_t state{};
       if (decode(event, state)) {
         truth.add(state.vehicle_x, state.vehicle_y, state.utime);
+        truth_poses.push_back({state.vehicle_x, state.vehicle_y, state.vehicle_heading});
+        for (const ifar::object_state_t& object : state.objects) {
+          last_objects[object.id] = {object.x, object.y, object.heading};
+        }
       } else {
         ++undecodable;
       }
@@ -96,6 +130,7 @@ int main(int argc, char** argv)
       ifar::pose_t message{};
       if (decode(event, message)) {
         pose.add(message.position[0], message.position[1], message.utime);
+        estimated_poses.push_back({message.position[0], message.position[1], 0.0});
       } else {
         ++undecodable;
       }
@@ -134,6 +169,26 @@ int main(int argc, char** argv)
   const int pushes = has_status ? last_status.pushes : 0;
   const int replans = has_status ? last_status.replans : 0;
   const std::string reason = has_status ? last_status.reason : "no EXEC_STATUS in the log";
+  if (!png_path.empty()) {
+    ifar::runner::RunSummary run;
+    run.arrived = arrived;
+    run.reason = reason;
+    run.distance_m = track.distance_m;
+    run.sim_time_s = seconds;
+    run.pushes = pushes;
+    run.replans = replans;
+    run.trajectory = truth.has_position ? truth_poses : estimated_poses;
+    for (const ifar::sim::MovableObject& object : world.objects) {
+      const auto seen = last_objects.find(object.id);
+      run.final_objects.push_back(seen != last_objects.end() ? seen->second : object.pose);
+    }
+    const std::string problem = ifar::runner::writeRunPicture(
+        world, ifar::common::VehicleSettings{}, ifar::geometry::Point(goal_x, goal_y), run, png_path);
+    if (!problem.empty()) {
+      std::fprintf(stderr, "ifar run-summary: error: --png: %s\n", problem.c_str());
+      return 1;
+    }
+  }
   if (json) {
     std::printf(
         "{\"arrived\": %s, \"distance_m\": %.3f, \"time_s\": %.2f, \"remaining_m\": %.3f, \"final_x\": %.3f, "

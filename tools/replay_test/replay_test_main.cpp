@@ -1,0 +1,301 @@
+// ifar replay-test LOG --node planner|executive: replays a log's inputs into one node's core on the log's own
+// clock (node_replay.hpp) and compares what it publishes with what the log recorded, message by message in
+// order, member by member. Exit 0 when they agree, 1 at a difference (the first one printed, named by
+// channel, message, log time and member), 2 on bad input (command line, config, a corrupt log, a log without
+// the node's inputs or outputs).
+
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "common/command_line.hpp"
+#include "common/config.hpp"
+#include "common/daemon_main.hpp"
+#include "common/lcm_log/log_reader.hpp"
+#include "common/lcm_log/strict_event_reader.hpp"
+#include "executive/modes/executive_settings.hpp"
+#include "executive/obstacles/local_obstacles.hpp"
+#include "lcmtypes/message_schema.hpp"
+#include "planner/interaction/interaction_settings.hpp"
+#include "planner/node/node_settings.hpp"
+#include "system/run_config.hpp"
+#include "tools/echo/message_value.hpp"
+#include "tools/replay_test/log_clock_feed.hpp"
+#include "tools/replay_test/message_comparison.hpp"
+#include "tools/replay_test/node_replay.hpp"
+
+namespace {
+
+using ifar::common::kBadInputExitCode;
+using ifar::replay_test::Published;
+
+// A log whose first event comes this soon after the runner's clock origin is a log of `ifar run`.
+constexpr std::int64_t kRunnerLogWindowUs = 1'000'000;
+// The planner's stage timings measure the wall clock of the process that ran it: never the same twice.
+const std::set<std::string> kWallClockMembers = {
+    "planner_status_t.perception_ms",  "planner_status_t.local_graph_ms", "planner_status_t.merge_ms",
+    "planner_status_t.interaction_ms", "planner_status_t.search_ms",      "planner_status_t.total_ms"};
+
+struct Options {
+  std::string log;
+  std::string node;
+  std::string config_dir = "config";
+  std::vector<std::string> sets;
+  double tolerance = 0.0;
+  std::optional<std::int64_t> start_utime;
+};
+
+int fail(int exit_code, const std::string& message)
+{
+  std::fprintf(stderr, "ifar replay-test: error: %s\n", message.c_str());
+  return exit_code;
+}
+
+/// The node's own file from the config directory with the --set overrides, read by the node's loaders into
+/// `request` (the other files as loadRunSettings read them). Throws common::ConfigError.
+void applyNodeFile(const Options& options, ifar::runner::RunRequest& request)
+{
+  const std::string file = options.node == "planner" ? "planner.yaml" : "executive.yaml";
+  ifar::common::ConfigNode root =
+      ifar::common::ConfigNode::loadFile((std::filesystem::path(options.config_dir) / file).string());
+  for (const std::string& assignment : options.sets) {
+    const std::size_t equals = assignment.find('=');
+    if (equals == std::string::npos || equals == 0) {
+      throw ifar::common::ConfigError("--set " + assignment + ": expected KEY=VALUE");
+    }
+    root.set(assignment.substr(0, equals), assignment.substr(equals + 1), "--set " + assignment);
+  }
+  ifar::common::readDaemonKeys(root);
+  if (options.node == "planner") {
+    const ifar::planner::PlannerConfig config = ifar::planner::loadPlannerConfig(root);
+    request.planner = config.planner;
+    request.planner.vehicle = request.vehicle;
+    request.planner.interaction.pusher = ifar::interaction::PusherSettings::fromVehicle(request.vehicle);
+    request.planner_node = config.node;
+  } else {
+    request.obstacles = ifar::executive::loadObstacleSettings(root.child("obstacles"));
+    request.executive = ifar::executive::loadExecutiveSettings(root);
+    root.rejectUnknownKeys();
+  }
+}
+
+std::string secondsText(std::int64_t microseconds)
+{
+  char text[32];
+  std::snprintf(text, sizeof text, "%.3f", static_cast<double>(microseconds) * 1e-6);
+  return text;
+}
+
+std::string channelList(const std::set<std::string>& channels)
+{
+  std::string text;
+  for (const std::string& channel : channels) {
+    text += (text.empty() ? "" : ", ") + channel;
+  }
+  return text;
+}
+
+/// One channel's outcome: where its replayed messages first differ from the recorded ones.
+struct ChannelOutcome {
+  std::size_t recorded = 0;
+  std::size_t replayed = 0;
+  std::optional<std::size_t> first_difference;  // message index
+  std::int64_t log_time_us = 0;                 // of that recorded message (or of the last one)
+  std::string difference;
+};
+
+ChannelOutcome compareChannel(const ifar::echo::MessageTypes& types, const std::vector<Published>& recorded,
+                              const std::vector<Published>& replayed,
+                              const ifar::replay_test::ComparisonSettings& settings)
+{
+  ChannelOutcome outcome;
+  outcome.recorded = recorded.size();
+  outcome.replayed = replayed.size();
+  for (std::size_t index = 0; index < recorded.size() && index < replayed.size(); ++index) {
+    const std::string difference = ifar::replay_test::firstDifference(
+        types, ifar::common::ByteView(recorded[index].bytes.data(), recorded[index].bytes.size()),
+        ifar::common::ByteView(replayed[index].bytes.data(), replayed[index].bytes.size()), settings);
+    if (!difference.empty()) {
+      outcome.first_difference = index;
+      outcome.log_time_us = recorded[index].utime;
+      outcome.difference = difference;
+      return outcome;
+    }
+  }
+  if (recorded.size() != replayed.size()) {
+    const std::size_t index = std::min(recorded.size(), replayed.size());
+    outcome.first_difference = index;
+    if (index < recorded.size()) {
+      outcome.log_time_us = recorded[index].utime;
+      outcome.difference = "recorded, not replayed (" + std::to_string(recorded.size()) + " recorded, " +
+                           std::to_string(replayed.size()) + " replayed)";
+    } else {
+      outcome.log_time_us = replayed[index].utime;
+      outcome.difference = "replayed, not recorded (" + std::to_string(recorded.size()) + " recorded, " +
+                           std::to_string(replayed.size()) + " replayed)";
+    }
+  }
+  return outcome;
+}
+
+int run(const Options& options)
+{
+  ifar::runner::RunRequest request;
+  try {
+    request = ifar::runner::loadRunSettings(options.config_dir);
+    applyNodeFile(options, request);
+  } catch (const ifar::common::ConfigError& error) {
+    return fail(kBadInputExitCode, error.what());
+  }
+
+  ifar::lcm_log::LogReader log = ifar::lcm_log::LogReader::open(options.log);
+  if (!log.openError().empty()) {
+    return fail(kBadInputExitCode, log.openError());
+  }
+  ifar::lcm_log::StrictEventReader events(log);
+  ifar::lcm_log::LogEvent event;
+  if (!events.next(event)) {
+    return fail(kBadInputExitCode, "'" + options.log + "' holds no event" +
+                                       (events.problem().empty() ? "" : ": corrupt at " + events.problem()));
+  }
+  const std::int64_t first_utime = event.timestamp_us;
+  const std::int64_t origin = request.sim.simulator.epoch_utime;
+  std::int64_t start_utime = first_utime;
+  std::string start_reason = "the log's first event (a daemon's log: its timers' phase is not recorded)";
+  if (options.start_utime) {
+    start_utime = *options.start_utime;
+    start_reason = "--start-utime";
+  } else if (first_utime >= origin && first_utime < origin + kRunnerLogWindowUs) {
+    start_utime = origin;
+    start_reason = "the runner's clock origin (a log of ifar run)";
+  }
+
+  std::unique_ptr<ifar::replay_test::NodeReplay> node;
+  try {
+    node = options.node == "planner" ? ifar::replay_test::plannerReplay(request, start_utime, true)
+                                     : ifar::replay_test::executiveReplay(request, start_utime);
+  } catch (const std::invalid_argument& error) {
+    return fail(kBadInputExitCode,
+                std::string("the ") + options.node + " refuses the configuration: " + error.what());
+  }
+  const std::set<std::string> outputs = node->outputChannels();
+  std::map<std::string, std::vector<Published>> recorded;
+  std::map<std::string, std::vector<Published>> replayed;
+  const auto collect = [&] {
+    for (Published& published : node->takePublished()) {
+      published.utime -= first_utime;  // log time, for the report
+      replayed[published.channel].push_back(std::move(published));
+    }
+  };
+  ifar::replay_test::LogClockFeed feed(
+      node->inputChannels(), {[](std::int64_t) {},
+                              [&node](const ifar::lcm_log::LogEvent& input) {
+                                node->deliver(input.channel,
+                                              ifar::common::ByteView(input.data.data(), input.data.size()),
+                                              input.timestamp_us);
+                              },
+                              [&node, &collect](std::int64_t now_utime) {
+                                node->runTimers(now_utime);
+                                collect();
+                              }});
+  do {
+    if (outputs.count(event.channel) > 0) {
+      recorded[event.channel].push_back({event.channel, event.data, event.timestamp_us - first_utime});
+    }
+    feed.add(event);
+  } while (events.next(event));
+  if (!events.problem().empty()) {
+    return fail(kBadInputExitCode, "'" + options.log + "' is corrupt at " + events.problem());
+  }
+  feed.finish();
+  collect();
+  if (feed.inputsDelivered() == 0) {
+    return fail(kBadInputExitCode, "'" + options.log + "' holds none of the " + options.node + "'s inputs (" +
+                                       channelList(node->inputChannels()) + ")");
+  }
+  if (recorded.empty()) {
+    return fail(kBadInputExitCode, "'" + options.log + "' holds none of the " + options.node +
+                                       "'s outputs (" + channelList(outputs) + ") to compare with");
+  }
+
+  std::printf("ifar replay-test: %s on %s: %lld inputs replayed from %s s, timers from %s\n",
+              options.node.c_str(), options.log.c_str(), static_cast<long long>(feed.inputsDelivered()),
+              secondsText(start_utime - first_utime).c_str(), start_reason.c_str());
+  ifar::replay_test::ComparisonSettings settings;
+  settings.tolerance = options.tolerance;
+  settings.ignored = kWallClockMembers;
+  const ifar::echo::MessageTypes types(ifar::lcmtypes::messageSchema());
+  std::optional<std::pair<std::string, ChannelOutcome>> first;
+  for (const std::string& channel : outputs) {
+    if (recorded.count(channel) == 0 && channel == request.planner_node.channels.dv_graph) {
+      std::printf("  %-16s not in the log (ifar run does not publish it): not compared\n", channel.c_str());
+      continue;
+    }
+    const ChannelOutcome outcome = compareChannel(types, recorded[channel], replayed[channel], settings);
+    std::printf("  %-16s %6zu recorded %6zu replayed  %s\n", channel.c_str(), outcome.recorded,
+                outcome.replayed,
+                outcome.first_difference
+                    ? ("differ from message " + std::to_string(*outcome.first_difference)).c_str()
+                    : "same");
+    if (outcome.first_difference && (!first || outcome.log_time_us < first->second.log_time_us)) {
+      first = std::make_pair(channel, outcome);
+    }
+  }
+  const std::string compared =
+      options.tolerance > 0.0 ? "reals within " + std::to_string(options.tolerance) : "exact";
+  if (!first) {
+    std::printf(
+        "same: every output of the %s matches the log (%s; the planner's stage timings, wall-clock, not "
+        "compared)\n",
+        options.node.c_str(), compared.c_str());
+    return 0;
+  }
+  const ChannelOutcome& outcome = first->second;
+  std::printf("different: %s message %zu of %zu (log time %s s): %s\n", first->first.c_str(),
+              *outcome.first_difference, outcome.recorded, secondsText(outcome.log_time_us).c_str(),
+              outcome.difference.c_str());
+  return 1;
+}
+
+}  // namespace
+
+int main(int argc, char** argv)
+{
+  CLI::App app{
+      "Replays a log's inputs into one node's core (planner or executive) on the log's own clock and "
+      "compares "
+      "its outputs with the ones recorded, message by message and member by member: exact, or reals within "
+      "--tolerance; the planner's stage timings (wall clock) are not compared. Prints the first difference.\n"
+      "Exit code 0 when they agree, 1 when they differ, 2 on bad input."};
+  Options options;
+  app.add_option("log", options.log, "LCM log (of ifar run --log, or of ifar record)")->required();
+  app.add_option("--node", options.node, "the node to replay")
+      ->required()
+      ->check(CLI::IsMember({"planner", "executive"}));
+  app.add_option("--config-dir", options.config_dir,
+                 "directory with the config files the node ran with (as ifar run --config-dir)")
+      ->capture_default_str();
+  app.add_option(
+      "--set", options.sets,
+      "KEY=VALUE: a key of the node's file (planner.yaml or executive.yaml) replaced, checked like the "
+      "file's own (repeatable); e.g. --set interaction.enabled=false for a log of ifar run --no-interaction");
+  app.add_option("--tolerance", options.tolerance,
+                 "largest difference of a real member that counts as the same")
+      ->check(ifar::common::atLeast(0.0))
+      ->capture_default_str();
+  app.add_option(
+      "--start-utime", options.start_utime,
+      "when the node started, microseconds since the epoch: its timers run a period after it (default: "
+      "the runner's clock origin for a log of ifar run, else the log's first event)");
+  if (const auto exit_code = ifar::common::parseCommandLine(app, argc, argv)) {
+    return *exit_code;
+  }
+  return run(options);
+}

@@ -1,0 +1,82 @@
+#include "tools/view/view_hub.hpp"
+
+#include <utility>
+
+#include "common/json_text.hpp"
+
+namespace ifar::view {
+namespace {
+
+constexpr std::int64_t kStatisticsPeriodUs = 1'000'000;
+
+WebFrame text(std::string line)
+{
+  return WebFrame{false, std::move(line)};
+}
+
+}  // namespace
+
+ViewHub::ViewHub(const lcm_wire::Schema& schema, FeedSettings settings, std::string hello_line, Send send)
+    : feed_(schema, settings), hello_line_(std::move(hello_line)), send_(std::move(send))
+{
+}
+
+void ViewHub::onMessage(const std::string& channel, common::ByteView bytes, std::int64_t receive_utime)
+{
+  FeedUpdate update = feed_.onMessage(channel, bytes, receive_utime);
+  std::vector<WebFrame> frames;
+  if (update.reset) {
+    frames.push_back(text("{\"view\":\"reset\",\"reason\":" + common::jsonString(*update.reset) + "}"));
+  }
+  if (update.publication) {
+    frames.push_back(text(std::move(update.publication->page_line)));
+  }
+  if (!frames.empty()) {
+    broadcast(frames);
+  }
+}
+
+void ViewHub::onClientEvent(const ClientEvent& event)
+{
+  switch (event.kind) {
+    case ClientEvent::Kind::kJoined: {
+      std::vector<WebFrame> frames{text(hello_line_)};
+      for (Publication& publication : feed_.latest()) {
+        frames.push_back(text(std::move(publication.page_line)));
+      }
+      frames.push_back(text(feed_.trajectoryLine()));
+      send_(event.client, frames);
+      pages_.insert(event.client);
+      break;
+    }
+    case ClientEvent::Kind::kLeft:
+      pages_.erase(event.client);
+      break;
+    case ClientEvent::Kind::kText:
+      break;  // the page only listens
+  }
+}
+
+void ViewHub::tick(std::int64_t now_utime)
+{
+  std::vector<WebFrame> frames;
+  for (Publication& publication : feed_.due(now_utime)) {
+    frames.push_back(text(std::move(publication.page_line)));
+  }
+  if (now_utime - last_statistics_utime_ >= kStatisticsPeriodUs) {
+    last_statistics_utime_ = now_utime;
+    frames.push_back(text(feed_.statisticsLine(now_utime)));
+  }
+  if (!frames.empty()) {
+    broadcast(frames);
+  }
+}
+
+void ViewHub::broadcast(const std::vector<WebFrame>& frames) const
+{
+  for (const ClientId page : pages_) {
+    send_(page, frames);
+  }
+}
+
+}  // namespace ifar::view
