@@ -184,7 +184,8 @@ std::string writeLossPlot(const std::vector<ResultRow>& rows, const std::string&
   const double height = 380.0;
   const double bar_width = 70.0;
   const double gap = 50.0;
-  const double width = static_cast<double>(bars.size()) * (bar_width + gap) + gap;
+  // At least as wide as the title under the plot.
+  const double width = std::max(static_cast<double>(bars.size()) * (bar_width + gap) + gap, 400.0);
   const auto y_of = [&](double metres) { return base + (metres - bottom) / (top - bottom) * height; };
   viz::Canvas canvas(geometry::Point(0.0, 0.0), geometry::Point(left + width + 40.0, base + height + 60.0),
                      1.0);
