@@ -130,6 +130,11 @@ int main(int argc, char** argv)
   ifar::sim::ImportCommandLine import_options;
   ifar::sim::addImportOptions(app, import_options);
   app.add_option("--goal", goal_text, "Goal as X,Y in metres (default: the world's first goal)");
+  bool all_goals = false;
+  app.add_flag(
+      "--all-goals", all_goals,
+      "Drive to every goal of the world in order, each sent when the one before is reached (a row per "
+      "goal in the summary)");
   app.add_option("--max-time", max_time_s, "Simulated seconds before the run counts as failed")
       ->capture_default_str();
   app.add_flag("--no-interaction", no_interaction, "FAR mode: plan without interaction edges (never push)");
@@ -246,12 +251,19 @@ int main(int argc, char** argv)
   ifar::sim::printImportReport(loaded, std::cerr);
   request.world = std::move(loaded.world.world());
 
+  if (all_goals && !goal_text.empty()) {
+    std::cerr << "error: --all-goals drives the world's goals: give --goal or --all-goals, not both\n";
+    return kExitBadInput;
+  }
   if (goal_text.empty()) {
     if (request.world.goals.empty()) {
       std::cerr << "error: --goal: world '" << request.world.name << "' has no goal; give --goal X,Y\n";
       return kExitBadInput;
     }
     request.goal = request.world.goals.front().position;
+    for (std::size_t index = 1; all_goals && index < request.world.goals.size(); ++index) {
+      request.further_goals.push_back(request.world.goals[index].position);
+    }
   } else {
     const auto goal = parseGoal(goal_text);
     if (!goal) {
@@ -266,8 +278,11 @@ int main(int argc, char** argv)
   }
 
   std::cerr << "world '" << request.world.name << "' from " << request.world.source << ", goal ("
-            << request.goal.x() << ", " << request.goal.y() << "), "
-            << (request.planner.interaction_enabled ? "interaction on" : "FAR mode (no interaction)")
+            << request.goal.x() << ", " << request.goal.y() << ")"
+            << (request.further_goals.empty()
+                    ? std::string()
+                    : " then " + std::to_string(request.further_goals.size()) + " more")
+            << ", " << (request.planner.interaction_enabled ? "interaction on" : "FAR mode (no interaction)")
             << (request.known_map ? ", walls known beforehand" : "") << "\n";
   ifar::runner::GraphPicture graph_picture(
       request.world, graph_at->count() > 0 ? std::optional<double>(graph_at_s) : std::nullopt);
@@ -328,6 +343,15 @@ int main(int argc, char** argv)
           summary.routes, summary.routes_switched);
     } else if (!losses.problem.empty()) {
       std::printf("no loss accounting: %s\n", losses.problem.c_str());
+    }
+    for (std::size_t index = 0; summary.legs.size() > 1 && index < summary.legs.size(); ++index) {
+      const ifar::runner::GoalLeg& leg = summary.legs[index];
+      char beyond[64] = "";
+      if (leg.losses.valid) {
+        std::snprintf(beyond, sizeof(beyond), ", %.2f m beyond the achievable way", leg.losses.excess_m);
+      }
+      std::printf("goal %zu (%.2f, %.2f): %s, %.2f m in %.1f s%s\n", index + 1, leg.goal.x(), leg.goal.y(),
+                  leg.arrived ? "arrived" : "not arrived", leg.distance_m, leg.sim_time_s, beyond);
     }
   }
   if (!pictures_written) {

@@ -51,6 +51,11 @@ std::string requestProblem(const RunRequest& request)
   if (!request.goal.allFinite()) {
     return "goal is not finite";
   }
+  for (std::size_t index = 0; index < request.further_goals.size(); ++index) {
+    if (!request.further_goals[index].allFinite()) {
+      return fmt::format("goal {} is not finite", index + 2);
+    }
+  }
   if (!(std::isfinite(request.planner_node.rate_hz) && request.planner_node.rate_hz > 0.0)) {
     return "the planner's rate_hz must be a positive number";
   }
@@ -95,7 +100,12 @@ class Scenario {
                        std::int64_t now_us);
   void executiveCycled(const executive::ExecutiveOutputs& outputs, std::int64_t now_us);
   void report(std::int64_t now_us) const;
-  void accountLosses();
+  /// Ends the goal in hand (arrived or not) as a leg of the summary, with its loss account.
+  void closeLeg(bool arrived, std::int64_t now_us);
+  /// The loss account of a leg driven toward `goal` (invalid when not asked for).
+  LossAccount accountLosses(const RunTrace& trace, const geometry::Point& goal);
+  /// Sums the legs' accounts into summary_.losses.
+  void addUpLosses();
   double simulatedSeconds(std::int64_t now_us) const;
 
   const RunRequest& request_;
@@ -114,7 +124,14 @@ class Scenario {
   SaturatedPushWatch saturated_pushes_;
   std::vector<double> frame_ms_;        // per planner frame, for summary_.planner_frame
   std::vector<double> interaction_ms_;  // ... and summary_.interaction
-  RunTraceRecorder trace_;
+  RunTraceRecorder trace_;              // of the leg in hand
+  // The goal in hand: its index (0: request.goal, then request.further_goals), where it is, and where
+  // its leg began.
+  std::size_t goal_index_ = 0;
+  geometry::Point goal_;
+  double leg_start_distance_m_ = 0.0;
+  std::int64_t leg_start_us_ = 0;
+  std::optional<PlanningGraph> achievable_;  // built for the first leg's account
   RunSummary summary_;
 };
 
@@ -132,7 +149,9 @@ Scenario::Scenario(const RunRequest& request, const std::function<void(const std
                               executiveCycled(outputs, now_us);
                             }}),
       vehicle_(request.world.start),
-      saturated_pushes_(saturatedPushWatch(request))
+      saturated_pushes_(saturatedPushWatch(request)),
+      goal_(request.goal),
+      leg_start_us_(epoch_us_)
 {
 }
 
@@ -221,8 +240,24 @@ void Scenario::executiveCycled(const executive::ExecutiveOutputs& outputs, std::
       (result.affordance && result.affordance->reason != executive::AffordanceReason::CostLower);
   trace_.executiveCycle(
       ExecutiveCycle{result.status.mode, result.status.target_object_id, result.status.pushes, found_harder});
-  const double goal_distance = (vehicle_.position() - request_.goal).norm();
-  if (result.status.mode == executive::Mode::Arrived || goal_distance <= request_.planner.arrival_radius_m) {
+  const double goal_distance = (vehicle_.position() - goal_).norm();
+  const std::int64_t goal_id = SimulatedStack::kFirstGoalId + static_cast<std::int64_t>(goal_index_);
+  const bool at_goal = (result.status.mode == executive::Mode::Arrived && result.status.goal_id == goal_id) ||
+                       goal_distance <= request_.planner.arrival_radius_m;
+  if (at_goal) {
+    closeLeg(true, now_us);
+    if (goal_index_ < request_.further_goals.size()) {
+      // On to the next goal, as an operator would send it.
+      goal_ = request_.further_goals[goal_index_];
+      ++goal_index_;
+      stack_.sendGoal(goal_, goal_id + 1);
+      stopped_since_us_ = -1;
+      if (progress_) {
+        progress_(fmt::format("goal {} of {} reached; on to ({:.2f}, {:.2f})", goal_index_,
+                              request_.further_goals.size() + 1, goal_.x(), goal_.y()));
+      }
+      return;
+    }
     summary_.arrived = true;
     summary_.reason = "arrived";
     ended_ = true;
@@ -248,28 +283,73 @@ void Scenario::report(std::int64_t now_us) const
       "pushes={} replans={} affordance_updates={}: {}",
       simulatedSeconds(now_us), vehicle_.x, vehicle_.y, vehicle_.heading * kDegreesPerRadian,
       executive::modeName(last_status_.mode), last_status_.target.x(), last_status_.target.y(),
-      (vehicle_.position() - request_.goal).norm(), last_status_.pushes, last_status_.replans,
+      (vehicle_.position() - goal_).norm(), last_status_.pushes, last_status_.replans,
       summary_.affordance_updates, last_status_.reason));
 }
 
-void Scenario::accountLosses()
+void Scenario::closeLeg(bool arrived, std::int64_t now_us)
 {
   const RunTrace trace = trace_.finish();
-  summary_.routes = static_cast<int>(trace.routes.size());
-  summary_.routes_switched =
+  trace_ = RunTraceRecorder();
+  trace_.position(vehicle_.position());  // the next leg starts where this one ended
+  summary_.routes += static_cast<int>(trace.routes.size());
+  summary_.routes_switched +=
       static_cast<int>(std::count_if(trace.routes.begin(), trace.routes.end(), [](const TraceRoute& route) {
         return route.end == RouteEnd::Switched;
       }));
+  GoalLeg leg;
+  leg.goal = goal_;
+  leg.arrived = arrived;
+  leg.distance_m = summary_.distance_m - leg_start_distance_m_;
+  leg.sim_time_s = static_cast<double>(now_us - leg_start_us_) * 1e-6;
+  leg.losses = accountLosses(trace, goal_);
+  summary_.legs.push_back(std::move(leg));
+  leg_start_distance_m_ = summary_.distance_m;
+  leg_start_us_ = now_us;
+}
+
+LossAccount Scenario::accountLosses(const RunTrace& trace, const geometry::Point& goal)
+{
   if (!request_.account_losses) {
+    return {};
+  }
+  if (!achievable_) {
+    AchievableMapSettings settings;
+    settings.inflation_m = 0.5 * request_.vehicle.width_m;
+    achievable_ = buildAchievableMap(request_.world, request_.vehicle, settings);
+  }
+  graph::SearchScratch scratch;
+  return runner::accountLosses(trace, [&](const geometry::Point& from) {
+    return achievableDistance(*achievable_, from, goal, scratch);
+  });
+}
+
+void Scenario::addUpLosses()
+{
+  if (summary_.legs.size() == 1) {
+    summary_.losses = summary_.legs.front().losses;
     return;
   }
-  AchievableMapSettings settings;
-  settings.inflation_m = 0.5 * request_.vehicle.width_m;
-  const PlanningGraph achievable = buildAchievableMap(request_.world, request_.vehicle, settings);
-  graph::SearchScratch scratch;
-  summary_.losses = runner::accountLosses(trace, [&](const geometry::Point& from) {
-    return achievableDistance(achievable, from, request_.goal, scratch);
-  });
+  LossAccount total;
+  total.valid = !summary_.legs.empty();
+  total.achievable_m = 0.0;
+  total.remaining_m = 0.0;
+  total.excess_m = 0.0;
+  for (const GoalLeg& leg : summary_.legs) {
+    if (!leg.losses.valid) {
+      total = LossAccount{};
+      total.problem = leg.losses.problem.empty() ? "a leg was not accounted" : leg.losses.problem;
+      break;
+    }
+    total.travelled_m += leg.losses.travelled_m;
+    total.achievable_m += leg.losses.achievable_m;
+    total.remaining_m += leg.losses.remaining_m;
+    total.excess_m += leg.losses.excess_m;
+    for (int bucket = 0; bucket < kLossBucketCount; ++bucket) {
+      lossBucket(total.buckets, bucket) += lossBucket(leg.losses.buckets, bucket);
+    }
+  }
+  summary_.losses = total;
 }
 
 RunSummary Scenario::run()
@@ -298,7 +378,7 @@ RunSummary Scenario::run()
     progress_("log: " + stack_.recordingError());
   }
   summary_.sim_time_s = simulatedSeconds(now_us);
-  summary_.goal_distance_m = (vehicle_.position() - request_.goal).norm();
+  summary_.goal_distance_m = (vehicle_.position() - goal_).norm();
   summary_.planner_frame = frameTimes(frame_ms_);
   summary_.interaction = frameTimes(interaction_ms_);
   summary_.undecided_saturated_pushes = saturated_pushes_.undecided();
@@ -306,7 +386,10 @@ RunSummary Scenario::run()
   for (const auto& object : objects_) {
     summary_.final_objects.push_back(object.pose);
   }
-  accountLosses();
+  if (!summary_.arrived) {
+    closeLeg(false, now_us);
+  }
+  addUpLosses();
   return summary_;
 }
 

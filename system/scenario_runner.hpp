@@ -32,6 +32,9 @@ namespace ifar::runner {
 struct RunRequest {
   sim::World world;  // goal comes separately
   geometry::Point goal = geometry::Point::Zero();
+  /// Goals driven in order after `goal` (ifar run --all-goals): each is sent as a new GOAL when the vehicle
+  /// arrives at the one before, as an operator or a mission would.
+  std::vector<geometry::Point> further_goals;
   common::VehicleSettings vehicle;
   sim::SimNodeSettings sim;                      // sim.yaml: physics, lidar, pose and CAN nodes
   velodyne::DriverSettings velodyne;             // velodyne.yaml
@@ -66,8 +69,17 @@ struct FrameTimes {
 /// counts as missing: the decision has to reach the push sequence and the vehicle has to ease off.
 constexpr double kDecisionAllowanceS = 2.0;
 
-struct RunSummary {
+/// One goal of a run: from arriving at the goal before (or the start) to arriving at this one.
+struct GoalLeg {
+  geometry::Point goal = geometry::Point::Zero();
   bool arrived = false;
+  double distance_m = 0.0;  // travelled during the leg (ground truth)
+  double sim_time_s = 0.0;  // the leg's simulated time
+  LossAccount losses;       // the leg's own loss accounting (its goal's achievable way)
+};
+
+struct RunSummary {
+  bool arrived = false;     // at every goal
   std::string reason;       // why it ended: "arrived", "timeout", "stopped: <executive reason>", ...
   double distance_m = 0.0;  // travelled by the vehicle (ground truth)
   double sim_time_s = 0.0;
@@ -85,8 +97,10 @@ struct RunSummary {
   FrameTimes interaction;                   // its interaction stage alone (no frame budget in the runner)
   std::vector<geometry::Pose2> trajectory;  // ground truth, one per control cycle
   std::vector<geometry::Pose2> final_objects;  // ground truth object poses at the end, world-file order
-  /// Where the distance beyond the achievable way went (valid only when asked for and computable).
+  /// Where the distance beyond the achievable way went (valid only when asked for and computable): with
+  /// several goals the legs' accounts added up.
   LossAccount losses;
+  std::vector<GoalLeg> legs;  // one per goal driven (or reached for), in order
   /// The routes the planner chose one after another and how each ended; pushes and how each ended.
   int routes = 0;
   int routes_switched = 0;  // given up for a cheaper one while they had not got worse

@@ -20,7 +20,6 @@ constexpr double kMotorStatusPeriodS = 0.1;
 // which a deterministic run cannot use: the expansion limit still bounds each search.
 constexpr double kUnlimitedSearchBudgetS = 1e9;
 constexpr double kUnlimitedFrameBudgetMs = 1e12;
-constexpr std::int64_t kGoalId = 1;
 
 planner::Planner makePlanner(const RunRequest& request)
 {
@@ -74,12 +73,17 @@ SimulatedStack::SimulatedStack(const RunRequest& request, StackObservers observe
 {
   subscribeNodes(request);
   addTimers(request);
-  ifar::goal_t goal{};
-  goal.utime = simulator_.nowUtime();
-  goal.goal_id = kGoalId;
-  goal.x = request.goal.x();
-  goal.y = request.goal.y();
-  bus_.publish(planner_channels_.goal, goal);
+  sendGoal(request.goal, kFirstGoalId);
+}
+
+void SimulatedStack::sendGoal(const geometry::Point& goal, std::int64_t goal_id)
+{
+  ifar::goal_t message{};
+  message.utime = simulator_.nowUtime();
+  message.goal_id = goal_id;
+  message.x = goal.x();
+  message.y = goal.y();
+  bus_.publish(planner_channels_.goal, message);
 }
 
 SimulatedStack::~SimulatedStack() = default;

@@ -65,6 +65,10 @@ class SimulatedStack {
   const sim::SimulatorStep& step();
   /// Delivers what the last step's timers published (at the end of a run, so its log holds every message).
   void flush() { bus_.deliver(nowUtime()); }
+  /// Publishes a new goal (delivered with the next step), as an operator's GOAL would arrive.
+  void sendGoal(const geometry::Point& goal, std::int64_t goal_id);
+  /// The id of the goal the constructor published.
+  static constexpr std::int64_t kFirstGoalId = 1;
 
   std::int64_t nowUtime() const { return simulator_.nowUtime(); }
   const planner::Planner& planner() const { return planner_; }

@@ -37,6 +37,18 @@ std::string lossesJson(const LossAccount& losses)
       jsonNumber(buckets.push_overhead_m));
 }
 
+std::string legsJson(const std::vector<GoalLeg>& legs)
+{
+  std::string text = "[";
+  for (const GoalLeg& leg : legs) {
+    text += fmt::format("{}{{\"goal\":[{},{}],\"arrived\":{},\"distance_m\":{},\"time_s\":{},\"losses\":{}}}",
+                        text.size() > 1 ? "," : "", jsonNumber(leg.goal.x()), jsonNumber(leg.goal.y()),
+                        leg.arrived ? "true" : "false", jsonNumber(leg.distance_m),
+                        jsonNumber(leg.sim_time_s), lossesJson(leg.losses));
+  }
+  return text + "]";
+}
+
 }  // namespace
 
 std::string summaryJson(const RunSummary& summary)
@@ -45,13 +57,13 @@ std::string summaryJson(const RunSummary& summary)
       "{{\"arrived\":{},\"reason\":{},\"distance_m\":{},\"time_s\":{},\"pushes\":{},\"replans\":{},"
       "\"affordance_updates\":{},\"blocked_passages\":{},\"goal_distance_m\":{},\"wall_time_s\":{},"
       "\"planner_frame_ms\":{},\"interaction_ms\":{},\"undecided_saturated_pushes\":{},"
-      "\"longest_saturated_push_s\":{},\"routes\":{},\"routes_switched\":{},\"losses\":{}}}",
+      "\"longest_saturated_push_s\":{},\"routes\":{},\"routes_switched\":{},\"losses\":{},\"legs\":{}}}",
       summary.arrived ? "true" : "false", common::jsonString(summary.reason), jsonNumber(summary.distance_m),
       jsonNumber(summary.sim_time_s), summary.pushes, summary.replans, summary.affordance_updates,
       summary.blocked_passages, jsonNumber(summary.goal_distance_m), jsonNumber(summary.wall_time_s),
       timesJson(summary.planner_frame), timesJson(summary.interaction), summary.undecided_saturated_pushes,
       jsonNumber(summary.longest_saturated_push_s), summary.routes, summary.routes_switched,
-      lossesJson(summary.losses));
+      lossesJson(summary.losses), legsJson(summary.legs));
 }
 
 }  // namespace ifar::runner

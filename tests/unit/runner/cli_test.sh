@@ -25,6 +25,8 @@ expect_bad_input "NaN goal" "--goal: coordinates must be finite" \
   ifar-run "$room" --goal nan,5 --config-dir "$config"
 expect_bad_input "malformed goal" "--goal: expected X,Y" \
   ifar-run "$room" --goal 3 --config-dir "$config"
+expect_bad_input "a goal and all goals" "give --goal or --all-goals, not both" \
+  ifar-run "$room" --goal 3,4 --all-goals --config-dir "$config"
 expect_bad_input "missing config directory" "/nonexistent/config/vehicle.yaml" \
   ifar-run "$room" --config-dir /nonexistent/config
 expect_bad_input "non-positive max time" "--max-time" \

@@ -140,6 +140,35 @@ TEST(RunnerScenario, DemoRoomPushesTheLightBoxAndArrives)
   EXPECT_EQ(losses.buckets.attempts_m, 0.0);
 }
 
+TEST(RunnerScenario, GoalsAreDrivenInOrderEachSentWhenTheOneBeforeIsReached)
+{
+  // Through the doorway (pushing the box), then along the upper half, then back down through the east
+  // opening: three legs, each its own row and account.
+  RunRequest request = requestFor(worldFile(kSourceDir + "/config/worlds/demo_room.yaml"), kDemoGoal, 300.0);
+  request.further_goals = {geometry::Point(20.0, 26.0), geometry::Point(26.0, 6.0)};
+  const RunSummary summary = runAndLog(request);
+  EXPECT_TRUE(summary.arrived) << summary.reason;
+  ASSERT_EQ(summary.legs.size(), 3u);
+  double distance = 0.0;
+  LossBuckets buckets;
+  for (std::size_t index = 0; index < summary.legs.size(); ++index) {
+    const GoalLeg& leg = summary.legs[index];
+    EXPECT_TRUE(leg.arrived) << "goal " << index + 1;
+    EXPECT_GT(leg.distance_m, 5.0) << "goal " << index + 1;
+    ASSERT_TRUE(leg.losses.valid) << leg.losses.problem;
+    EXPECT_NEAR(leg.losses.buckets.total(), leg.losses.excess_m, 0.01) << "goal " << index + 1;
+    distance += leg.distance_m;
+    for (int bucket = 0; bucket < kLossBucketCount; ++bucket) {
+      lossBucket(buckets, bucket) += lossBucket(leg.losses.buckets, bucket);
+    }
+  }
+  EXPECT_EQ(summary.legs[1].goal, geometry::Point(20.0, 26.0));
+  EXPECT_NEAR(distance, summary.distance_m, 1e-9);
+  EXPECT_NEAR(summary.losses.buckets.total(), buckets.total(), 1e-9);
+  EXPECT_LT(summary.goal_distance_m, request.planner.arrival_radius_m + 1e-9);
+  EXPECT_LT(summary.legs[0].distance_m, kThroughDoorwayLimitM);
+}
+
 TEST(RunnerScenario, HeavyBoxIsFoundUnpushableAndAvoided)
 {
   // The demo room with the doorway box at 2000 kg: it looks the same to the planner, so it is planned

@@ -45,7 +45,21 @@ TEST(RunnerSummaryJson, ExactLine)
       "1,"
       "\"losses\":{\"valid\":true,\"achievable_m\":21.000,\"remaining_m\":0.420,\"excess_m\":2.877,"
       "\"exploring_m\":0.500,\"attempts_m\":0.250,\"route_switches_m\":1.000,\"route_choice_m\":-0.125,"
-      "\"execution_m\":1.000,\"push_overhead_m\":0.252}}");
+      "\"execution_m\":1.000,\"push_overhead_m\":0.252},\"legs\":[]}");
+  // A leg per goal: where it was, whether it was reached, its distance, time and own account.
+  GoalLeg leg;
+  leg.goal = geometry::Point(8.0, 26.0);
+  leg.arrived = true;
+  leg.distance_m = 23.5612;
+  leg.sim_time_s = 45.8;
+  summary.legs = {leg};
+  const std::string line = summaryJson(summary);
+  EXPECT_NE(
+      line.find(
+          ",\"legs\":[{\"goal\":[8.000,26.000],\"arrived\":true,\"distance_m\":23.561,\"time_s\":45.800,"
+          "\"losses\":{\"valid\":false,\"problem\":\"\"}}]}"),
+      std::string::npos)
+      << line;
 }
 
 TEST(RunnerSummaryJson, ReasonIsEscapedAndNonFiniteIsNull)
