@@ -667,7 +667,9 @@ int main(int argc, char** argv)
     }
     for (const scenarios::ScenarioKind kind : scenarios::allKinds()) {
       const std::string kind_name = scenarios::kindName(kind);
-      errors.push_back(scenarios::writeLossPlot(rows, kind_name, plot_dir + "/losses_" + kind_name + ".png"));
+      std::string file = plot_dir;
+      file.append("/losses_").append(kind_name).append(".png");
+      errors.push_back(scenarios::writeLossPlot(rows, kind_name, file));
     }
     for (const std::string& error : errors) {
       if (!error.empty()) {
