@@ -1,5 +1,7 @@
 #include "common/command_line.hpp"
 
+#include <cmath>
+#include <cstdlib>
 #include <sstream>
 #include <string>
 
@@ -22,6 +24,51 @@ CLI::Validator atLeast(double minimum)
         return {};
       },
       "NUMBER >= " + bound);
+}
+
+std::optional<std::vector<double>> parseCommaNumbers(const std::string& text, std::size_t minimum_count,
+                                                     std::size_t maximum_count)
+{
+  std::vector<double> values;
+  std::size_t start = 0;
+  while (true) {
+    const std::size_t comma = text.find(',', start);
+    const std::string part =
+        text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    char* end = nullptr;
+    const double value = std::strtod(part.c_str(), &end);
+    if (part.empty() || *end != '\0' || !std::isfinite(value)) {
+      return std::nullopt;
+    }
+    values.push_back(value);
+    if (comma == std::string::npos) {
+      break;
+    }
+    start = comma + 1;
+  }
+  if (values.size() < minimum_count || values.size() > maximum_count) {
+    return std::nullopt;
+  }
+  return values;
+}
+
+CLI::Option* addCoordinatesOption(CLI::App& app, const std::string& name, std::vector<double>& values,
+                                  const std::string& form, std::size_t minimum_count,
+                                  std::size_t maximum_count, const std::string& description)
+{
+  const auto parse = [minimum_count, maximum_count](const std::string& text) {
+    return parseCommaNumbers(text, minimum_count, maximum_count);
+  };
+  return app
+      .add_option_function<std::string>(
+          name, [&values, parse](const std::string& text) { values = *parse(text); }, description)
+      ->check(CLI::Validator(
+          [parse, form](std::string& text) -> std::string {
+            return parse(text) ? std::string()
+                               : "expected " + form + " (numbers separated by commas), got '" + text + "'";
+          },
+          form, ""))
+      ->type_name(form);
 }
 
 std::optional<int> parseCommandLine(CLI::App& app, int argc, char** argv)

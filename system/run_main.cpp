@@ -14,11 +14,13 @@
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
 #include "common/command_line.hpp"
 #include "common/config.hpp"
+#include "common/config_search.hpp"
 #include "sim/generators/generators.hpp"
 #include "sim/importers/import_command_line.hpp"
 #include "sim/importers/world_loader.hpp"
@@ -48,32 +50,15 @@ int printConfig(const std::string& config_dir)
   }
 }
 
-/// "X,Y" as a point; nullopt when it is not two numbers separated by a comma.
-std::optional<ifar::geometry::Point> parseGoal(const std::string& text)
-{
-  const std::size_t comma = text.find(',');
-  if (comma == std::string::npos) {
-    return std::nullopt;
-  }
-  const std::string x_text = text.substr(0, comma);
-  const std::string y_text = text.substr(comma + 1);
-  char* end = nullptr;
-  const double x = std::strtod(x_text.c_str(), &end);
-  if (x_text.empty() || *end != '\0') {
-    return std::nullopt;
-  }
-  const double y = std::strtod(y_text.c_str(), &end);
-  if (y_text.empty() || *end != '\0') {
-    return std::nullopt;
-  }
-  return ifar::geometry::Point(x, y);
-}
-
-/// A world file or a map the importers read (namosim .svg, MovingAI .map, map_server .yaml), else a builtin
-/// world or a generator kind of that name. The error names the input.
+/// A world file or a map the importers read (namosim .svg, MovingAI .map, map_server .yaml), else a world
+/// of that name on the configuration search path (worlds/NAME.yaml), else a builtin world or a generator
+/// kind of that name. The error names the input.
 ifar::sim::WorldLoad loadWorld(const std::string& name, std::uint64_t seed,
                                const ifar::sim::WorldImportSettings& settings)
 {
+  if (const auto found = ifar::common::findNamedInput(name, "worlds")) {
+    return ifar::sim::loadAnyWorld(found->path, settings);
+  }
   if (!std::filesystem::exists(name)) {
     ifar::sim::WorldLoad named;
     ifar::sim::World builtin;
@@ -114,22 +99,23 @@ int main(int argc, char** argv)
       "simulated time (deterministic, faster than real time).\nExit code 0 when the vehicle arrived, 1 when "
       "it did not, 2 on bad input."};
   std::string world_name;
-  std::string goal_text;
+  std::vector<double> goal;  // X,Y, empty when not given
   double max_time_s = 300.0;
   bool no_interaction = false;
   bool json = false;
   std::string png_path;
   std::string graph_png_path;
   double graph_at_s = 0.0;
-  std::string config_dir = "config";
+  std::string config_dir;  // "" = the configuration search path alone
   app.add_option(
       "world", world_name,
-      "World file (YAML, docs/worlds.md), namosim .svg, MovingAI .map or map_server .yaml, or a builtin "
-      "(room, push_light, push_heavy, tunnel) or generated kind (room, room_objects, office, tunnel, "
-      "demo_room) when no such file exists");
+      "World file (YAML, docs/worlds.md), namosim .svg, MovingAI .map or map_server .yaml; else a world's "
+      "name in worlds/ on the configuration search path (demo_room, office, ...), a builtin (room, "
+      "push_light, push_heavy, tunnel) or a generated kind (room, room_objects, office, tunnel, demo_room)");
   ifar::sim::ImportCommandLine import_options;
   ifar::sim::addImportOptions(app, import_options);
-  app.add_option("--goal", goal_text, "Goal as X,Y in metres (default: the world's first goal)");
+  ifar::common::addCoordinatesOption(app, "--goal", goal, "X,Y", 2, 2,
+                                     "Goal in metres (default: the world's first goal)");
   app.add_option("--max-time", max_time_s, "Simulated seconds before the run counts as failed")
       ->capture_default_str();
   app.add_flag("--no-interaction", no_interaction, "FAR mode: plan without interaction edges (never push)");
@@ -155,9 +141,10 @@ int main(int argc, char** argv)
   std::string log_path;
   app.add_option("--log", log_path,
                  "Write every message the nodes exchange to this LCM log (ifar replay, ifar spy, log-info)");
-  app.add_option("--config-dir", config_dir,
-                 "Directory with vehicle.yaml, planner.yaml, executive.yaml and sim.yaml")
-      ->capture_default_str();
+  app.add_option(
+      "--config-dir", config_dir,
+      "Folder searched first for vehicle.yaml, planner.yaml, executive.yaml, sim.yaml, can.yaml and "
+      "velodyne.yaml (then IFAR_CONFIG_DIR, ~/.config/ifar, the install's share/ifar, the checkout)");
   std::string sensing;
   app.add_option("--sensing", sensing,
                  "Sensing profile of the simulator instead of sim.yaml sensing: (ideal: exact pose, lidar, "
@@ -246,25 +233,18 @@ int main(int argc, char** argv)
   ifar::sim::printImportReport(loaded, std::cerr);
   request.world = std::move(loaded.world.world());
 
-  if (goal_text.empty()) {
+  if (goal.empty()) {
     if (request.world.goals.empty()) {
       std::cerr << "error: --goal: world '" << request.world.name << "' has no goal; give --goal X,Y\n";
       return kExitBadInput;
     }
     request.goal = request.world.goals.front().position;
   } else {
-    const auto goal = parseGoal(goal_text);
-    if (!goal) {
-      std::cerr << "error: --goal: expected X,Y in metres, got '" << goal_text << "'\n";
-      return kExitBadInput;
-    }
-    if (!goal->allFinite()) {
-      std::cerr << "error: --goal: coordinates must be finite numbers, got '" << goal_text << "'\n";
-      return kExitBadInput;
-    }
-    request.goal = *goal;
+    request.goal = ifar::geometry::Point(goal[0], goal[1]);
   }
 
+  std::cerr << "configuration: " << ifar::common::describeFiles(ifar::runner::runConfigFiles(config_dir))
+            << "\n";
   std::cerr << "world '" << request.world.name << "' from " << request.world.source << ", goal ("
             << request.goal.x() << ", " << request.goal.y() << "), "
             << (request.planner.interaction_enabled ? "interaction on" : "FAR mode (no interaction)")

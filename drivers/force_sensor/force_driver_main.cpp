@@ -202,6 +202,5 @@ int main(int argc, char** argv)
 {
   return ifar::common::runDaemon(
       argc, argv,
-      {"force-driver", "Bumper force sensor driver: CAN frames to force_t", "config/can.yaml", printedConfig},
-      run);
+      {"force-driver", "Bumper force sensor driver: CAN frames to force_t", "can.yaml", printedConfig}, run);
 }

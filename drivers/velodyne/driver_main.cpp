@@ -207,7 +207,7 @@ int main(int argc, char** argv)
   return common::runDaemon(
       argc, argv,
       {"velodyne-driver", "VLP-16 driver: data packets from UDP or a pcap file onto LCM (VELODYNE_PACKET)",
-       "config/velodyne.yaml",
+       "velodyne.yaml",
        [](const common::ConfigNode& config) {
          return velodyne::driverParameters().yaml(velodyne::loadDriverSettings(config));
        }},

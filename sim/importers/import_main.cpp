@@ -11,6 +11,7 @@
 
 #include "common/command_line.hpp"
 #include "common/config.hpp"
+#include "common/config_search.hpp"
 #include "common/vehicle.hpp"
 #include "sim/importers/import_command_line.hpp"
 #include "sim/importers/world_loader.hpp"
@@ -39,7 +40,7 @@ int main(int argc, char** argv)
   app.add_option("--out", out, "world file to write (default: standard output)");
   app.add_option("--vehicle", vehicle_path, "vehicle.yaml whose width_m sets the SVG scale (default 0.7 m)");
   ifar::sim::addImportOptions(app, import_options);
-  app.add_option("--goal", goal, "grid maps: goal x y in metres")->expected(2);
+  ifar::common::addCoordinatesOption(app, "--goal", goal, "X,Y", 2, 2, "grid maps: a goal in metres");
   if (const auto exit_code = ifar::common::parseCommandLine(app, argc, argv)) {
     return *exit_code;
   }
@@ -47,7 +48,8 @@ int main(int argc, char** argv)
   ifar::common::VehicleSettings vehicle;
   if (!vehicle_path.empty()) {
     try {
-      vehicle = ifar::common::loadVehicleSettings(ifar::common::ConfigNode::loadFile(vehicle_path));
+      const ifar::common::FoundConfig found = ifar::common::resolveConfigFile(vehicle_path, "vehicle.yaml");
+      vehicle = ifar::common::loadVehicleSettings(ifar::common::ConfigNode::loadFile(found.path));
     } catch (const ifar::common::ConfigError& error) {
       std::cerr << "error: " << error.what() << "\n";
       return ifar::common::kBadInputExitCode;

@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 
 #include "common/command_line.hpp"
+#include "common/config_search.hpp"
 #include "tools/launch/launch_config.hpp"
 #include "tools/launch/supervisor.hpp"
 
@@ -19,7 +20,9 @@ int main(int argc, char** argv)
   std::string config_path;
   double duration_s = 0.0;
   bool no_colour = false;
-  app.add_option("config", config_path, "launch file, e.g. config/launch/sim_demo.yaml")->required();
+  app.add_option("config", config_path,
+                 "launch file, or its name in launch/ on the configuration search path (vehicle, sim_demo)")
+      ->required();
   app.add_option("--duration", duration_s, "stop everything after this many seconds (0 = run until Ctrl-C)")
       ->check(ifar::common::atLeast(0));
   app.add_flag("--no-colour", no_colour, "plain output even on a terminal");
@@ -29,7 +32,13 @@ int main(int argc, char** argv)
 
   ifar::launch::LaunchSpec spec;
   try {
-    spec = ifar::launch::loadLaunchSpec(ifar::common::ConfigNode::loadFile(config_path));
+    const auto found = ifar::common::findNamedInput(config_path, "launch");
+    if (!found) {
+      throw ifar::common::ConfigError(config_path + ": no such launch file here, nor launch/" + config_path +
+                                      "[.yaml] on the configuration search path");
+    }
+    std::cout << "ifar launch: " << found->path << " (" << found->origin << ")" << std::endl;
+    spec = ifar::launch::loadLaunchSpec(ifar::common::ConfigNode::loadFile(found->path));
   } catch (const ifar::common::ConfigError& error) {
     std::cerr << "ifar-launch: error: " << error.what() << std::endl;
     return 2;

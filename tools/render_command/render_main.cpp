@@ -8,6 +8,7 @@
 
 #include "common/command_line.hpp"
 #include "common/config.hpp"
+#include "common/config_search.hpp"
 #include "common/vehicle.hpp"
 #include "sim/importers/import_command_line.hpp"
 #include "sim/importers/world_loader.hpp"
@@ -25,9 +26,10 @@ int main(int argc, char** argv)
   double resolution = 0.0;
   std::string vehicle_path;
   app.add_option("WORLD", world_path,
-                 "world file (YAML, docs/worlds.md), namosim .svg, MovingAI .map or map_server .yaml")
+                 "world file (YAML, docs/worlds.md), namosim .svg, MovingAI .map or map_server .yaml, or a "
+                 "world's name in worlds/ on the configuration search path (demo_room)")
       ->required();
-  app.add_option("--out", out, "PNG to write (default: the world file's name with .png)");
+  app.add_option("--out", out, "PNG to write (default: WORLD as given, with .png for its extension)");
   app.add_option("--resolution", resolution, "metres per pixel (default 0.05, coarser for large worlds)");
   app.add_option(
       "--vehicle", vehicle_path,
@@ -42,7 +44,8 @@ int main(int argc, char** argv)
   ifar::common::VehicleSettings vehicle;
   if (!vehicle_path.empty()) {
     try {
-      vehicle = ifar::common::loadVehicleSettings(ifar::common::ConfigNode::loadFile(vehicle_path));
+      const ifar::common::FoundConfig found = ifar::common::resolveConfigFile(vehicle_path, "vehicle.yaml");
+      vehicle = ifar::common::loadVehicleSettings(ifar::common::ConfigNode::loadFile(found.path));
     } catch (const ifar::common::ConfigError& error) {
       std::cerr << "error: " << error.what() << "\n";
       return ifar::common::kBadInputExitCode;
@@ -54,7 +57,8 @@ int main(int argc, char** argv)
     std::cerr << "error: " << problem << "\n";
     return ifar::common::kBadInputExitCode;
   }
-  const ifar::sim::WorldLoad load = ifar::sim::loadAnyWorld(world_path, *settings);
+  const auto named = ifar::common::findNamedInput(world_path, "worlds");
+  const ifar::sim::WorldLoad load = ifar::sim::loadAnyWorld(named ? named->path : world_path, *settings);
   if (!load.world.ok()) {
     std::cerr << "error: " << load.world.error() << "\n";
     return ifar::common::kBadInputExitCode;

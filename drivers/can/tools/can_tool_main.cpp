@@ -1,8 +1,9 @@
-// ifar-can (run as `ifar can ...`): the CAN bus from the command line, on whichever bus config/can.yaml
+// ifar-can (run as `ifar can ...`): the CAN bus from the command line, on whichever bus can.yaml
 // (or --bus) names, so the LCM bridge and SocketCAN look the same to a person debugging.
 //   ifar can dump [-l FILE] [--count N]     print frames in candump -l format (or append them to FILE)
 //   ifar can play FILE [--speed S]          send a candump log's frames with their recorded timing
-// Both take --config FILE (default config/can.yaml), --bus socketcan|lcm, --interface, --channel,
+// Both take --config FILE (default can.yaml on the configuration search path), --bus socketcan|lcm,
+// --interface, --channel,
 // --lcm-url.
 
 #include <chrono>
@@ -10,6 +11,7 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -18,15 +20,16 @@
 
 #include "common/command_line.hpp"
 #include "common/config.hpp"
+#include "common/config_search.hpp"
 #include "drivers/can/candump_log.hpp"
 #include "drivers/can/open_bus.hpp"
 
 namespace {
 
-constexpr const char* kDefaultConfig = "config/can.yaml";
+constexpr const char* kDefaultConfig = "can.yaml";
 
 struct Options {
-  std::string config = kDefaultConfig;
+  std::string config;  // "" = kDefaultConfig on the configuration search path, when there is one
   std::string bus_kind;
   std::string interface;
   std::string channel;
@@ -47,14 +50,13 @@ std::int64_t steadyMicroseconds()
 ifar::can::BusSettings resolveBus(const Options& options)
 {
   ifar::can::BusSettings settings;
-  std::ifstream probe(options.config);
-  if (!probe && options.config != kDefaultConfig) {
-    // The default is optional (the tool runs anywhere); a file asked for by name is not.
-    throw std::invalid_argument("--config: cannot open '" + options.config + "'");
-  }
-  if (probe) {
-    const auto root = ifar::common::ConfigNode::loadFile(options.config);
-    settings = ifar::can::loadBusSettings(root);
+  // The default is optional (the tool runs anywhere); a file asked for by name is not.
+  std::optional<ifar::common::FoundConfig> found =
+      options.config.empty() ? ifar::common::ConfigSearchPath::standard().find(kDefaultConfig)
+                             : ifar::common::resolveConfigFile(options.config, kDefaultConfig);
+  if (found) {
+    std::cerr << "ifar can: configuration " << found->path << " (" << found->origin << ")\n";
+    settings = ifar::can::loadBusSettings(ifar::common::ConfigNode::loadFile(found->path));
   }
   if (!options.bus_kind.empty()) {
     if (options.bus_kind == "socketcan") {
@@ -149,8 +151,9 @@ int main(int argc, char** argv)
 {
   CLI::App app("CAN bus tool: dump frames in candump format, or play a candump log onto the bus", "ifar can");
   Options options;
-  app.add_option("--config", options.config, "can.yaml whose `bus` section is used when present")
-      ->capture_default_str();
+  app.add_option("--config", options.config,
+                 "can.yaml whose `bus` section is used (default: can.yaml on the configuration search path "
+                 "when there is one)");
   app.add_option("--bus", options.bus_kind, "socketcan or lcm (overrides the config)");
   app.add_option("--interface", options.interface, "SocketCAN interface (e.g. can0, vcan0)");
   app.add_option("--channel", options.channel, "LCM channel carrying can_frame_t (e.g. CAN_VEHICLE)");

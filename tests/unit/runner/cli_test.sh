@@ -21,11 +21,11 @@ expect_bad_input() {
 
 expect_bad_input "missing world file" "/nonexistent/world.yaml" \
   ifar-run /nonexistent/world.yaml --config-dir "$config"
-expect_bad_input "NaN goal" "--goal: coordinates must be finite" \
+expect_bad_input "NaN goal" "--goal: expected X,Y (numbers separated by commas), got 'nan,5'" \
   ifar-run "$room" --goal nan,5 --config-dir "$config"
-expect_bad_input "malformed goal" "--goal: expected X,Y" \
+expect_bad_input "malformed goal" "--goal: expected X,Y (numbers separated by commas), got '3'" \
   ifar-run "$room" --goal 3 --config-dir "$config"
-expect_bad_input "missing config directory" "/nonexistent/config/vehicle.yaml" \
+expect_bad_input "missing config directory" "--config-dir '/nonexistent/config': no such folder" \
   ifar-run "$room" --config-dir /nonexistent/config
 expect_bad_input "non-positive max time" "--max-time" \
   ifar-run "$room" --max-time 0 --config-dir "$config"
