@@ -123,3 +123,5 @@ Cflags: -I\${includedir}
 ")
   install(FILES ${CMAKE_BINARY_DIR}/pkgconfig/ifar-${name}.pc DESTINATION ${CMAKE_INSTALL_LIBDIR}/pkgconfig)
 endforeach()
+include(IfarSystemd)
+include(IfarPackage)
