@@ -1,7 +1,9 @@
 #include "common/command_line.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <iostream>
 #include <sstream>
 #include <string>
 
@@ -71,8 +73,39 @@ CLI::Option* addCoordinatesOption(CLI::App& app, const std::string& name, std::v
       ->type_name(form);
 }
 
+std::string commandName(const std::string& program)
+{
+  const std::size_t slash = program.rfind('/');
+  std::string name = slash == std::string::npos ? program : program.substr(slash + 1);
+  if (name.rfind("ifar-", 0) == 0) {
+    name[4] = ' ';
+  }
+  return name;
+}
+
+std::string firstSentence(const std::string& description)
+{
+  std::string text = description;
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  const std::size_t end = text.find(". ");
+  if (end != std::string::npos) {
+    text.resize(end);
+  }
+  if (!text.empty() && text.back() == '.') {
+    text.pop_back();
+  }
+  return text;
+}
+
 std::optional<int> parseCommandLine(CLI::App& app, int argc, char** argv)
 {
+  if (argc > 0) {
+    app.name(commandName(argv[0]));
+  }
+  if (argc == 2 && std::string(argv[1]) == "--describe") {
+    std::cout << firstSentence(app.get_description()) << std::endl;
+    return 0;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& error) {

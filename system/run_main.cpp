@@ -1,7 +1,8 @@
 // ifar-run WORLD --goal X,Y: the headless runner. The simulator and every daemon's node core in one process
 // on simulated time, deterministic and faster than real time. Progress goes to stderr about once per
 // simulated second; the summary to stdout (with --json as one JSON object on the last line).
-// Exit code 0 when the vehicle arrived, 1 when it did not, 2 on bad input (world, goal, config).
+// Exit code 0 when the vehicle arrived, 1 when it did not, 2 on bad input (world, goal, config), 3 when a
+// picture cannot be written (docs/cli.md).
 
 #include <unistd.h>
 
@@ -97,7 +98,7 @@ int main(int argc, char** argv)
   CLI::App app{
       "Headless runner: the simulator and the daemons' cores (drivers, planner, executive) in one process on "
       "simulated time (deterministic, faster than real time).\nExit code 0 when the vehicle arrived, 1 when "
-      "it did not, 2 on bad input."};
+      "it did not, 2 on bad input, 3 when a picture cannot be written."};
   std::string world_name;
   std::vector<double> goal;  // X,Y, empty when not given
   double max_time_s = 300.0;
@@ -209,7 +210,7 @@ int main(int argc, char** argv)
     if (!path.empty()) {
       if (const std::string problem = outputPathProblem(path); !problem.empty()) {
         std::cerr << "error: " << option << ": cannot write '" << path << "': " << problem << "\n";
-        return kExitBadInput;
+        return ifar::common::kOutputFailedExitCode;
       }
     }
   }
@@ -262,7 +263,7 @@ int main(int argc, char** argv)
     return kExitBadInput;
   }
 
-  bool pictures_written = true;  // a picture asked for and not written fails the run as bad input
+  bool pictures_written = true;  // a picture asked for and not written fails the run (exit 3)
   if (!png_path.empty()) {
     const std::string error =
         ifar::runner::writeRunPicture(request.world, request.vehicle, request.goal, summary, png_path);
@@ -311,7 +312,7 @@ int main(int argc, char** argv)
     }
   }
   if (!pictures_written) {
-    return kExitBadInput;
+    return ifar::common::kOutputFailedExitCode;
   }
   return summary.arrived ? kExitArrived : kExitNotArrived;
 }

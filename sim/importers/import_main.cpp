@@ -79,7 +79,7 @@ int main(int argc, char** argv)
     const auto error = ifar::sim::saveWorldFile(world, out);
     if (!error.empty()) {
       std::cerr << "error: " << error << "\n";
-      return ifar::common::kBadInputExitCode;
+      return ifar::common::kOutputFailedExitCode;
     }
     std::cerr << "wrote " << out << ": " << world.obstacles.size() << " obstacles, " << world.objects.size()
               << " movable objects, " << world.goals.size() << " goals\n";

@@ -51,7 +51,7 @@ struct Query {
   double expected = NAN;  // from the .scen file
 };
 
-constexpr int kSaveFailedExitCode = 3;
+constexpr int kSaveFailedExitCode = ifar::common::kOutputFailedExitCode;
 
 const char* boolean(bool value)
 {

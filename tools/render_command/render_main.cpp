@@ -17,8 +17,7 @@
 int main(int argc, char** argv)
 {
   CLI::App app(
-      "Draw a simulator world (walls, movable objects, start, goals) as a PNG: a world file, a namosim SVG, "
-      "a "
+      "Draws a world as a PNG: walls, movable objects, start and goals. From a world file, a namosim SVG, a "
       "MovingAI .map or a map_server .yaml",
       "ifar-render");
   std::string world_path;
@@ -85,7 +84,7 @@ int main(int argc, char** argv)
   const auto error = canvas.writePng(out);
   if (!error.empty()) {
     std::cerr << "error: " << error << "\n";
-    return 1;
+    return ifar::common::kOutputFailedExitCode;
   }
   std::cerr << "wrote " << out << " (" << canvas.widthPixels() << " x " << canvas.heightPixels()
             << " pixels, " << resolution << " m per pixel)\n";

@@ -91,7 +91,7 @@ int main(int argc, char** argv)
   ifar::lcm_log::LogReader log = ifar::lcm_log::LogReader::open(path);
   if (!log.openError().empty()) {
     std::fprintf(stderr, "ifar run-summary: error: cannot read an LCM log: %s\n", log.openError().c_str());
-    return 1;
+    return ifar::common::kBadInputExitCode;
   }
   Track truth;
   Track pose;
@@ -151,7 +151,7 @@ int main(int argc, char** argv)
     if (log.eventCount() == 0) {
       std::fprintf(stderr, "ifar run-summary: error: '%s': no LCM event could be read: %s\n", path.c_str(),
                    log.problemSummary().c_str());
-      return 1;
+      return ifar::common::kBadInputExitCode;
     }
     std::fprintf(
         stderr, "ifar run-summary: warning: '%s' is corrupt, summarised from the %llu events read: %s\n",
@@ -161,7 +161,7 @@ int main(int argc, char** argv)
   if (!track.has_position) {
     std::fprintf(stderr, "ifar run-summary: error: '%s' has neither SIM_GROUND_TRUTH nor POSE\n",
                  path.c_str());
-    return 1;
+    return ifar::common::kBadInputExitCode;
   }
   const double goal_x = goal[0];
   const double goal_y = goal[1];

@@ -95,7 +95,7 @@ int dump(ifar::can::CanBus& bus, const Options& options, const std::string& inte
     file.open(options.output, std::ios::app);
     if (!file) {
       std::cerr << "ifar can dump: cannot open '" << options.output << "' for writing\n";
-      return 1;
+      return ifar::common::kOutputFailedExitCode;
     }
   }
   std::ostream& out = options.output.empty() ? std::cout : file;
@@ -120,7 +120,7 @@ int play(ifar::can::CanBus& bus, const Options& options)
   auto opened = ifar::can::CandumpLogBus::open(options.input, "");
   if (!opened.bus) {
     std::cerr << "ifar can play: " << opened.error << "\n";
-    return 1;
+    return ifar::common::kBadInputExitCode;
   }
   std::int64_t first_log_us = -1;
   const std::int64_t start_us = steadyMicroseconds();
@@ -151,7 +151,7 @@ int play(ifar::can::CanBus& bus, const Options& options)
   if (sent == 0 && skipped > 0) {
     // Every line was bad: the file is not a candump log, and playing nothing is not a success.
     std::cerr << "ifar can play: error: no line of " << options.input << " is a candump -l frame\n";
-    return 1;
+    return ifar::common::kBadInputExitCode;
   }
   return 0;
 }

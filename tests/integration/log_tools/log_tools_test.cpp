@@ -191,7 +191,7 @@ TEST_F(LogTools, RunSummaryUsesTheEventsBeforeTheCorruptionOrFailsNamingFileAndO
 
   const std::string huge = writeLog("huge.lcmlog", hugeClaimLog());
   const ToolRun failed = run("ifar-run-summary", {huge, "--goal", "0,0", "--json"});
-  EXPECT_EQ(failed.exit_code, 1) << failed.output;
+  EXPECT_EQ(failed.exit_code, 2) << failed.output;
   EXPECT_TRUE(contains(failed.output, "error: '" + huge + "': no LCM event could be read")) << failed.output;
   EXPECT_TRUE(contains(failed.output, kHugeClaimProblem)) << failed.output;
 }
@@ -212,7 +212,7 @@ TEST_F(LogTools, RenderGraphDrawsFromTheEventsBeforeTheCorruptionOrFailsNamingFi
 
   const std::string huge = writeLog("huge.lcmlog", hugeClaimLog());
   const ToolRun failed = run("ifar-render-graph", {huge, "-o", png});
-  EXPECT_EQ(failed.exit_code, 1) << failed.output;
+  EXPECT_EQ(failed.exit_code, 2) << failed.output;
   EXPECT_TRUE(contains(failed.output, "error: " + huge + ": no LCM event could be read")) << failed.output;
   EXPECT_TRUE(contains(failed.output, kHugeClaimProblem)) << failed.output;
 }
