@@ -76,8 +76,13 @@ int run(ifar::common::DaemonContext& context, const std::string& vehicle_path,
 
   ifar::bus::RunLoop loop(context.lcm_url, context.logger);
   const auto now = [] { return ifar::common::nowMicroseconds(); };
-  ifar::bus::publishHeartbeats(loop, context.logger->name(), 1.0,
-                               [&] { return node.takeHealthProblem(now()); });
+  // What the driver waits for (the drives' heartbeats) is logged as it changes; refusals have their own log.
+  auto waiting = ifar::bus::loggedProblem([&] { return node.readinessProblem(now()); }, context.logger);
+  ifar::bus::publishHeartbeats(loop, context.logger->name(), 1.0, [&, waiting]() {
+    const std::string awaited = waiting();
+    const std::string health = node.takeHealthProblem(now());
+    return awaited.empty() ? health : health.empty() ? awaited : awaited + "; " + health;
+  });
   auto opened = ifar::can::openBus(bus_settings, loop.lcm());
   if (!opened.bus) {
     logger.error("{}", opened.error);

@@ -11,6 +11,7 @@
 #include "bus/heartbeat.hpp"
 #include "bus/run_loop.hpp"
 #include "common/daemon_main.hpp"
+#include "common/input_silence.hpp"
 #include "common/time.hpp"
 #include "drivers/velodyne/capture_points.hpp"
 #include "drivers/velodyne/driver_settings.hpp"
@@ -64,8 +65,11 @@ void publishStatus(bus::RunLoop& loop, const DriverSettings& settings, PacketFor
                forwarder.statusReport(status_clock.takeInterval(), common::nowMicroseconds()));
 }
 
+/// How long without a data packet from the sensor counts as waiting for it (a VLP-16 sends 754 a second).
+constexpr double kAwaitedPacketsS = 1.0;
+
 int runUdp(const DriverSettings& settings, bus::RunLoop& loop, PacketForwarder& forwarder,
-           spdlog::logger& logger)
+           common::InputSilence& silence, spdlog::logger& logger)
 {
   std::vector<UdpReceiver> receivers;
   receivers.emplace_back(settings.data_port, settings.bind_address,
@@ -115,8 +119,10 @@ int runUdp(const DriverSettings& settings, bus::RunLoop& loop, PacketForwarder& 
           forwarder.onOversizedDatagram(receiver.port(), datagram.wire_size, common::nowMicroseconds());
           continue;
         }
-        if (forwarder.acceptsSource(datagram.source_address, common::nowMicroseconds())) {
-          forwardDatagram(loop, forwarder, receiver.port(), datagram.payload, datagram.receive_time_us);
+        if (forwarder.acceptsSource(datagram.source_address, common::nowMicroseconds()) &&
+            forwardDatagram(loop, forwarder, receiver.port(), datagram.payload, datagram.receive_time_us) &&
+            receiver.port() == settings.data_port) {
+          silence.arrived(0, common::monotonicMicroseconds());
         }
       }
     }
@@ -218,14 +224,23 @@ int main(int argc, char** argv)
           return velodyne::writeCapturePoints(replay.pcap_path, replay.points_path, settings, context.logger);
         }
         bus::RunLoop loop(context.lcm_url, context.logger);
-        bus::publishHeartbeats(loop, context.logger->name());
+        // Live, the heartbeat and the log say when the sensor's packets do not come.
+        common::InputSilence silence(common::monotonicMicroseconds(), velodyne::kAwaitedPacketsS);
+        silence.watch(velodyne::awaitedPackets(settings));
+        const bool live = replay.pcap_path.empty();
+        bus::publishHeartbeats(loop, context.logger->name(), 1.0,
+                               bus::loggedProblem(
+                                   [&silence, live] {
+                                     return live ? silence.problem(common::monotonicMicroseconds())
+                                                 : std::string();
+                                   },
+                                   context.logger));
         velodyne::PacketForwarder forwarder(settings, context.logger);
         velodyne::StatusClock status_clock;
         loop.every(settings.status_period_s,
                    [&] { velodyne::publishStatus(loop, settings, forwarder, status_clock); });
-        const int result = replay.pcap_path.empty()
-                               ? velodyne::runUdp(settings, loop, forwarder, *context.logger)
-                               : velodyne::runPcap(replay, settings, loop, forwarder, *context.logger);
+        const int result = live ? velodyne::runUdp(settings, loop, forwarder, silence, *context.logger)
+                                : velodyne::runPcap(replay, settings, loop, forwarder, *context.logger);
         velodyne::publishStatus(loop, settings, forwarder, status_clock);
         return result;
       },
