@@ -10,6 +10,7 @@
 
 #include "bus/heartbeat.hpp"
 #include "bus/run_loop.hpp"
+#include "common/command_line.hpp"
 #include "common/daemon_main.hpp"
 #include "common/input_silence.hpp"
 #include "common/time.hpp"
@@ -136,8 +137,8 @@ int runPcap(const ReplayOptions& replay, const DriverSettings& settings, bus::Ru
 {
   PcapReader reader = PcapReader::open(replay.pcap_path);
   if (reader.error() != PcapError::kNone) {
-    logger.error("cannot replay '{}': {}", replay.pcap_path, toString(reader.error()));
-    return 1;
+    logger.error("cannot replay '{}': {}", replay.pcap_path, reader.errorText());
+    return common::kBadInputExitCode;
   }
   logger.info("replaying '{}' at {}", replay.pcap_path,
               replay.speed > 0.0 ? std::to_string(replay.speed) + "x real time" : std::string("full speed"));
@@ -245,9 +246,11 @@ int main(int argc, char** argv)
         return result;
       },
       [&replay](CLI::App& app) {
-        CLI::Option* pcap = app.add_option("--pcap", replay.pcap_path,
-                                           "replay this classic pcap file instead of listening on UDP")
-                                ->check(CLI::ExistingFile);
+        CLI::Option* pcap =
+            app.add_option("--pcap", replay.pcap_path,
+                           "replay this capture (pcap or pcapng; Ethernet, Linux cooked, raw IP "
+                           "or loopback frames) instead of listening on UDP")
+                ->check(CLI::ExistingFile);
         app.add_option(
                "--points", replay.points_path,
                "with --pcap: write the points the driver would publish (its checks and sensor_model) to "
