@@ -61,7 +61,7 @@ fi
 mkdir -p "$work/elsewhere" "$work/home"
 run_installed() { (cd "$work/elsewhere" && env -u IFAR_CONFIG_DIR -u XDG_CONFIG_HOME HOME="$work/home" "$@"); }
 status=0
-run_installed "$prefix/bin/ifar" run demo_room --json > "$work/run.out" 2> "$work/run.err" || status=$?
+run_installed "$prefix/bin/ifar" run demo_room --json --log run.lcmlog > "$work/run.out" 2> "$work/run.err" || status=$?
 if [ $status != 0 ]; then
   fail "ifar run demo_room --json exited $status: $(tail -3 "$work/run.err")"
 elif ! tail -1 "$work/run.out" | grep -q '^{"arrived":true,"reason":"arrived",'; then
@@ -72,6 +72,30 @@ elif ! grep -q "^world 'demo_room' from $prefix/share/ifar/worlds/demo_room.yaml
   fail "ifar run did not take demo_room from the install: $(head -3 "$work/run.err")"
 else
   ok "ifar run demo_room --json from $work/elsewhere: $(tail -1 "$work/run.out" | cut -c1-80)..."
+fi
+
+# ifar run-summary (what ifar demo prints) writes the same schema from the run's log: the same keys.
+status=0
+run_installed "$prefix/bin/ifar" run-summary run.lcmlog --goal 8,26 --json > "$work/summary.out" 2>&1 || status=$?
+if [ $status != 0 ]; then
+  fail "ifar run-summary --json exited $status: $(cat "$work/summary.out")"
+elif ! python3 - "$work/run.out" "$work/summary.out" <<'PY'
+import json, sys
+run = json.loads(open(sys.argv[1]).read().splitlines()[-1])
+summary = json.loads(open(sys.argv[2]).read())
+for a, b, where in [(run, summary, ""), (run["planner_frame_ms"], summary["planner_frame_ms"], "planner_frame_ms."),
+                    (run["interaction_ms"], summary["interaction_ms"], "interaction_ms.")]:
+    if list(a) != list(b):
+        sys.exit("keys differ at %s: %s / %s" % (where or "top", list(a), list(b)))
+if summary["losses"] != {"valid": False, "problem": "not computed from a log (ifar run computes it)"}:
+    sys.exit("losses: %s" % summary["losses"])
+if summary["pushes"] != run["pushes"] or abs(summary["distance_m"] - run["distance_m"]) > 0.1:
+    sys.exit("pushes or distance differ: %s / %s" % (summary, run))
+PY
+then
+  fail "ifar run-summary --json and ifar run --json differ in their schema"
+else
+  ok "ifar run-summary --json on the run's log: the schema of ifar run --json"
 fi
 
 # IFAR_CONFIG_DIR comes before the install, file by file: a planner.yaml there with a typo stops the run.
