@@ -46,10 +46,12 @@ int main(int argc, char** argv)
   }
 
   ifar::common::VehicleSettings vehicle;
+  std::string vehicle_used = "built-in vehicle";  // said with the result
   if (!vehicle_path.empty()) {
     try {
       const ifar::common::FoundConfig found = ifar::common::resolveConfigFile(vehicle_path, "vehicle.yaml");
       vehicle = ifar::common::loadVehicleSettings(ifar::common::ConfigNode::loadFile(found.path));
+      vehicle_used = "vehicle " + found.path;
     } catch (const ifar::common::ConfigError& error) {
       std::cerr << "error: " << error.what() << "\n";
       return ifar::common::kBadInputExitCode;
@@ -82,7 +84,7 @@ int main(int argc, char** argv)
       return ifar::common::kOutputFailedExitCode;
     }
     std::cerr << "wrote " << out << ": " << world.obstacles.size() << " obstacles, " << world.objects.size()
-              << " movable objects, " << world.goals.size() << " goals\n";
+              << " movable objects, " << world.goals.size() << " goals (" << vehicle_used << ")\n";
   }
   if (load.incomplete) {
     std::cerr << "warning: the world is incomplete (exit code " << kExitIncomplete << ")\n";

@@ -41,10 +41,12 @@ int main(int argc, char** argv)
   }
 
   ifar::common::VehicleSettings vehicle;
+  std::string vehicle_used = "built-in vehicle";  // said with the result
   if (!vehicle_path.empty()) {
     try {
       const ifar::common::FoundConfig found = ifar::common::resolveConfigFile(vehicle_path, "vehicle.yaml");
       vehicle = ifar::common::loadVehicleSettings(ifar::common::ConfigNode::loadFile(found.path));
+      vehicle_used = "vehicle " + found.path;
     } catch (const ifar::common::ConfigError& error) {
       std::cerr << "error: " << error.what() << "\n";
       return ifar::common::kBadInputExitCode;
@@ -87,6 +89,6 @@ int main(int argc, char** argv)
     return ifar::common::kOutputFailedExitCode;
   }
   std::cerr << "wrote " << out << " (" << canvas.widthPixels() << " x " << canvas.heightPixels()
-            << " pixels, " << resolution << " m per pixel)\n";
+            << " pixels, " << resolution << " m per pixel; " << vehicle_used << ")\n";
   return 0;
 }
