@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "bus/duplicate_process_watch.hpp"
+#include "common/input_silence.hpp"
 #include "common/time.hpp"
 #include "ifar/heartbeat_t.hpp"
 
@@ -56,6 +57,32 @@ LoopHealth withDaemonProblem(LoopHealth health, const std::string& problem)
   health.level = heartbeat_t::HEALTH_DEGRADED;
   health.message = health.message.empty() ? problem : problem + "; " + health.message;
   return health;
+}
+
+DaemonProblem loggedProblem(DaemonProblem problem, std::shared_ptr<spdlog::logger> logger, int repeat_beats)
+{
+  struct Reported {
+    std::string text;  // without durations
+    std::string last;  // as said
+    int beats_since_said = 0;
+  };
+  auto reported = std::make_shared<Reported>();
+  return [problem = std::move(problem), logger = std::move(logger), reported, repeat_beats]() {
+    std::string text = problem ? problem() : std::string();
+    const std::string stable = common::withoutDurations(text);
+    ++reported->beats_since_said;
+    if (stable != reported->text || (!text.empty() && reported->beats_since_said >= repeat_beats)) {
+      if (text.empty()) {
+        logger->info("no longer: {}", reported->last);
+      } else {
+        logger->warn("{}", text);
+      }
+      reported->text = stable;
+      reported->last = text;
+      reported->beats_since_said = 0;
+    }
+    return text;
+  };
 }
 
 void publishHeartbeats(RunLoop& loop, const std::string& process, double period_s, DaemonProblem problem)

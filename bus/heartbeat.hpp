@@ -5,7 +5,10 @@
 
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <string>
+
+#include <spdlog/spdlog.h>
 
 #include "bus/run_loop.hpp"
 
@@ -35,6 +38,12 @@ LoopHealth withDaemonProblem(LoopHealth health, const std::string& problem);
 
 /// What a daemon reports about its own job at each beat ("stale inputs: pose"); empty when it is fine.
 using DaemonProblem = std::function<std::string()>;
+
+/// `problem` that also logs what it reports, for a daemon whose heartbeat says what it waits for: a warning
+/// when a problem appears or changes (the clock in its durations aside, common::withoutDurations), again
+/// every `repeat_beats` calls while it lasts, and an info line when it clears.
+DaemonProblem loggedProblem(DaemonProblem problem, std::shared_ptr<spdlog::logger> logger,
+                            int repeat_beats = 30);
 
 /// Publishes a heartbeat_t for `process` on kHeartbeatChannel from `loop` every `period_s` seconds (the
 /// first one period after the loop starts), with this process's id and a sequence from 0; `problem`

@@ -32,24 +32,58 @@ function(ifar_target_options target)
       target_compile_options(${target} PRIVATE -fno-sanitize=vptr)
     endif()
   endif()
-  target_include_directories(${target} PUBLIC $<BUILD_INTERFACE:${CMAKE_SOURCE_DIR}>)
+  # Installed headers keep the source tree's layout under include/ifar (cmake/IfarInstall.cmake).
+  target_include_directories(${target} PUBLIC $<BUILD_INTERFACE:${CMAKE_SOURCE_DIR}>
+                                              $<INSTALL_INTERFACE:${IFAR_INSTALL_INCLUDEDIR}>)
 endfunction()
 
-# ifar_library(NAME name SOURCES ... [DEPENDS targets...] [PRIVATE_DEPENDS targets...])
+# True in `result` when the current folder ships with the install: everything but tests/, testing/ and
+# bench/ (which need the checkout and test frameworks).
+function(ifar_folder_is_installed result)
+  file(RELATIVE_PATH relative ${CMAKE_SOURCE_DIR} ${CMAKE_CURRENT_SOURCE_DIR})
+  string(REGEX MATCH "^[^/]*" top ${relative})
+  if(top IN_LIST IFAR_UNINSTALLED_FOLDERS)
+    set(${result} FALSE PARENT_SCOPE)
+  else()
+    set(${result} TRUE PARENT_SCOPE)
+  endif()
+endfunction()
+
+# Installs library `target` into the package (ifar::<name without ifar_>, cmake/IfarInstall.cmake) when its
+# folder ships; ifar_library calls it, and so does any folder that makes a library another way.
+function(ifar_install_library target)
+  ifar_folder_is_installed(installed)
+  if(NOT installed)
+    return()
+  endif()
+  string(REGEX REPLACE "^ifar_" "" export_name ${target})
+  set_target_properties(${target} PROPERTIES EXPORT_NAME ${export_name})
+  install(TARGETS ${target} EXPORT ifarTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+  set_property(GLOBAL APPEND PROPERTY IFAR_INSTALLED_LIBRARIES ${target})
+endfunction()
+
+# ifar_library(NAME name SOURCES ... [DEPENDS targets...] [PRIVATE_DEPENDS targets...]): a static library,
+# installed as ifar::<name without ifar_> when its folder ships.
 function(ifar_library)
   cmake_parse_arguments(ARG "" "NAME" "SOURCES;DEPENDS;PRIVATE_DEPENDS" ${ARGN})
   add_library(${ARG_NAME} STATIC ${ARG_SOURCES})
   ifar_target_options(${ARG_NAME})
   set_target_properties(${ARG_NAME} PROPERTIES POSITION_INDEPENDENT_CODE ON)
   target_link_libraries(${ARG_NAME} PUBLIC ${ARG_DEPENDS} PRIVATE ${ARG_PRIVATE_DEPENDS})
+  target_compile_features(${ARG_NAME} PUBLIC cxx_std_17)  # so a project using the package compiles the headers
+  ifar_install_library(${ARG_NAME})
 endfunction()
 
-# ifar_executable(NAME name SOURCES ... [DEPENDS targets...]): lands in build/bin.
+# ifar_executable(NAME name SOURCES ... [DEPENDS targets...]): lands in build/bin, and in bin/ of the install.
 function(ifar_executable)
   cmake_parse_arguments(ARG "" "NAME" "SOURCES;DEPENDS" ${ARGN})
   add_executable(${ARG_NAME} ${ARG_SOURCES})
   ifar_target_options(${ARG_NAME})
   target_link_libraries(${ARG_NAME} PRIVATE ${ARG_DEPENDS})
+  ifar_folder_is_installed(installed)
+  if(installed)
+    install(TARGETS ${ARG_NAME} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+  endif()
 endfunction()
 
 # ifar_gtest(NAME name SOURCES ... [DEPENDS targets...] [LABELS ...] [TIMEOUT s] [RUN_SERIAL])

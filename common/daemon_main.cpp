@@ -3,12 +3,14 @@
 #include <cstdlib>
 #include <exception>
 #include <iostream>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "common/command_line.hpp"
+#include "common/config_search.hpp"
 #include "common/logging.hpp"
 
 namespace ifar::common {
@@ -81,13 +83,19 @@ int runDaemon(int argc, char** argv, const DaemonDescription& description,
               const std::function<void(CLI::App&)>& add_options)
 {
   CLI::App app{description.summary, "ifar-" + description.name};
-  std::string config_path = description.default_config;
+  std::string config_path;  // "" = description.default_config on the configuration search path
   std::string log_level;
   std::string log_directory = "logs";
   std::string lcm_url;
   std::vector<std::string> settings;
   bool print_config = false;
-  app.add_option("--config", config_path, "YAML configuration file")->capture_default_str();
+  app.add_option(
+      "--config", config_path,
+      description.default_config.empty()
+          ? std::string("YAML configuration file (default: none)")
+          : "YAML configuration file (default: " + description.default_config +
+                " from IFAR_CONFIG_DIR, ~/.config/ifar, the install's share/ifar or the checkout; a "
+                "relative FILE not found here is looked up there too)");
   app.add_flag("--print-config", print_config,
                "print the effective configuration (YAML, each key's meaning as a comment) and exit");
   app.add_option("--log-level", log_level,
@@ -109,8 +117,12 @@ int runDaemon(int argc, char** argv, const DaemonDescription& description,
 
   std::shared_ptr<spdlog::logger> logger;
   try {
-    ConfigNode config = config_path.empty() ? ConfigNode::loadString("", "(no configuration file)")
-                                            : ConfigNode::loadFile(config_path);
+    std::optional<FoundConfig> found;
+    if (!config_path.empty() || !description.default_config.empty()) {
+      found = resolveConfigFile(config_path, description.default_config);
+    }
+    ConfigNode config =
+        found ? ConfigNode::loadFile(found->path) : ConfigNode::loadString("", "(no configuration file)");
     for (const std::string& assignment : settings) {
       applySetting(config, assignment);
     }
@@ -138,6 +150,9 @@ int runDaemon(int argc, char** argv, const DaemonDescription& description,
     logging.config_level = keys.log_level;
     logging.command_line_level = log_level;
     logger = makeLogger(description.name, logging);
+    if (found) {
+      logger->info("configuration {} ({})", found->path, found->origin);
+    }
     DaemonContext context{config, logger, lcm_url.empty() ? keys.lcm_url : lcm_url};
     return body(context);
   } catch (const ConfigError& error) {

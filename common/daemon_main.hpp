@@ -8,7 +8,7 @@
 // exit code 1.
 //
 //   int main(int argc, char** argv) {
-//     return ifar::common::runDaemon(argc, argv, {"planner", "DV-graph planner", "config/planner.yaml"},
+//     return ifar::common::runDaemon(argc, argv, {"planner", "DV-graph planner", "planner.yaml"},
 //                                    [](ifar::common::DaemonContext& context) {
 //                                      const auto settings = loadPlannerSettings(context.config);
 //                                      context.config.rejectUnknownKeys();
@@ -33,7 +33,7 @@ namespace ifar::common {
 struct DaemonDescription {
   std::string name;            // logger and process name, e.g. "planner"
   std::string summary;         // one line for --help
-  std::string default_config;  // path relative to the working directory; "" = config optional
+  std::string default_config;  // name on the configuration search path (config_search.hpp); "" = none
   /// For --print-config: loads the daemon's settings from its config (with every check the daemon makes)
   /// and returns them as YAML (ParameterTable::dump); log_level and lcm_url are added before it. Empty:
   /// only those two.

@@ -1,6 +1,7 @@
 #include "common/input_silence.hpp"
 
 #include <array>
+#include <cctype>
 #include <cstdio>
 #include <utility>
 
@@ -27,6 +28,31 @@ void InputSilence::arrived(std::size_t input, std::int64_t now_us)
   }
 }
 
+std::string withoutDurations(const std::string& text)
+{
+  std::string result;
+  std::size_t index = 0;
+  while (index < text.size()) {
+    std::size_t end = index;
+    while (end < text.size() &&
+           (std::isdigit(static_cast<unsigned char>(text[end])) != 0 || text[end] == '.')) {
+      ++end;
+    }
+    const bool number = end > index && std::isdigit(static_cast<unsigned char>(text[index])) != 0;
+    if (number && text.compare(end, 2, " s") == 0 &&
+        (end + 2 == text.size() || std::isalnum(static_cast<unsigned char>(text[end + 2])) == 0)) {
+      result += "N s";
+      index = end + 2;
+    } else if (end > index) {
+      result.append(text, index, end - index);
+      index = end;
+    } else {
+      result += text[index++];
+    }
+  }
+  return result;
+}
+
 std::string InputSilence::problem(std::int64_t now_us) const
 {
   std::string text;
@@ -38,12 +64,11 @@ std::string InputSilence::problem(std::int64_t now_us) const
     if (!text.empty()) {
       text += ", ";
     }
-    if (input.ever) {
-      std::array<char, 32> seconds{};
-      std::snprintf(seconds.data(), seconds.size(), "%.1f", microsecondsToSeconds(silent_us));
-      text += "no " + input.name + " for " + seconds.data() + " s";
-    } else {
-      text += "no " + input.name + " yet";
+    std::array<char, 32> seconds{};
+    std::snprintf(seconds.data(), seconds.size(), "%.1f", microsecondsToSeconds(silent_us));
+    text += "no " + input.name + " for " + seconds.data() + " s";
+    if (!input.ever) {
+      text += " (none since start)";
     }
   }
   return text;

@@ -19,7 +19,8 @@ class InputSilence {
   std::size_t watch(std::string name);
   void arrived(std::size_t input, std::int64_t now_us);
 
-  /// Each silent input, "no NAME for 3.2 s" or "no NAME yet", joined by ", "; empty when none is.
+  /// Each silent input, "no NAME for 3.2 s" (with " (none since start)" when it never arrived), joined by
+  /// ", "; empty when none is.
   std::string problem(std::int64_t now_us) const;
 
  private:
@@ -32,5 +33,9 @@ class InputSilence {
   std::int64_t limit_us_;
   std::vector<Input> inputs_;
 };
+
+/// `text` with every duration in seconds ("3.2 s") replaced by "N s": the same problem as it goes on, for
+/// telling a change of what is wrong from the clock running (a log line or a readiness summary on change).
+std::string withoutDurations(const std::string& text);
 
 }  // namespace ifar::common

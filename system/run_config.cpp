@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "common/config.hpp"
+#include "common/config_search.hpp"
 #include "common/daemon_main.hpp"
 #include "drivers/can/open_bus.hpp"
 #include "planner/interaction/interaction_settings.hpp"
@@ -14,9 +15,23 @@
 namespace ifar::runner {
 namespace {
 
+/// The configuration search path with `directory` (--config-dir; must be a folder) first; "" = the standard
+/// one.
+common::ConfigSearchPath searchPath(const std::string& directory)
+{
+  if (directory.empty()) {
+    return common::ConfigSearchPath::standard();
+  }
+  std::error_code error;
+  if (!std::filesystem::is_directory(directory, error)) {
+    throw common::ConfigError("--config-dir '" + directory + "': no such folder");
+  }
+  return common::ConfigSearchPath::standard().withFirst(directory, "--config-dir");
+}
+
 common::ConfigNode loadFrom(const std::string& directory, const std::string& file)
 {
-  return common::ConfigNode::loadFile((std::filesystem::path(directory) / file).string());
+  return common::ConfigNode::loadFile(searchPath(directory).locate(file).path);
 }
 
 void loadPlanner(const std::string& config_directory, RunRequest& request)
@@ -100,8 +115,8 @@ std::string canYaml(const std::string& directory, const RunRequest& request)
 std::string runConfigYaml(const std::string& config_directory)
 {
   const RunRequest request = loadRunSettings(config_directory);
-  std::string text = "# ifar run: effective configuration from " + config_directory + "\n";
-  text += "--- # " + (std::filesystem::path(config_directory) / "vehicle.yaml").string() + "\n" +
+  std::string text = "# ifar run: effective configuration\n";
+  text += "--- # " + loadFrom(config_directory, "vehicle.yaml").sourceName() + "\n" +
           common::vehicleParameters().yaml(request.vehicle);
   planner::PlannerConfig planner{request.planner, request.planner_node};
   text += document(config_directory, "planner.yaml", planner::plannerConfigYaml(planner));
@@ -113,6 +128,17 @@ std::string runConfigYaml(const std::string& config_directory)
   text += document(config_directory, "can.yaml", canYaml(config_directory, request));
   text += document(config_directory, "velodyne.yaml", velodyne::driverParameters().yaml(request.velodyne));
   return text;
+}
+
+std::vector<common::FoundConfig> runConfigFiles(const std::string& config_directory)
+{
+  std::vector<common::FoundConfig> files;
+  const common::ConfigSearchPath search = searchPath(config_directory);
+  for (const char* name :
+       {"vehicle.yaml", "planner.yaml", "executive.yaml", "sim.yaml", "can.yaml", "velodyne.yaml"}) {
+    files.push_back(search.locate(name));
+  }
+  return files;
 }
 
 std::vector<std::string> sensingProfileNames()

@@ -1,7 +1,8 @@
 // ifar-run WORLD --goal X,Y: the headless runner. The simulator and every daemon's node core in one process
 // on simulated time, deterministic and faster than real time. Progress goes to stderr about once per
 // simulated second; the summary to stdout (with --json as one JSON object on the last line).
-// Exit code 0 when the vehicle arrived, 1 when it did not, 2 on bad input (world, goal, config).
+// Exit code 0 when the vehicle arrived, 1 when it did not, 2 on bad input (world, goal, config), 3 when a
+// picture cannot be written (docs/cli.md).
 
 #include <unistd.h>
 
@@ -14,11 +15,13 @@
 #include <stdexcept>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
 #include "common/command_line.hpp"
 #include "common/config.hpp"
+#include "common/config_search.hpp"
 #include "sim/generators/generators.hpp"
 #include "sim/importers/import_command_line.hpp"
 #include "sim/importers/world_loader.hpp"
@@ -48,32 +51,15 @@ int printConfig(const std::string& config_dir)
   }
 }
 
-/// "X,Y" as a point; nullopt when it is not two numbers separated by a comma.
-std::optional<ifar::geometry::Point> parseGoal(const std::string& text)
-{
-  const std::size_t comma = text.find(',');
-  if (comma == std::string::npos) {
-    return std::nullopt;
-  }
-  const std::string x_text = text.substr(0, comma);
-  const std::string y_text = text.substr(comma + 1);
-  char* end = nullptr;
-  const double x = std::strtod(x_text.c_str(), &end);
-  if (x_text.empty() || *end != '\0') {
-    return std::nullopt;
-  }
-  const double y = std::strtod(y_text.c_str(), &end);
-  if (y_text.empty() || *end != '\0') {
-    return std::nullopt;
-  }
-  return ifar::geometry::Point(x, y);
-}
-
-/// A world file or a map the importers read (namosim .svg, MovingAI .map, map_server .yaml), else a builtin
-/// world or a generator kind of that name. The error names the input.
+/// A world file or a map the importers read (namosim .svg, MovingAI .map, map_server .yaml), else a world
+/// of that name on the configuration search path (worlds/NAME.yaml), else a builtin world or a generator
+/// kind of that name. The error names the input.
 ifar::sim::WorldLoad loadWorld(const std::string& name, std::uint64_t seed,
                                const ifar::sim::WorldImportSettings& settings)
 {
+  if (const auto found = ifar::common::findNamedInput(name, "worlds")) {
+    return ifar::sim::loadAnyWorld(found->path, settings);
+  }
   if (!std::filesystem::exists(name)) {
     ifar::sim::WorldLoad named;
     ifar::sim::World builtin;
@@ -112,24 +98,25 @@ int main(int argc, char** argv)
   CLI::App app{
       "Headless runner: the simulator and the daemons' cores (drivers, planner, executive) in one process on "
       "simulated time (deterministic, faster than real time).\nExit code 0 when the vehicle arrived, 1 when "
-      "it did not, 2 on bad input."};
+      "it did not, 2 on bad input, 3 when a picture cannot be written."};
   std::string world_name;
-  std::string goal_text;
+  std::vector<double> goal;  // X,Y, empty when not given
   double max_time_s = 300.0;
   bool no_interaction = false;
   bool json = false;
   std::string png_path;
   std::string graph_png_path;
   double graph_at_s = 0.0;
-  std::string config_dir = "config";
+  std::string config_dir;  // "" = the configuration search path alone
   app.add_option(
       "world", world_name,
-      "World file (YAML, docs/worlds.md), namosim .svg, MovingAI .map or map_server .yaml, or a builtin "
-      "(room, push_light, push_heavy, tunnel) or generated kind (room, room_objects, office, tunnel, "
-      "demo_room) when no such file exists");
+      "World file (YAML, docs/worlds.md), namosim .svg, MovingAI .map or map_server .yaml; else a world's "
+      "name in worlds/ on the configuration search path (demo_room, office, ...), a builtin (room, "
+      "push_light, push_heavy, tunnel) or a generated kind (room, room_objects, office, tunnel, demo_room)");
   ifar::sim::ImportCommandLine import_options;
   ifar::sim::addImportOptions(app, import_options);
-  app.add_option("--goal", goal_text, "Goal as X,Y in metres (default: the world's first goal)");
+  ifar::common::addCoordinatesOption(app, "--goal", goal, "X,Y", 2, 2,
+                                     "Goal in metres (default: the world's first goal)");
   bool all_goals = false;
   app.add_flag(
       "--all-goals", all_goals,
@@ -160,9 +147,10 @@ int main(int argc, char** argv)
   std::string log_path;
   app.add_option("--log", log_path,
                  "Write every message the nodes exchange to this LCM log (ifar replay, ifar spy, log-info)");
-  app.add_option("--config-dir", config_dir,
-                 "Directory with vehicle.yaml, planner.yaml, executive.yaml and sim.yaml")
-      ->capture_default_str();
+  app.add_option(
+      "--config-dir", config_dir,
+      "Folder searched first for vehicle.yaml, planner.yaml, executive.yaml, sim.yaml, can.yaml and "
+      "velodyne.yaml (then IFAR_CONFIG_DIR, ~/.config/ifar, the install's share/ifar, the checkout)");
   std::string sensing;
   app.add_option("--sensing", sensing,
                  "Sensing profile of the simulator instead of sim.yaml sensing: (ideal: exact pose, lidar, "
@@ -227,7 +215,7 @@ int main(int argc, char** argv)
     if (!path.empty()) {
       if (const std::string problem = outputPathProblem(path); !problem.empty()) {
         std::cerr << "error: " << option << ": cannot write '" << path << "': " << problem << "\n";
-        return kExitBadInput;
+        return ifar::common::kOutputFailedExitCode;
       }
     }
   }
@@ -251,11 +239,11 @@ int main(int argc, char** argv)
   ifar::sim::printImportReport(loaded, std::cerr);
   request.world = std::move(loaded.world.world());
 
-  if (all_goals && !goal_text.empty()) {
+  if (all_goals && !goal.empty()) {
     std::cerr << "error: --all-goals drives the world's goals: give --goal or --all-goals, not both\n";
     return kExitBadInput;
   }
-  if (goal_text.empty()) {
+  if (goal.empty()) {
     if (request.world.goals.empty()) {
       std::cerr << "error: --goal: world '" << request.world.name << "' has no goal; give --goal X,Y\n";
       return kExitBadInput;
@@ -265,18 +253,11 @@ int main(int argc, char** argv)
       request.further_goals.push_back(request.world.goals[index].position);
     }
   } else {
-    const auto goal = parseGoal(goal_text);
-    if (!goal) {
-      std::cerr << "error: --goal: expected X,Y in metres, got '" << goal_text << "'\n";
-      return kExitBadInput;
-    }
-    if (!goal->allFinite()) {
-      std::cerr << "error: --goal: coordinates must be finite numbers, got '" << goal_text << "'\n";
-      return kExitBadInput;
-    }
-    request.goal = *goal;
+    request.goal = ifar::geometry::Point(goal[0], goal[1]);
   }
 
+  std::cerr << "configuration: " << ifar::common::describeFiles(ifar::runner::runConfigFiles(config_dir))
+            << "\n";
   std::cerr << "world '" << request.world.name << "' from " << request.world.source << ", goal ("
             << request.goal.x() << ", " << request.goal.y() << ")"
             << (request.further_goals.empty()
@@ -297,7 +278,7 @@ int main(int argc, char** argv)
     return kExitBadInput;
   }
 
-  bool pictures_written = true;  // a picture asked for and not written fails the run as bad input
+  bool pictures_written = true;  // a picture asked for and not written fails the run (exit 3)
   if (!png_path.empty()) {
     const std::string error =
         ifar::runner::writeRunPicture(request.world, request.vehicle, request.goal, summary, png_path);
@@ -355,7 +336,7 @@ int main(int argc, char** argv)
     }
   }
   if (!pictures_written) {
-    return kExitBadInput;
+    return ifar::common::kOutputFailedExitCode;
   }
   return summary.arrived ? kExitArrived : kExitNotArrived;
 }

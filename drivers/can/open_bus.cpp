@@ -32,6 +32,12 @@ const common::ParameterTable<BusSettings>& busParameters()
               "log")
           .required()
           .add("interface", &S::interface, "", Range::any(), "socketcan: the interface")
+          .add("bitrate", &S::bitrate, "bit/s", Range::between(10000, 1000000),
+               "socketcan: the bus bit rate, set by `ifar can up` (the ifar-can systemd unit) when it brings "
+               "the interface up; the drives and the force sensor use the same")
+          .add("restart_ms", &S::restart_ms, "ms", Range::between(0, 60000),
+               "socketcan: the kernel restarts a bus-off controller after this long (ifar can up); 0 = it "
+               "stays off until brought up again")
           .add("lcm_channel", &S::lcm_channel, "", Range::any(),
                "lcm: channel carrying the bus as can_frame_t")
           .add("candump_input", &S::candump_input, "", Range::any(),

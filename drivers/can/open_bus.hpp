@@ -3,11 +3,14 @@
 //   bus:
 //     kind: socketcan          # socketcan | lcm | candump
 //     interface: can0          # socketcan: the interface
+//     bitrate: 500000          # socketcan: bit/s (ifar can up brings the interface up with it)
+//     restart_ms: 100          # socketcan: bus-off recovery
 //     lcm_channel: CAN_VEHICLE # lcm: the can_frame_t channel
 //     candump_input: ""        # candump: log to replay
 //     candump_output: ""       # candump: log to append sent frames to
 // Part of ifar_can_lcm_bridge (it can open the LCM bridge), so daemons only.
 
+#include <cstdint>
 #include <memory>
 #include <string>
 
@@ -25,6 +28,8 @@ const char* toString(BusKind kind);
 struct BusSettings {
   BusKind kind = BusKind::kLcm;
   std::string interface = "can0";
+  std::int64_t bitrate = 500000;  // socketcan: bit/s the interface is brought up with (ifar can up)
+  std::int64_t restart_ms = 100;  // socketcan: bus-off recovery after this long; 0 = stay off
   std::string lcm_channel = "CAN_VEHICLE";
   std::string candump_input;
   std::string candump_output;

@@ -10,6 +10,7 @@
 #include "bus/heartbeat.hpp"
 #include "bus/run_loop.hpp"
 #include "common/daemon_main.hpp"
+#include "common/input_silence.hpp"
 #include "common/rate_limiter.hpp"
 #include "common/time.hpp"
 #include "drivers/can/error_frame.hpp"
@@ -21,6 +22,9 @@
 #include "ifar/can_bus_status_t.hpp"
 
 namespace {
+
+/// How long without a valid force frame counts as waiting for the sensor.
+constexpr double kAwaitedFramesS = 1.0;
 
 struct DriverSettings {
   ifar::can::BusSettings bus;
@@ -89,13 +93,19 @@ int run(ifar::common::DaemonContext& context)
   auto& logger = *context.logger;
 
   ifar::bus::RunLoop loop(context.lcm_url, context.logger);
-  ifar::bus::publishHeartbeats(loop, context.logger->name());
   auto opened = ifar::can::openBus(settings.bus, loop.lcm());
   if (!opened.bus) {
     logger.error("{}", opened.error);
     return 1;
   }
   ifar::can::CanBus& bus = *opened.bus;
+  // The heartbeat and the log say when the sensor's frames do not come (it sends 100 a second).
+  ifar::common::InputSilence silence(ifar::common::monotonicMicroseconds(), kAwaitedFramesS);
+  silence.watch(fmt::format("force frames (id 0x{:03X}) on {}", settings.monitor.frame_id, bus.name()));
+  ifar::bus::publishHeartbeats(
+      loop, context.logger->name(), 1.0,
+      ifar::bus::loggedProblem([&silence] { return silence.problem(ifar::common::monotonicMicroseconds()); },
+                               context.logger));
   logger.info("force sensor id 0x{:03X} on {} ({})", settings.monitor.frame_id, bus.name(),
               ifar::can::toString(settings.bus.kind));
   const bool republish_raw = settings.bus.kind != ifar::can::BusKind::kLcm;
@@ -128,6 +138,7 @@ int run(ifar::common::DaemonContext& context)
     }
     if (const auto force = node.onFrame(frame, now_us)) {
       loop.publish(settings.force_channel, *force);
+      silence.arrived(0, ifar::common::monotonicMicroseconds());
     }
   };
 
@@ -202,6 +213,5 @@ int main(int argc, char** argv)
 {
   return ifar::common::runDaemon(
       argc, argv,
-      {"force-driver", "Bumper force sensor driver: CAN frames to force_t", "config/can.yaml", printedConfig},
-      run);
+      {"force-driver", "Bumper force sensor driver: CAN frames to force_t", "can.yaml", printedConfig}, run);
 }

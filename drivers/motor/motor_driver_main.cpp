@@ -14,6 +14,7 @@
 
 #include "bus/heartbeat.hpp"
 #include "bus/run_loop.hpp"
+#include "common/config_search.hpp"
 #include "common/daemon_main.hpp"
 #include "common/rate_limiter.hpp"
 #include "common/time.hpp"
@@ -49,11 +50,12 @@ std::string printedConfig(const ifar::common::ConfigNode& root)
 int run(ifar::common::DaemonContext& context, const std::string& vehicle_path,
         const std::string& command_channel)
 {
-  // vehicle.yaml sits beside the config file unless --vehicle names another.
+  // vehicle.yaml beside the config file (else on the search path) unless --vehicle names another.
   const std::string vehicle_file =
       !vehicle_path.empty()
           ? vehicle_path
-          : (std::filesystem::path(context.config.sourceName()).parent_path() / "vehicle.yaml").string();
+          : ifar::common::resolveReferencedFile("vehicle.yaml", context.config.sourceName()).path;
+  context.logger->info("vehicle {}", vehicle_file);
   const auto bus_settings = ifar::can::loadBusSettings(context.config);
   // The force sensor's section of the shared file belongs to ifar-force-driver; when there is one, it is
   // checked here too: one can.yaml stops both or neither.
@@ -74,8 +76,13 @@ int run(ifar::common::DaemonContext& context, const std::string& vehicle_path,
 
   ifar::bus::RunLoop loop(context.lcm_url, context.logger);
   const auto now = [] { return ifar::common::nowMicroseconds(); };
-  ifar::bus::publishHeartbeats(loop, context.logger->name(), 1.0,
-                               [&] { return node.takeHealthProblem(now()); });
+  // What the driver waits for (the drives' heartbeats) is logged as it changes; refusals have their own log.
+  auto waiting = ifar::bus::loggedProblem([&] { return node.readinessProblem(now()); }, context.logger);
+  ifar::bus::publishHeartbeats(loop, context.logger->name(), 1.0, [&, waiting]() {
+    const std::string awaited = waiting();
+    const std::string health = node.takeHealthProblem(now());
+    return awaited.empty() ? health : health.empty() ? awaited : awaited + "; " + health;
+  });
   auto opened = ifar::can::openBus(bus_settings, loop.lcm());
   if (!opened.bus) {
     logger.error("{}", opened.error);
@@ -155,11 +162,13 @@ int main(int argc, char** argv)
   return ifar::common::runDaemon(
       argc, argv,
       {"motor-driver", "Wheel drives over CANopen CiA 402: VELOCITY_CMD in, MOTOR_STATUS and ODOMETRY out",
-       "config/can.yaml", printedConfig},
+       "can.yaml", printedConfig},
       [&](ifar::common::DaemonContext& context) { return run(context, vehicle_path, command_channel); },
       [&](CLI::App& app) {
         app.add_option("--vehicle", vehicle_path,
-                       "vehicle description (wheel track and radius); default: vehicle.yaml beside --config");
+                       "vehicle description (wheel track and radius); default: vehicle.yaml beside --config, "
+                       "else on the "
+                       "configuration search path");
         app.add_option("--command-channel", command_channel, "velocity_cmd_t channel")->capture_default_str();
       });
 }

@@ -174,6 +174,23 @@ std::optional<std::string> MotorDriverNode::takeRefusalReport(std::int64_t now_u
   return report;
 }
 
+std::string MotorDriverNode::readinessProblem(std::int64_t now_us) const
+{
+  std::string problem;
+  const auto add = [&problem](const std::string& text) { problem += (problem.empty() ? "" : "; ") + text; };
+  for (const MotorStatus& status : {drive_.leftStatus(now_us), drive_.rightStatus(now_us)}) {
+    const std::string drive = "drive " + std::to_string(status.node_id);
+    if (!status.heartbeat_ok) {
+      add(status.nmt_state ? drive + " heartbeat lost" : "no heartbeat from " + drive + " since start");
+    } else if (status.fault_latched) {
+      char code[16];
+      std::snprintf(code, sizeof(code), "0x%04X", static_cast<unsigned>(status.emergency_code));
+      add(drive + " fault, EMCY " + code);
+    }
+  }
+  return problem;
+}
+
 std::string MotorDriverNode::takeHealthProblem(std::int64_t now_us)
 {
   std::string problem;

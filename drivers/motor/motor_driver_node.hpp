@@ -85,6 +85,10 @@ class MotorDriverNode {
   /// For the daemon's heartbeat, asked once a beat: what is wrong now (a drive configuration failure)
   /// or since the previous call (refused commands); empty when nothing is.
   std::string takeHealthProblem(std::int64_t now_us);
+  /// What the driver waits for, for its heartbeat and log at start-up and after a fault: each drive whose
+  /// heartbeat is missing ("drive 1 heartbeat lost", "no heartbeat from drive 2 since start") or that
+  /// holds a fault ("drive 1 fault, EMCY 0x8130"), joined by "; "; empty when both can run.
+  std::string readinessProblem(std::int64_t now_us) const;
 
   /// The limits in force: body speeds and accelerations, and per wheel in drive units.
   const VelocityLimits& limits() const { return limits_; }

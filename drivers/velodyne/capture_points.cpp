@@ -2,6 +2,7 @@
 
 #include <vector>
 
+#include "common/command_line.hpp"
 #include "drivers/velodyne/packet_decoder.hpp"
 #include "drivers/velodyne/pcap_reader.hpp"
 #include "drivers/velodyne/point_file.hpp"
@@ -26,13 +27,13 @@ int writeCapturePoints(const std::string& pcap_path, const std::string& out_path
 {
   PcapReader reader = PcapReader::open(pcap_path);
   if (reader.error() != PcapError::kNone) {
-    logger->error("cannot read '{}': {}", pcap_path, toString(reader.error()));
-    return 1;
+    logger->error("cannot read '{}': {}", pcap_path, reader.errorText());
+    return common::kBadInputExitCode;
   }
   PointFileWriter writer(out_path);
   if (!writer.error().empty()) {
     logger->error("{}", writer.error());
-    return 1;
+    return common::kOutputFailedExitCode;
   }
   PacketForwarder forwarder(settings, logger);
   CaptureCounts counts;
@@ -62,7 +63,7 @@ int writeCapturePoints(const std::string& pcap_path, const std::string& out_path
   }
   if (!writer.finish()) {
     logger->error("{}", writer.error());
-    return 1;
+    return common::kOutputFailedExitCode;
   }
   if (counts.published == 0) {
     logger->error("{}", nothingToPublishMessage(pcap_path, counts, forwarder, settings.data_port));

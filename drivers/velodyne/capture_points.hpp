@@ -29,7 +29,8 @@ std::string nothingToPublishMessage(const std::string& pcap_path, const CaptureC
 /// Decodes every data packet of `pcap_path` that the driver would publish under `settings` (the same
 /// checks, sensor_model included) and writes the points to `out_path` (.csv or .pcd, see point_file.hpp).
 /// Refused packets are counted and logged as in the driver. Returns the exit code: 0 when points were
-/// written, 1 when a file cannot be read or written or the capture gives no packet to publish (logged).
+/// written, 1 when the capture gives no packet to publish, 2 when it cannot be read, 3 when the points
+/// cannot be written (each logged).
 /// `logger` must not be null.
 int writeCapturePoints(const std::string& pcap_path, const std::string& out_path,
                        const DriverSettings& settings, const std::shared_ptr<spdlog::logger>& logger);

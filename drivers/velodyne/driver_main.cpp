@@ -10,7 +10,9 @@
 
 #include "bus/heartbeat.hpp"
 #include "bus/run_loop.hpp"
+#include "common/command_line.hpp"
 #include "common/daemon_main.hpp"
+#include "common/input_silence.hpp"
 #include "common/time.hpp"
 #include "drivers/velodyne/capture_points.hpp"
 #include "drivers/velodyne/driver_settings.hpp"
@@ -64,8 +66,11 @@ void publishStatus(bus::RunLoop& loop, const DriverSettings& settings, PacketFor
                forwarder.statusReport(status_clock.takeInterval(), common::nowMicroseconds()));
 }
 
+/// How long without a data packet from the sensor counts as waiting for it (a VLP-16 sends 754 a second).
+constexpr double kAwaitedPacketsS = 1.0;
+
 int runUdp(const DriverSettings& settings, bus::RunLoop& loop, PacketForwarder& forwarder,
-           spdlog::logger& logger)
+           common::InputSilence& silence, spdlog::logger& logger)
 {
   std::vector<UdpReceiver> receivers;
   receivers.emplace_back(settings.data_port, settings.bind_address,
@@ -115,8 +120,10 @@ int runUdp(const DriverSettings& settings, bus::RunLoop& loop, PacketForwarder& 
           forwarder.onOversizedDatagram(receiver.port(), datagram.wire_size, common::nowMicroseconds());
           continue;
         }
-        if (forwarder.acceptsSource(datagram.source_address, common::nowMicroseconds())) {
-          forwardDatagram(loop, forwarder, receiver.port(), datagram.payload, datagram.receive_time_us);
+        if (forwarder.acceptsSource(datagram.source_address, common::nowMicroseconds()) &&
+            forwardDatagram(loop, forwarder, receiver.port(), datagram.payload, datagram.receive_time_us) &&
+            receiver.port() == settings.data_port) {
+          silence.arrived(0, common::monotonicMicroseconds());
         }
       }
     }
@@ -130,8 +137,8 @@ int runPcap(const ReplayOptions& replay, const DriverSettings& settings, bus::Ru
 {
   PcapReader reader = PcapReader::open(replay.pcap_path);
   if (reader.error() != PcapError::kNone) {
-    logger.error("cannot replay '{}': {}", replay.pcap_path, toString(reader.error()));
-    return 1;
+    logger.error("cannot replay '{}': {}", replay.pcap_path, reader.errorText());
+    return common::kBadInputExitCode;
   }
   logger.info("replaying '{}' at {}", replay.pcap_path,
               replay.speed > 0.0 ? std::to_string(replay.speed) + "x real time" : std::string("full speed"));
@@ -207,7 +214,7 @@ int main(int argc, char** argv)
   return common::runDaemon(
       argc, argv,
       {"velodyne-driver", "VLP-16 driver: data packets from UDP or a pcap file onto LCM (VELODYNE_PACKET)",
-       "config/velodyne.yaml",
+       "velodyne.yaml",
        [](const common::ConfigNode& config) {
          return velodyne::driverParameters().yaml(velodyne::loadDriverSettings(config));
        }},
@@ -218,21 +225,32 @@ int main(int argc, char** argv)
           return velodyne::writeCapturePoints(replay.pcap_path, replay.points_path, settings, context.logger);
         }
         bus::RunLoop loop(context.lcm_url, context.logger);
-        bus::publishHeartbeats(loop, context.logger->name());
+        // Live, the heartbeat and the log say when the sensor's packets do not come.
+        common::InputSilence silence(common::monotonicMicroseconds(), velodyne::kAwaitedPacketsS);
+        silence.watch(velodyne::awaitedPackets(settings));
+        const bool live = replay.pcap_path.empty();
+        bus::publishHeartbeats(loop, context.logger->name(), 1.0,
+                               bus::loggedProblem(
+                                   [&silence, live] {
+                                     return live ? silence.problem(common::monotonicMicroseconds())
+                                                 : std::string();
+                                   },
+                                   context.logger));
         velodyne::PacketForwarder forwarder(settings, context.logger);
         velodyne::StatusClock status_clock;
         loop.every(settings.status_period_s,
                    [&] { velodyne::publishStatus(loop, settings, forwarder, status_clock); });
-        const int result = replay.pcap_path.empty()
-                               ? velodyne::runUdp(settings, loop, forwarder, *context.logger)
-                               : velodyne::runPcap(replay, settings, loop, forwarder, *context.logger);
+        const int result = live ? velodyne::runUdp(settings, loop, forwarder, silence, *context.logger)
+                                : velodyne::runPcap(replay, settings, loop, forwarder, *context.logger);
         velodyne::publishStatus(loop, settings, forwarder, status_clock);
         return result;
       },
       [&replay](CLI::App& app) {
-        CLI::Option* pcap = app.add_option("--pcap", replay.pcap_path,
-                                           "replay this classic pcap file instead of listening on UDP")
-                                ->check(CLI::ExistingFile);
+        CLI::Option* pcap =
+            app.add_option("--pcap", replay.pcap_path,
+                           "replay this capture (pcap or pcapng; Ethernet, Linux cooked, raw IP "
+                           "or loopback frames) instead of listening on UDP")
+                ->check(CLI::ExistingFile);
         app.add_option(
                "--points", replay.points_path,
                "with --pcap: write the points the driver would publish (its checks and sensor_model) to "

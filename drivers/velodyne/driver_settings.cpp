@@ -54,4 +54,11 @@ DriverSettings loadDriverSettings(const common::ConfigNode& node)
   return settings;
 }
 
+std::string awaitedPackets(const DriverSettings& settings)
+{
+  const std::string port = std::to_string(settings.data_port);
+  return settings.sensor_address.empty() ? "lidar packets on port " + port
+                                         : "lidar packets from " + settings.sensor_address + ":" + port;
+}
+
 }  // namespace ifar::velodyne

@@ -32,4 +32,8 @@ const common::ParameterTable<DriverSettings>& driverParameters();
 /// key for a wrong type or a value out of range (ports 1..65535, positive periods).
 DriverSettings loadDriverSettings(const common::ConfigNode& node);
 
+/// What the driver waits for, as its heartbeat names it: "lidar packets from 192.168.1.201:2368", or
+/// "lidar packets on port 2368" when any source is taken.
+std::string awaitedPackets(const DriverSettings& settings);
+
 }  // namespace ifar::velodyne

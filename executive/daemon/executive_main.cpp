@@ -10,6 +10,7 @@
 
 #include "bus/heartbeat.hpp"
 #include "bus/run_loop.hpp"
+#include "common/config_search.hpp"
 #include "common/daemon_main.hpp"
 #include "common/time.hpp"
 #include "common/vehicle.hpp"
@@ -41,11 +42,12 @@ int runExecutive(ifar::common::DaemonContext& context, const std::string& vehicl
   const ifar::executive::ObstacleSettings obstacles =
       ifar::executive::loadObstacleSettings(context.config.child("obstacles"));
   const ifar::executive::ExecutiveSettings settings = ifar::executive::loadExecutiveSettings(context.config);
-  // Without --vehicle, vehicle.yaml is taken from beside the executive's config file.
+  // Without --vehicle, vehicle.yaml is taken from beside the executive's config file, else the search path.
   const std::string vehicle_file =
       vehicle_path.empty()
-          ? (std::filesystem::path(context.config.sourceName()).parent_path() / "vehicle.yaml").string()
+          ? ifar::common::resolveReferencedFile("vehicle.yaml", context.config.sourceName()).path
           : vehicle_path;
+  context.logger->info("vehicle {}", vehicle_file);
   const ifar::common::VehicleSettings vehicle =
       ifar::common::loadVehicleSettings(ifar::common::ConfigNode::loadFile(vehicle_file));
 
@@ -69,7 +71,7 @@ int main(int argc, char** argv)
   return ifar::common::runDaemon(
       argc, argv,
       {"executive", "Executes GLOBAL_PATH: follows, pushes, adapts from touch, stops on stale input",
-       "config/executive.yaml",
+       "executive.yaml",
        [](const ifar::common::ConfigNode& config) {
          const auto obstacles = ifar::executive::loadObstacleSettings(config.child("obstacles"));
          ifar::common::ConfigDump dump;
@@ -81,6 +83,7 @@ int main(int argc, char** argv)
       [&vehicle_path](ifar::common::DaemonContext& context) { return runExecutive(context, vehicle_path); },
       [&vehicle_path](CLI::App& app) {
         app.add_option("--vehicle", vehicle_path,
-                       "vehicle description (default: vehicle.yaml beside --config)");
+                       "vehicle description (default: vehicle.yaml beside --config, else on the "
+                       "configuration search path)");
       });
 }

@@ -8,6 +8,7 @@
 
 #include "bus/heartbeat.hpp"
 #include "bus/run_loop.hpp"
+#include "common/config_search.hpp"
 #include "common/daemon_main.hpp"
 #include "common/vehicle.hpp"
 #include "planner/core/planner.hpp"
@@ -23,8 +24,11 @@ int runPlanner(common::DaemonContext& context)
   const PlannerConfig loaded = loadPlannerConfig(config);
   PlannerSettings settings = loaded.planner;
   const NodeSettings& node_settings = loaded.node;
-  settings.vehicle = common::loadVehicleSettings(common::ConfigNode::loadFile(node_settings.vehicle_config));
+  const std::string vehicle_file =
+      common::resolveReferencedFile(node_settings.vehicle_config, config.sourceName()).path;
+  settings.vehicle = common::loadVehicleSettings(common::ConfigNode::loadFile(vehicle_file));
   const auto& logger = context.logger;
+  logger->info("vehicle {}", vehicle_file);
 
   Planner planner(settings);
   if (!node_settings.prior_graph.empty()) {
@@ -62,7 +66,7 @@ int main(int argc, char** argv)
       {"planner",
        "DV-graph planner: VELODYNE_PACKET, POSE, GOAL in; DV_GRAPH, "
        "GLOBAL_PATH, PLANNER_STATUS out",
-       "config/planner.yaml",
+       "planner.yaml",
        [](const ifar::common::ConfigNode& config) {
          return ifar::planner::plannerConfigYaml(ifar::planner::loadPlannerConfig(config));
        }},

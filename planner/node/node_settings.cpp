@@ -27,7 +27,8 @@ common::ParameterTable<NodeSettings> makeNodeParameters()
   auto table =
       common::ParameterTable<S>()
           .add("vehicle_config", &S::vehicle_config, "", Range::nonEmpty(),
-               "vehicle dimensions, lidar mount and filter, relative to the working directory")
+               "vehicle dimensions, lidar mount and filter; a relative path is beside this file, else on the "
+               "configuration search path")
           .add("daemon.rate_hz", &S::rate_hz, "Hz", Range::positive(),
                "graph updates and publications per second")
           .add("daemon.path_resend_hz", &S::path_resend_hz, "Hz", Range::positive(),

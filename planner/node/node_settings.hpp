@@ -30,8 +30,8 @@ struct NodeSettings {
   InputSettings input;              // stale and future limits for packets and poses
   double detector_max_age_s = 1.0;  // detector outlines older than this fall back to reflectivity
   double arrival_radius_m = 0.5;    // the vehicle this close to the goal has arrived
-  std::string vehicle_config = "config/vehicle.yaml";  // top-level key `vehicle_config`
-  std::string prior_graph;                             // saved global graph to start from; empty = none
+  std::string vehicle_config = "vehicle.yaml";  // top-level key `vehicle_config`
+  std::string prior_graph;                      // saved global graph to start from; empty = none
   int data_port = 2368;  // velodyne_packet_t.port of data packets; others (position packets) carry no points
   PlannerChannels channels;
 };

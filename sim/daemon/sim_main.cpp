@@ -13,6 +13,7 @@
 
 #include "bus/heartbeat.hpp"
 #include "bus/run_loop.hpp"
+#include "common/config_search.hpp"
 #include "common/daemon_main.hpp"
 #include "common/rate_limiter.hpp"
 #include "common/time.hpp"
@@ -52,16 +53,26 @@ int runSimulator(ifar::common::DaemonContext& context, const CommandLine& comman
   auto& logger = *context.logger;
   auto settings = loadSettings(context.config, command_line);
   context.config.rejectUnknownKeys();
-  const auto vehicle =
-      ifar::common::loadVehicleSettings(ifar::common::ConfigNode::loadFile(settings.vehicle_config));
+  const std::string vehicle_file =
+      ifar::common::resolveReferencedFile(settings.vehicle_config, context.config.sourceName()).path;
+  const auto vehicle = ifar::common::loadVehicleSettings(ifar::common::ConfigNode::loadFile(vehicle_file));
   // The bus, the drives' node ids and the force frame id are the vehicle's CAN configuration: the file
   // the CAN drivers read.
-  const auto can_config = ifar::common::ConfigNode::loadFile(settings.can_config);
+  const std::string can_file =
+      ifar::common::resolveReferencedFile(settings.can_config, context.config.sourceName()).path;
+  const auto can_config = ifar::common::ConfigNode::loadFile(can_file);
+  logger.info("vehicle {}, CAN {}", vehicle_file, can_file);
   const auto bus_settings = ifar::can::loadBusSettings(can_config);
   settings.can_nodes = ifar::sim::loadCanNodes(can_config, settings.can_nodes);
 
   ifar::sim::World world;
-  const std::string world_path = command_line.world_path.empty() ? settings.world : command_line.world_path;
+  // A world is a file, or a name on the configuration search path (demo_room: worlds/demo_room.yaml).
+  std::string world_path = command_line.world_path.empty() ? settings.world : command_line.world_path;
+  if (!world_path.empty()) {
+    if (const auto found = ifar::common::findNamedInput(world_path, "worlds")) {
+      world_path = found->path;
+    }
+  }
   if (!command_line.generate.empty()) {
     const auto kind = ifar::sim::parseWorldKind(command_line.generate);
     if (!kind) {
@@ -192,17 +203,20 @@ int main(int argc, char** argv)
   CommandLine command_line;
   return ifar::common::runDaemon(
       argc, argv,
-      {"sim", "Simulator: VLP-16 packets by UDP, CAN force sensor and drives, POSE", "config/sim.yaml",
+      {"sim", "Simulator: VLP-16 packets by UDP, CAN force sensor and drives, POSE", "sim.yaml",
        [&command_line](const ifar::common::ConfigNode& config) {
          const auto settings = loadSettings(config, command_line);
-         const auto can_config = ifar::common::ConfigNode::loadFile(settings.can_config);
+         const auto can_config = ifar::common::ConfigNode::loadFile(
+             ifar::common::resolveReferencedFile(settings.can_config, config.sourceName()).path);
          ifar::can::loadBusSettings(can_config);
          ifar::sim::loadCanNodes(can_config);
          return ifar::sim::simNodeParameters().yaml(settings);
        }},
       [&](ifar::common::DaemonContext& context) { return runSimulator(context, command_line); },
       [&](CLI::App& app) {
-        app.add_option("world", command_line.world_path, "World file (YAML, docs/worlds.md)");
+        app.add_option("world", command_line.world_path,
+                       "World file (YAML, docs/worlds.md), or a world's name on the configuration search "
+                       "path (demo_room)");
         app.add_option(
             "--generate", command_line.generate,
             "Generate the world (seed from the config): room, room_objects, office, tunnel, demo_room");

@@ -35,7 +35,7 @@ int main(int argc, char** argv)
     std::cerr
         << "error: --kind: unknown kind '" << kind_text
         << "' (expected room, room_objects, office, tunnel, demo_room, blocked_office or blocked_tunnel)\n";
-    return 2;
+    return ifar::common::kBadInputExitCode;
   }
   const auto result = ifar::sim::generateWorld(*kind, seed);
   if (!result.ok()) {
@@ -49,7 +49,7 @@ int main(int argc, char** argv)
   const auto error = ifar::sim::saveWorldFile(result.world(), out);
   if (!error.empty()) {
     std::cerr << "error: " << error << "\n";
-    return 1;
+    return ifar::common::kOutputFailedExitCode;
   }
   std::cerr << "wrote " << out << ": " << result.world().obstacles.size() << " obstacles, "
             << result.world().objects.size() << " movable objects, " << result.world().goals.size()

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "common/command_line.hpp"
+
 namespace ifar::sim {
 namespace {
 
@@ -28,12 +30,10 @@ void addImportOptions(CLI::App& app, ImportCommandLine& options)
   app.add_option("--cell-size", options.cell_size_m, ".map: metres per cell")
       ->capture_default_str()
       ->group(group);
-  app.add_option(
-         "--start", options.start,
-         "Grid maps, and SVGs that draw no robot: start X Y [HEADING_RAD] in metres, spaces or commas "
-         "(default: the free spot nearest the centre of the grid or the SVG's viewBox)")
-      ->expected(2, 3)
-      ->delimiter(',')
+  common::addCoordinatesOption(
+      app, "--start", options.start, "X,Y[,HEADING_RAD]", 2, 3,
+      "Grid maps, and SVGs that draw no robot: start in metres (default: the free spot "
+      "nearest the centre of the grid or the SVG's viewBox)")
       ->group(group);
 }
 
@@ -54,12 +54,6 @@ std::optional<WorldImportSettings> importSettings(const ImportCommandLine& optio
   if (!positiveFinite(options.cell_size_m)) {
     error = "--cell-size: must be a positive number of metres, got " + std::to_string(options.cell_size_m);
     return std::nullopt;
-  }
-  for (const double value : options.start) {
-    if (!std::isfinite(value)) {
-      error = "--start: coordinates must be finite numbers";
-      return std::nullopt;
-    }
   }
   settings.namosim.vehicle_width_m = vehicle_width_m;
   settings.namosim.metres_per_unit = options.scale;

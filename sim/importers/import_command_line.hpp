@@ -19,7 +19,7 @@ struct ImportCommandLine {
   std::string robot;
   std::optional<double> curve_tolerance_m;
   double cell_size_m = 1.0;
-  std::vector<double> start;  // x y [heading_rad]
+  std::vector<double> start;  // X,Y[,HEADING_RAD]; empty when not given
 };
 
 /// Adds the options to `app` in the group "Map import".

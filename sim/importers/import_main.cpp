@@ -11,6 +11,7 @@
 
 #include "common/command_line.hpp"
 #include "common/config.hpp"
+#include "common/config_search.hpp"
 #include "common/vehicle.hpp"
 #include "sim/importers/import_command_line.hpp"
 #include "sim/importers/world_loader.hpp"
@@ -39,15 +40,18 @@ int main(int argc, char** argv)
   app.add_option("--out", out, "world file to write (default: standard output)");
   app.add_option("--vehicle", vehicle_path, "vehicle.yaml whose width_m sets the SVG scale (default 0.7 m)");
   ifar::sim::addImportOptions(app, import_options);
-  app.add_option("--goal", goal, "grid maps: goal x y in metres")->expected(2);
+  ifar::common::addCoordinatesOption(app, "--goal", goal, "X,Y", 2, 2, "grid maps: a goal in metres");
   if (const auto exit_code = ifar::common::parseCommandLine(app, argc, argv)) {
     return *exit_code;
   }
 
   ifar::common::VehicleSettings vehicle;
+  std::string vehicle_used = "built-in vehicle";  // said with the result
   if (!vehicle_path.empty()) {
     try {
-      vehicle = ifar::common::loadVehicleSettings(ifar::common::ConfigNode::loadFile(vehicle_path));
+      const ifar::common::FoundConfig found = ifar::common::resolveConfigFile(vehicle_path, "vehicle.yaml");
+      vehicle = ifar::common::loadVehicleSettings(ifar::common::ConfigNode::loadFile(found.path));
+      vehicle_used = "vehicle " + found.path;
     } catch (const ifar::common::ConfigError& error) {
       std::cerr << "error: " << error.what() << "\n";
       return ifar::common::kBadInputExitCode;
@@ -77,10 +81,10 @@ int main(int argc, char** argv)
     const auto error = ifar::sim::saveWorldFile(world, out);
     if (!error.empty()) {
       std::cerr << "error: " << error << "\n";
-      return ifar::common::kBadInputExitCode;
+      return ifar::common::kOutputFailedExitCode;
     }
     std::cerr << "wrote " << out << ": " << world.obstacles.size() << " obstacles, " << world.objects.size()
-              << " movable objects, " << world.goals.size() << " goals\n";
+              << " movable objects, " << world.goals.size() << " goals (" << vehicle_used << ")\n";
   }
   if (load.incomplete) {
     std::cerr << "warning: the world is incomplete (exit code " << kExitIncomplete << ")\n";

@@ -184,11 +184,17 @@ Table makeSimNodeParameters()
   using S = SimNodeSettings;
   Table table;
   table
-      .add("vehicle_config", &S::vehicle_config, "", Range::nonEmpty(),
-           "dimensions, limits, lidar mount, force sensor range (relative to the working directory)")
-      .add("can_config", &S::can_config, "", Range::nonEmpty(),
-           "the vehicle's CAN bus, drive node ids and force frame id: the file the CAN drivers read")
-      .add("world", &S::world, "", Range::any(), "world file used when none is given on the command line")
+      .add(
+          "vehicle_config", &S::vehicle_config, "", Range::nonEmpty(),
+          "dimensions, limits, lidar mount, force sensor range (a relative path is beside this file, else on "
+          "the configuration search path)")
+      .add(
+          "can_config", &S::can_config, "", Range::nonEmpty(),
+          "the vehicle's CAN bus, drive node ids and force frame id: the file the CAN drivers read (relative "
+          "as vehicle_config)")
+      .add("world", &S::world, "", Range::any(),
+           "world file (or a name in worlds/ on the configuration search path) used when none is given on "
+           "the command line")
       .add(
           "seed", [](auto& s) -> auto& { return s.simulator.seed; }, "", Range::nonNegative(),
           "every sensing model (and anything else random) is seeded: same seed, same run");

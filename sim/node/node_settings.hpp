@@ -19,8 +19,8 @@ namespace ifar::sim {
 enum class CommandSource { kCan, kLcm };
 
 struct SimNodeSettings {
-  std::string vehicle_config = "config/vehicle.yaml";
-  std::string can_config = "config/can.yaml";
+  std::string vehicle_config = "vehicle.yaml";  // relative: beside sim.yaml, else on the search path
+  std::string can_config = "can.yaml";
   std::string world;  // world file used when none is given on the command line
   SimulatorSettings simulator;
   std::string lidar_host = "127.0.0.1";

@@ -134,8 +134,8 @@ DaemonConfiguration loadDaemonConfiguration()
   const PlannerConfig loaded =
       loadPlannerConfig(common::ConfigNode::loadFile(source + "/config/planner.yaml"));
   DaemonConfiguration configuration{loaded.planner, loaded.node.input};
-  configuration.planner.vehicle =
-      common::loadVehicleSettings(common::ConfigNode::loadFile(source + "/" + loaded.node.vehicle_config));
+  configuration.planner.vehicle = common::loadVehicleSettings(
+      common::ConfigNode::loadFile(source + "/config/" + loaded.node.vehicle_config));
   return configuration;
 }
 

@@ -16,8 +16,15 @@ std::string typesJar(const std::string& requested)
   if (environment != nullptr && *environment != '\0') {
     return environment;
   }
-  const auto sibling = std::filesystem::path(executableDirectory()) / ".." / "lcmtypes" / "ifar_lcmtypes.jar";
-  return std::filesystem::exists(sibling) ? sibling.lexically_normal().string() : std::string(IFAR_TYPES_JAR);
+  // Beside the program: build/lcmtypes in a build tree, share/java in an install; else the build's own.
+  const std::filesystem::path programs(executableDirectory());
+  for (const auto& sibling : {programs / ".." / "lcmtypes" / "ifar_lcmtypes.jar",
+                              programs / ".." / "share" / "java" / "ifar_lcmtypes.jar"}) {
+    if (std::filesystem::exists(sibling)) {
+      return sibling.lexically_normal().string();
+    }
+  }
+  return IFAR_TYPES_JAR;
 }
 
 std::string typesJarProblem(const std::string& jar)

@@ -2,6 +2,7 @@
 // executable ifar-NAME beside this one (record, replay, echo, sim, render, plan, ... each component ships
 // its own), so components add subcommands without touching this file.
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -13,6 +14,7 @@
 #include "common/command_line.hpp"
 #include "tools/ifar/lcm_java.hpp"
 #include "tools/ifar/process.hpp"
+#include "tools/ifar/version.hpp"
 
 namespace {
 
@@ -23,11 +25,20 @@ using ifar::tools::replaceProcess;
 
 const char* kBuiltIns[] = {"spy"};
 
+/// Every ifar-NAME beside this program with the first sentence of its description (`--describe`).
 std::string externalList()
 {
   std::string text = "\nComponent subcommands (ifar NAME --help for each):\n";
-  for (const auto& name : externalSubcommands(executableDirectory())) {
-    text += "  " + name + "\n";
+  const std::string directory = executableDirectory();
+  for (const auto& name : externalSubcommands(directory)) {
+    std::string program = directory;
+    program += "/ifar-";
+    program += name;
+    const std::string description = ifar::tools::firstOutputLine({program, "--describe"}, 2000);
+    std::string line = "  " + name;
+    line.resize(std::max<std::size_t>(line.size() + 1, 20), ' ');
+    text += line;
+    text += description + "\n";
   }
   return text;
 }
@@ -81,7 +92,9 @@ int main(int argc, char** argv)
   CLI::App app{
       "ifar: navigation among movable obstacles on LCM. `ifar spy` is built in; the others are "
       "the ifar-NAME programs beside this one."};
-  app.footer(externalList());
+  app.footer(externalList);
+  app.set_version_flag("--version", std::string("ifar ") + ifar::tools::projectVersion() + " (commit " +
+                                        ifar::tools::gitCommit() + ")");
   app.require_subcommand(1);
 
   std::string url;

@@ -19,6 +19,10 @@ std::vector<std::string> externalSubcommands(const std::string& directory);
 /// `command` found on PATH (or as given when it contains a slash and exists); "" when not found.
 std::string findProgram(const std::string& command);
 
+/// The first line `command` prints on stdout (stdin and stderr closed off), waited for at most `timeout_ms`
+/// (then it is killed); "" when it prints none, cannot start or takes too long.
+std::string firstOutputLine(const std::vector<std::string>& command, int timeout_ms);
+
 /// A wait() status in words: "exited with code 1", "killed by signal 9 (Killed)".
 std::string describeExitStatus(int status);
 

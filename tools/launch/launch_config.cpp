@@ -26,6 +26,10 @@ LaunchSpec loadLaunchSpec(const common::ConfigNode& root, const VariableLookup& 
   if (!(spec.stop_timeout_s > 0.0)) {
     root.fail("stop_timeout_s", "must be greater than zero");
   }
+  spec.readiness_after_s = root.optional<double>("readiness_after_s", spec.readiness_after_s);
+  if (!(spec.readiness_after_s >= 0.0 && spec.readiness_after_s <= 3600.0)) {
+    root.fail("readiness_after_s", "must be between 0 (no summary) and 3600 seconds");
+  }
   std::set<std::string> names;
   const auto processes = root.sequence("processes");
   if (processes.empty()) {

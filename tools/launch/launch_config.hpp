@@ -3,9 +3,10 @@
 // restarted when it dies, and whether the whole launch ends when it ends.
 //
 //   stop_timeout_s: 3            # after SIGINT, wait this long before SIGKILL
+//   readiness_after_s: 5         # the readiness summary this long after start, then on change (0: none)
 //   processes:
 //     - name: sim
-//       command: [ifar-sim, config/worlds/demo_room.yaml]
+//       command: [ifar-sim, demo_room]
 //       respawn: true            # restart when it exits or crashes (default false)
 //       respawn_delay_s: 0.5     # wait before restarting, doubled per quick crash up to 8 s
 //       required: false          # true: when it exits for good, stop everything
@@ -34,6 +35,7 @@ struct ProcessSpec {
 
 struct LaunchSpec {
   double stop_timeout_s = 3.0;
+  double readiness_after_s = 5.0;  // readiness.hpp; 0 = no summary
   std::vector<ProcessSpec> processes;
 };
 

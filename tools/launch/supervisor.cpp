@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <stdexcept>
+#include <utility>
 
 #include "common/signals.hpp"
 #include "common/time.hpp"
@@ -113,6 +114,7 @@ void Supervisor::start(Child& child)
     const sigset_t signals = handledSignals();
     common::restoreDefaultActions(signals);
     sigprocmask(SIG_UNBLOCK, &signals, nullptr);
+    signal(SIGPIPE, SIG_DFL);  // the launch itself ignores it
     dup2(pipe_fds[1], STDOUT_FILENO);
     dup2(pipe_fds[1], STDERR_FILENO);
     const char* path = std::getenv("PATH");
@@ -166,11 +168,15 @@ void Supervisor::drainOutput(Child& child, bool flush_partial)
     std::size_t newline;
     while ((newline = child.partial_line.find('\n')) != std::string::npos) {
       say(child.spec.name, child.partial_line.substr(0, newline));
+      if (newline > 0) {
+        child.last_output = child.partial_line.substr(0, newline);
+      }
       child.partial_line.erase(0, newline + 1);
     }
   }
   if (flush_partial && !child.partial_line.empty()) {
     say(child.spec.name, child.partial_line);
+    child.last_output = child.partial_line;
     child.partial_line.clear();
   }
 }
@@ -186,7 +192,9 @@ void Supervisor::reapChildren(bool stopping, SupervisorResult& result)
       }
       drainOutput(child, true);
       child.pid = -1;
-      say("launch", child.spec.name + " " + tools::describeExitStatus(status));
+      child.last_exit = tools::describeExitStatus(status);
+      child.exit_output = child.last_output;
+      say("launch", child.spec.name + " " + child.last_exit);
       if (stopping) {
         child.done = true;
         break;
@@ -262,7 +270,26 @@ void Supervisor::stopAll(double timeout_s)
   }
 }
 
-SupervisorResult Supervisor::run(double duration_s)
+std::vector<ProcessState> Supervisor::processStates() const
+{
+  std::vector<ProcessState> states;
+  states.reserve(children_.size());
+  for (const Child& child : children_) {
+    ProcessState state;
+    state.name = child.spec.name;
+    state.pid = child.pid;
+    state.started_us = child.started_us;
+    state.restarts = child.restarts;
+    state.restart_pending = child.pid < 0 && !child.done && child.restart_due_us >= 0;
+    state.done = child.done;
+    state.last_exit = child.last_exit;
+    state.exit_output = child.exit_output;
+    states.push_back(std::move(state));
+  }
+  return states;
+}
+
+SupervisorResult Supervisor::run(double duration_s, const std::function<void()>& each_turn)
 {
   SupervisorResult result;
   for (auto& child : children_) {
@@ -295,6 +322,9 @@ SupervisorResult Supervisor::run(double duration_s)
         ++result.restarts;
         start(child);
       }
+    }
+    if (each_turn && result.reason.empty()) {
+      each_turn();
     }
     if (end_us >= 0 && now >= end_us && result.reason.empty()) {
       result.reason = "ran for the requested " + std::to_string(duration_s).substr(0, 5) + " s";

@@ -6,11 +6,13 @@
 #include <sys/types.h>
 
 #include <cstdint>
+#include <functional>
 #include <ostream>
 #include <string>
 #include <vector>
 
 #include "tools/launch/launch_config.hpp"
+#include "tools/launch/readiness.hpp"
 
 namespace ifar::launch {
 
@@ -28,8 +30,15 @@ class Supervisor {
   Supervisor(const Supervisor&) = delete;
   Supervisor& operator=(const Supervisor&) = delete;
 
-  /// Runs until a signal, a required process ending, or `duration_s` (<= 0: no limit).
-  SupervisorResult run(double duration_s);
+  /// Runs until a signal, a required process ending, or `duration_s` (<= 0: no limit). `each_turn` (may be
+  /// empty) is called on every turn of the loop, at least every 50 ms, while the processes run.
+  SupervisorResult run(double duration_s, const std::function<void()>& each_turn = {});
+
+  /// Every process of the launch file, in its order, as it is now.
+  std::vector<ProcessState> processStates() const;
+
+  /// A line of the launch's own ("launch | ..."), between the processes' output.
+  void announce(const std::string& line) { say("launch", line); }
 
  private:
   struct Child {
@@ -42,6 +51,9 @@ class Supervisor {
     std::int64_t started_us = 0;
     std::int64_t restart_due_us = -1;  // when a respawn is scheduled
     bool done = false;                 // exited and will not be restarted
+    std::string last_output;           // its last line of output
+    std::string last_exit;             // how it ended last, "" before it has
+    std::string exit_output;           // last_output when it did
   };
 
   void start(Child& child);

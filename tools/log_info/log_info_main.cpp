@@ -74,7 +74,7 @@ int main(int argc, char** argv)
   ifar::lcm_log::LogReader log = ifar::lcm_log::LogReader::open(path);
   if (!log.openError().empty()) {
     std::fprintf(stderr, "ifar log-info: error: cannot read an LCM log: %s\n", log.openError().c_str());
-    return 1;
+    return ifar::common::kBadInputExitCode;
   }
   const std::vector<ifar::lcmtypes_samples::SampleMessage> samples =
       ifar::lcmtypes_samples::allSampleMessages();

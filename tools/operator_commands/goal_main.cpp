@@ -1,4 +1,4 @@
-// ifar goal X Y: sends a navigation goal on GOAL (a few times, so a lossy link or a late subscriber still
+// ifar goal X,Y: sends a navigation goal on GOAL (a few times, so a lossy link or a late subscriber still
 // gets it; the planner treats repeats of one goal_id as one goal). With --wait it keeps resending the goal
 // once a second (a respawned planner learns it again) and watches EXEC_STATUS until the executive reports
 // the goal reached (exit 0) or the wait runs out (exit 1): the demo and the system tests end on this.
@@ -8,6 +8,7 @@
 #include <iostream>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include <spdlog/sinks/null_sink.h>
 #include <spdlog/spdlog.h>
@@ -50,16 +51,15 @@ const char* modeName(std::int8_t mode)
 int main(int argc, char** argv)
 {
   CLI::App app{"Sends a navigation goal (GOAL, goal_t) to the planner"};
-  double x = 0.0;
-  double y = 0.0;
+  std::vector<double> position;  // X,Y
   std::int64_t goal_id = 0;
   bool cancel = false;
   int repeats = 3;
   double wait_s = 0.0;
   double delay_s = 0.0;
   std::string url;
-  app.add_option("x", x, "goal x in metres, world frame")->required();
-  app.add_option("y", y, "goal y in metres, world frame")->required();
+  ifar::common::addCoordinatesOption(app, "goal", position, "X,Y", 2, 2,
+                                     "goal position in metres, world frame (not needed with --cancel)");
   app.add_option("--id", goal_id, "goal id (default: the current time in seconds)");
   app.add_flag("--cancel", cancel, "cancel the goal with this id instead");
   app.add_option("--repeats", repeats, "how many times to send it, 0.2 s apart")
@@ -75,14 +75,19 @@ int main(int argc, char** argv)
   if (const auto exit_code = ifar::common::parseCommandLine(app, argc, argv)) {
     return *exit_code;
   }
-  if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(wait_s) || wait_s < 0.0 ||
-      !(std::isfinite(delay_s) && delay_s >= 0.0 && delay_s <= 3600.0)) {
-    std::cerr
-        << "ifar-goal: error: the goal, --wait and --delay must be finite numbers, --wait not negative, "
-           "--delay between 0 and 3600 s"
-        << std::endl;
+  if (position.empty() && !cancel) {
+    std::cerr << "ifar-goal: error: give the goal as X,Y in metres, e.g. ifar goal 8,26" << std::endl;
     return 2;
   }
+  if (!std::isfinite(wait_s) || wait_s < 0.0 ||
+      !(std::isfinite(delay_s) && delay_s >= 0.0 && delay_s <= 3600.0)) {
+    std::cerr << "ifar-goal: error: --wait and --delay must be finite numbers, --wait not negative, --delay "
+                 "between 0 and 3600 s"
+              << std::endl;
+    return 2;
+  }
+  const double x = position.empty() ? 0.0 : position[0];
+  const double y = position.empty() ? 0.0 : position[1];
   // Before the bus is opened: until then SIGTERM ends the process as usual.
   std::this_thread::sleep_for(std::chrono::duration<double>(delay_s));
 

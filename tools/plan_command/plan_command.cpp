@@ -51,7 +51,7 @@ struct Query {
   double expected = NAN;  // from the .scen file
 };
 
-constexpr int kSaveFailedExitCode = 3;
+constexpr int kSaveFailedExitCode = ifar::common::kOutputFailedExitCode;
 
 const char* boolean(bool value)
 {
@@ -80,8 +80,8 @@ int main(int argc, char** argv)
       ->required()
       ->check(CLI::ExistingFile);
   app.add_option("--scen", scen_path, "MovingAI .scen queries (lattice points)")->check(CLI::ExistingFile);
-  app.add_option("--start", start, "start x y (map units / metres)")->expected(2);
-  app.add_option("--goal", goal, "goal x y")->expected(2);
+  ifar::common::addCoordinatesOption(app, "--start", start, "X,Y", 2, 2, "start (map units / metres)");
+  ifar::common::addCoordinatesOption(app, "--goal", goal, "X,Y", 2, 2, "goal (map units / metres)");
   app.add_option("--inflate", inflate, "inflate obstacles by this radius (map units / metres)")
       ->check(CLI::NonNegativeNumber);
   app.add_flag("--json", json, "one JSON object per query, then a summary line");
@@ -97,7 +97,7 @@ int main(int argc, char** argv)
   }
 
   if (scen_path.empty() && (start.size() != 2 || goal.size() != 2)) {
-    std::cerr << "ifar plan: give --scen FILE or both --start X Y and --goal X Y\n";
+    std::cerr << "ifar plan: give --scen FILE or both --start X,Y and --goal X,Y\n";
     return ifar::common::kBadInputExitCode;
   }
   const auto map_result = ifar::grid_map::readGridMapFile(map_path);

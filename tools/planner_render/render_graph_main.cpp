@@ -12,7 +12,7 @@
 int main(int argc, char** argv)
 {
   CLI::App app{
-      "Draws the last DV_GRAPH and GLOBAL_PATH of an LCM log as a PNG: background polygons red, "
+      "Draws the last DV_GRAPH and GLOBAL_PATH of an LCM log as a PNG. Background polygons red, "
       "movable green, graph edges, path blue; with the vehicle's trajectory (POSE) black, the push plans "
       "magenta and the objects' tracks (SIM_GROUND_TRUTH, when simulated) dark green"};
   std::string log_path;
@@ -52,7 +52,7 @@ int main(int argc, char** argv)
       ifar::viz::readLastMessages(log_path, graph_channel, path_channel, pose_channel, truth_channel);
   if (!last.error.empty()) {
     std::cerr << "error: " << last.error << "\n";
-    return 1;
+    return ifar::common::kBadInputExitCode;
   }
   if (!last.log_problems.empty()) {
     std::cerr << "warning: " << log_path
@@ -64,13 +64,13 @@ int main(int argc, char** argv)
   }
   if (!last.graph) {
     std::cerr << "error: " << log_path << ": no decodable message on channel " << graph_channel << "\n";
-    return 1;
+    return ifar::common::kBadInputExitCode;
   }
   const ifar::viz::Canvas canvas = ifar::viz::renderGraph(*last.graph, last.path, options, last.run);
   const std::string error = canvas.writePng(output);
   if (!error.empty()) {
     std::cerr << "error: " << error << "\n";
-    return 1;
+    return ifar::common::kOutputFailedExitCode;
   }
   std::cout << output << ": " << last.graph->num_polygons << " polygons, " << last.graph->num_vertices
             << " vertices, " << last.graph->num_edges << " edges, path "

@@ -170,8 +170,8 @@ int record(const RecordOptions& options)
 int main(int argc, char** argv)
 {
   CLI::App app{
-      "Records LCM channels with lcm-logger into logs/ (timestamped name, split every 512 MB) and "
-      "publishes a heartbeat \"recorder\" on HEARTBEAT: ERROR when lcm-logger dies or its file "
+      "Records LCM channels with lcm-logger into logs/, watched by a heartbeat \"recorder\". Timestamped "
+      "names, split every 512 MB; the heartbeat on HEARTBEAT is ERROR when lcm-logger dies or its file "
       "stops growing while messages arrive"};
   RecordOptions options;
   app.add_option("--dir", options.directory, "folder for the logs")->capture_default_str();

@@ -8,6 +8,7 @@
 
 #include "common/command_line.hpp"
 #include "common/config.hpp"
+#include "common/config_search.hpp"
 #include "common/vehicle.hpp"
 #include "sim/importers/import_command_line.hpp"
 #include "sim/importers/world_loader.hpp"
@@ -16,8 +17,7 @@
 int main(int argc, char** argv)
 {
   CLI::App app(
-      "Draw a simulator world (walls, movable objects, start, goals) as a PNG: a world file, a namosim SVG, "
-      "a "
+      "Draws a world as a PNG: walls, movable objects, start and goals. From a world file, a namosim SVG, a "
       "MovingAI .map or a map_server .yaml",
       "ifar-render");
   std::string world_path;
@@ -25,9 +25,10 @@ int main(int argc, char** argv)
   double resolution = 0.0;
   std::string vehicle_path;
   app.add_option("WORLD", world_path,
-                 "world file (YAML, docs/worlds.md), namosim .svg, MovingAI .map or map_server .yaml")
+                 "world file (YAML, docs/worlds.md), namosim .svg, MovingAI .map or map_server .yaml, or a "
+                 "world's name in worlds/ on the configuration search path (demo_room)")
       ->required();
-  app.add_option("--out", out, "PNG to write (default: the world file's name with .png)");
+  app.add_option("--out", out, "PNG to write (default: WORLD as given, with .png for its extension)");
   app.add_option("--resolution", resolution, "metres per pixel (default 0.05, coarser for large worlds)");
   app.add_option(
       "--vehicle", vehicle_path,
@@ -40,9 +41,12 @@ int main(int argc, char** argv)
   }
 
   ifar::common::VehicleSettings vehicle;
+  std::string vehicle_used = "built-in vehicle";  // said with the result
   if (!vehicle_path.empty()) {
     try {
-      vehicle = ifar::common::loadVehicleSettings(ifar::common::ConfigNode::loadFile(vehicle_path));
+      const ifar::common::FoundConfig found = ifar::common::resolveConfigFile(vehicle_path, "vehicle.yaml");
+      vehicle = ifar::common::loadVehicleSettings(ifar::common::ConfigNode::loadFile(found.path));
+      vehicle_used = "vehicle " + found.path;
     } catch (const ifar::common::ConfigError& error) {
       std::cerr << "error: " << error.what() << "\n";
       return ifar::common::kBadInputExitCode;
@@ -54,7 +58,8 @@ int main(int argc, char** argv)
     std::cerr << "error: " << problem << "\n";
     return ifar::common::kBadInputExitCode;
   }
-  const ifar::sim::WorldLoad load = ifar::sim::loadAnyWorld(world_path, *settings);
+  const auto named = ifar::common::findNamedInput(world_path, "worlds");
+  const ifar::sim::WorldLoad load = ifar::sim::loadAnyWorld(named ? named->path : world_path, *settings);
   if (!load.world.ok()) {
     std::cerr << "error: " << load.world.error() << "\n";
     return ifar::common::kBadInputExitCode;
@@ -81,9 +86,9 @@ int main(int argc, char** argv)
   const auto error = canvas.writePng(out);
   if (!error.empty()) {
     std::cerr << "error: " << error << "\n";
-    return 1;
+    return ifar::common::kOutputFailedExitCode;
   }
   std::cerr << "wrote " << out << " (" << canvas.widthPixels() << " x " << canvas.heightPixels()
-            << " pixels, " << resolution << " m per pixel)\n";
+            << " pixels, " << resolution << " m per pixel; " << vehicle_used << ")\n";
   return 0;
 }

@@ -314,8 +314,8 @@ int runPlayer(const ReplayOptions& options, const ReplayFilter& filter)
 int main(int argc, char** argv)
 {
   CLI::App app{
-      "Publishes a recorded LCM log onto the bus again, leaving out commands (VELOCITY_CMD, E_STOP, "
-      "GOAL, CAN frames to the drives) unless each is allowed by name. Stops with the byte offset "
+      "Publishes a recorded LCM log onto the bus again, commands left out unless allowed by name. The "
+      "commands: VELOCITY_CMD, E_STOP, GOAL, CAN frames to the drives. Stops with the byte offset "
       "and exit code 2 at a corrupt event. Pause and resume: space (on a terminal), SIGUSR1 and SIGUSR2."};
   ReplayOptions options;
   app.add_option("log", options.log, "the .lcmlog file")->required();

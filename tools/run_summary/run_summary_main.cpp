@@ -1,30 +1,37 @@
-// ifar run-summary LOG --goal X Y: what a recorded run achieved, from its LCM log: arrived or not, distance
+// ifar run-summary LOG --goal X,Y: what a recorded run achieved, from its LCM log: arrived or not, distance
 // driven and time (simulator ground truth, else POSE), pushes and replans (EXEC_STATUS), affordance
-// updates, and the executive's last mode and reason. --json prints the same as one JSON line. --png with
-// --world draws the run as `ifar run --png` does: the world, the trajectory (ground truth, else POSE) and
-// the objects where the log last saw them (SIM_GROUND_TRUTH), with the outcome in the legend. A corrupt
-// log is summarised from the events that could be read, with a warning on stderr naming the first bad
-// byte; a log in which no event can be read is an error.
+// updates, blocked passages, planner frame times (PLANNER_STATUS), and the executive's last reason.
+// --json prints it as one JSON line in the schema of `ifar run --json` (system/summary_json.hpp, written by
+// the same code; docs/cli.md says which keys a log cannot give). --png with --world draws the run as
+// `ifar run --png` does: the world, the trajectory (ground truth, else POSE) and the objects where the log
+// last saw them (SIM_GROUND_TRUTH), with the outcome in the legend. A corrupt log is summarised from the
+// events that could be read, with a warning on stderr naming the first bad byte; a log in which no event
+// can be read is an error.
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 
 #include "common/command_line.hpp"
-#include "common/json_text.hpp"
+#include "common/config_search.hpp"
 #include "common/lcm_log/log_reader.hpp"
+#include "common/percentile.hpp"
 #include "ifar/affordance_t.hpp"
 #include "ifar/exec_status_t.hpp"
 #include "ifar/path_t.hpp"
+#include "ifar/planner_status_t.hpp"
 #include "ifar/pose_t.hpp"
 #include "ifar/world_state_t.hpp"
 #include "lcmtypes/checked_decode.hpp"
 #include "sim/world/world_file.hpp"
 #include "system/run_picture.hpp"
+#include "system/summary_json.hpp"
 
 namespace {
 
@@ -57,25 +64,37 @@ bool decode(const ifar::lcm_log::LogEvent& event, Message& message)
          static_cast<int>(event.data.size());
 }
 
+/// Median, p99 (nearest rank) and maximum of per-frame times, as the headless runner reports them.
+ifar::runner::FrameTimes frameTimes(const std::vector<double>& milliseconds)
+{
+  ifar::runner::FrameTimes times;
+  times.frames = milliseconds.size();
+  if (!milliseconds.empty()) {
+    times.median_ms = ifar::common::nearestRankPercentile(milliseconds, 50.0);
+    times.p99_ms = ifar::common::nearestRankPercentile(milliseconds, 99.0);
+    times.max_ms = *std::max_element(milliseconds.begin(), milliseconds.end());
+  }
+  return times;
+}
+
 }  // namespace
 
 int main(int argc, char** argv)
 {
   CLI::App app{"Summarises a recorded run: arrival, distance, time, pushes, replans, affordance updates"};
   std::string path;
-  double goal_x = 0.0;
-  double goal_y = 0.0;
+  std::vector<double> goal;
   double tolerance = 0.5;
   bool json = false;
   app.add_option("log", path, "the .lcmlog file")->required()->check(CLI::ExistingFile);
-  app.add_option("--goal-x", goal_x, "goal x, metres")->required();
-  app.add_option("--goal-y", goal_y, "goal y, metres")->required();
+  ifar::common::addCoordinatesOption(app, "--goal", goal, "X,Y", 2, 2, "the run's goal in metres")
+      ->required();
   app.add_option("--tolerance", tolerance, "arrival radius, metres")->capture_default_str();
-  app.add_flag("--json", json, "one JSON line instead of text");
+  app.add_flag("--json", json, "one JSON line instead of text, in the schema of ifar run --json");
   std::string world_path;
   std::string png_path;
-  app.add_option("--world", world_path, "the world file the run was in (for --png)")
-      ->check(CLI::ExistingFile);
+  app.add_option("--world", world_path,
+                 "the world the run was in (for --png): a file, or a name on the configuration search path");
   app.add_option(
       "--png", png_path,
       "draw the run as ifar run --png does: world, trajectory, objects where they ended (needs --world)");
@@ -89,7 +108,15 @@ int main(int argc, char** argv)
   }
   ifar::sim::World world;
   if (!world_path.empty()) {
-    ifar::sim::WorldResult loaded = ifar::sim::loadWorldFile(world_path);
+    const std::optional<ifar::common::FoundConfig> found = ifar::common::findNamedInput(world_path, "worlds");
+    if (!found) {
+      std::fprintf(stderr,
+                   "ifar run-summary: error: --world: '%s' is neither a file nor a world on the "
+                   "configuration search path\n",
+                   world_path.c_str());
+      return ifar::common::kBadInputExitCode;
+    }
+    ifar::sim::WorldResult loaded = ifar::sim::loadWorldFile(found->path);
     if (!loaded.ok()) {
       std::fprintf(stderr, "ifar run-summary: error: --world: %s\n", loaded.error().c_str());
       return ifar::common::kBadInputExitCode;
@@ -100,7 +127,7 @@ int main(int argc, char** argv)
   ifar::lcm_log::LogReader log = ifar::lcm_log::LogReader::open(path);
   if (!log.openError().empty()) {
     std::fprintf(stderr, "ifar run-summary: error: cannot read an LCM log: %s\n", log.openError().c_str());
-    return 1;
+    return ifar::common::kBadInputExitCode;
   }
   Track truth;
   Track pose;
@@ -111,10 +138,17 @@ int main(int argc, char** argv)
   bool has_status = false;
   bool arrived_mode = false;
   int affordance_updates = 0;
+  int blocked_passages = 0;
   int paths = 0;
+  std::vector<double> frame_ms;
+  std::vector<double> interaction_ms;
+  std::int64_t first_event_us = -1;
+  std::int64_t last_event_us = 0;
   int undecodable = 0;
   ifar::lcm_log::LogEvent event;
   while (log.next(event)) {
+    first_event_us = first_event_us < 0 ? event.timestamp_us : first_event_us;
+    last_event_us = event.timestamp_us;
     if (event.channel == "SIM_GROUND_TRUTH") {
       ifar::world_state_t state{};
       if (decode(event, state)) {
@@ -143,6 +177,16 @@ int main(int argc, char** argv)
       }
     } else if (event.channel == "AFFORDANCE") {
       ++affordance_updates;
+    } else if (event.channel == "BLOCKED_PASSAGE") {
+      ++blocked_passages;
+    } else if (event.channel == "PLANNER_STATUS") {
+      ifar::planner_status_t status{};
+      if (decode(event, status)) {
+        frame_ms.push_back(status.total_ms);
+        interaction_ms.push_back(status.interaction_ms);
+      } else {
+        ++undecodable;
+      }
     } else if (event.channel == "GLOBAL_PATH") {
       ++paths;
     }
@@ -151,7 +195,7 @@ int main(int argc, char** argv)
     if (log.eventCount() == 0) {
       std::fprintf(stderr, "ifar run-summary: error: '%s': no LCM event could be read: %s\n", path.c_str(),
                    log.problemSummary().c_str());
-      return 1;
+      return ifar::common::kBadInputExitCode;
     }
     std::fprintf(
         stderr, "ifar run-summary: warning: '%s' is corrupt, summarised from the %llu events read: %s\n",
@@ -161,8 +205,10 @@ int main(int argc, char** argv)
   if (!track.has_position) {
     std::fprintf(stderr, "ifar run-summary: error: '%s' has neither SIM_GROUND_TRUTH nor POSE\n",
                  path.c_str());
-    return 1;
+    return ifar::common::kBadInputExitCode;
   }
+  const double goal_x = goal[0];
+  const double goal_y = goal[1];
   const double remaining = std::hypot(goal_x - track.x, goal_y - track.y);
   const bool arrived = remaining <= tolerance || arrived_mode;
   const double seconds = static_cast<double>(track.last_utime - track.first_utime) * 1e-6;
@@ -190,20 +236,31 @@ int main(int argc, char** argv)
     }
   }
   if (json) {
-    std::printf(
-        "{\"arrived\": %s, \"distance_m\": %.3f, \"time_s\": %.2f, \"remaining_m\": %.3f, \"final_x\": %.3f, "
-        "\"final_y\": %.3f, \"pushes\": %d, \"replans\": %d, \"affordance_updates\": %d, \"paths\": %d, "
-        "\"source\": \"%s\", \"last_reason\": %s, \"log\": %s}\n",
-        arrived ? "true" : "false", track.distance_m, seconds, remaining, track.x, track.y, pushes, replans,
-        affordance_updates, paths, truth.has_position ? "SIM_GROUND_TRUTH" : "POSE",
-        ifar::common::jsonString(reason).c_str(), ifar::common::jsonString(path).c_str());
+    // What the log holds, in the runner's schema; saturated pushes, routes and the loss accounting need the
+    // runner's ground truth and stay at their "none" values.
+    ifar::runner::RunSummary summary;
+    summary.arrived = arrived;
+    summary.reason = arrived ? "arrived" : "not arrived: " + reason;
+    summary.distance_m = track.distance_m;
+    summary.sim_time_s = seconds;
+    summary.wall_time_s = static_cast<double>(last_event_us - first_event_us) * 1e-6;
+    summary.pushes = pushes;
+    summary.replans = replans;
+    summary.affordance_updates = affordance_updates;
+    summary.blocked_passages = blocked_passages;
+    summary.goal_distance_m = remaining;
+    summary.planner_frame = frameTimes(frame_ms);
+    summary.interaction = frameTimes(interaction_ms);
+    summary.losses.problem = "not computed from a log (ifar run computes it)";
+    std::printf("%s\n", ifar::runner::summaryJson(summary).c_str());
   } else {
     std::printf("arrived:            %s (%.2f m from the goal (%.2f, %.2f))\n", arrived ? "yes" : "no",
                 remaining, goal_x, goal_y);
     std::printf("distance driven:    %.2f m in %.1f s (%s)\n", track.distance_m, seconds,
                 truth.has_position ? "simulator ground truth" : "POSE");
-    std::printf("pushes / replans:   %d / %d; affordance updates %d; %d paths published\n", pushes, replans,
-                affordance_updates, paths);
+    std::printf(
+        "pushes / replans:   %d / %d; affordance updates %d; blocked passages %d; %d paths published\n",
+        pushes, replans, affordance_updates, blocked_passages, paths);
     std::printf("executive at end:   %s\n", reason.c_str());
     if (undecodable > 0) {
       std::printf("skipped:            %d messages that did not decode\n", undecodable);

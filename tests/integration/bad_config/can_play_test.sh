@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # ifar can play over LCM (memq, in process): bad lines are skipped and counted; a file with no candump
-# frame at all is an error (exit 1), not "sent 0 frames".
+# frame at all is bad input (exit 2), not "sent 0 frames".
 set -u
 can="${IFAR_BINARY_DIR:?}/bin/ifar-can"
 folder=$(mktemp -d)
@@ -10,7 +10,7 @@ printf '(1795320266.193869) can0 701#00\nnot a frame\n' > "$folder/mixed.log"
 play() { "$can" --bus lcm --channel CAN_TEST --lcm-url memq:// play --speed 0 "$1" 2>&1; }
 
 output=$(play "$folder/bad.log"); status=$?
-if [ $status != 1 ] || [[ "$output" != *"sent 0 frames, skipped 2 bad lines"* ]] ||
+if [ $status != 2 ] || [[ "$output" != *"sent 0 frames, skipped 2 bad lines"* ]] ||
    [[ "$output" != *"no line of $folder/bad.log is a candump -l frame"* ]]; then
   echo "FAIL: all-bad file: exit $status, output: $output"; exit 1
 fi

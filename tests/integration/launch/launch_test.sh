@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # ifar launch as a real process: prefixed output, respawn with back-off, SIGINT then SIGKILL on stop in
-# the reverse of the file's order, a required process that fails ends the launch with exit code 1, a bad
-# launch file exits 2.
+# the reverse of the file's order, a required process that fails ends the launch with exit code 1, a
+# readiness summary after start and on change, a bad launch file exits 2.
 set -euo pipefail
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -57,9 +57,28 @@ ifar launch "$work/required.yaml" --no-colour > "$work/out" 2>&1 || status=$?
 [ $status = 1 ] || fail "a failed required process gave exit code $status, expected 1"
 grep -q 'stopping: required process mission exited with code 4' "$work/out" || fail "no reason given"
 
+# The readiness summary: once after readiness_after_s, then only when a line changes. No heartbeat comes
+# from these processes: one is starting, the other crash-loops and says why.
+cat > "$work/readiness.yaml" <<'YAML'
+readiness_after_s: 1
+processes:
+  - name: quiet
+    command: [sleep, '30']
+  - name: crasher
+    command: [bash, -c, 'echo "cannot open the device"; exit 3']
+    respawn: true
+    respawn_delay_s: 0.2
+YAML
+ifar launch "$work/readiness.yaml" --duration 2.5 --no-colour > "$work/out" 2>&1 || fail "readiness launch failed"
+grep -q '^launch  *| readiness after 1 s: 0 of 2 ready$' "$work/out" || fail "no readiness summary after 1 s"
+grep -q '^launch  *|   quiet    starting$' "$work/out" || fail "readiness does not show quiet starting"
+grep -q '^launch  *|   crasher  restarting: exited with code 3: cannot open the device$' "$work/out" ||
+  fail "readiness does not say why crasher restarts"
+[ "$(grep -c 'readiness after' "$work/out")" = 1 ] || fail "readiness summary repeated without a change"
+
 printf 'processes:\n  - name: x\n    comand: [true]\n' > "$work/bad.yaml"
 status=0
 ifar launch "$work/bad.yaml" > "$work/out" 2>&1 || status=$?
 [ $status = 2 ] || fail "bad launch file gave exit code $status, expected 2"
 grep -qF "key 'processes[0].command': missing required key" "$work/out" || fail "bad launch file message"
-echo "PASS: ifar launch supervises, respawns, stops and rejects bad files"
+echo "PASS: ifar launch supervises, respawns, stops, says what is ready and rejects bad files"

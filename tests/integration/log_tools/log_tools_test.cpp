@@ -180,7 +180,7 @@ TEST_F(LogTools, RunSummaryUsesTheEventsBeforeTheCorruptionOrFailsNamingFileAndO
   last.resize(last.size() / 2);
   append(bytes, last);
   const std::string log = writeLog("run.lcmlog", bytes);
-  const ToolRun summary = run("ifar-run-summary", {log, "--goal-x", "0", "--goal-y", "0"});
+  const ToolRun summary = run("ifar-run-summary", {log, "--goal", "0,0"});
   EXPECT_EQ(summary.exit_code, 0) << summary.output;
   EXPECT_TRUE(contains(summary.output, "arrived:")) << summary.output;
   EXPECT_TRUE(
@@ -190,8 +190,8 @@ TEST_F(LogTools, RunSummaryUsesTheEventsBeforeTheCorruptionOrFailsNamingFileAndO
       << summary.output;
 
   const std::string huge = writeLog("huge.lcmlog", hugeClaimLog());
-  const ToolRun failed = run("ifar-run-summary", {huge, "--goal-x", "0", "--goal-y", "0", "--json"});
-  EXPECT_EQ(failed.exit_code, 1) << failed.output;
+  const ToolRun failed = run("ifar-run-summary", {huge, "--goal", "0,0", "--json"});
+  EXPECT_EQ(failed.exit_code, 2) << failed.output;
   EXPECT_TRUE(contains(failed.output, "error: '" + huge + "': no LCM event could be read")) << failed.output;
   EXPECT_TRUE(contains(failed.output, kHugeClaimProblem)) << failed.output;
 }
@@ -212,7 +212,7 @@ TEST_F(LogTools, RenderGraphDrawsFromTheEventsBeforeTheCorruptionOrFailsNamingFi
 
   const std::string huge = writeLog("huge.lcmlog", hugeClaimLog());
   const ToolRun failed = run("ifar-render-graph", {huge, "-o", png});
-  EXPECT_EQ(failed.exit_code, 1) << failed.output;
+  EXPECT_EQ(failed.exit_code, 2) << failed.output;
   EXPECT_TRUE(contains(failed.output, "error: " + huge + ": no LCM event could be read")) << failed.output;
   EXPECT_TRUE(contains(failed.output, kHugeClaimProblem)) << failed.output;
 }

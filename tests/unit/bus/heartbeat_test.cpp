@@ -7,10 +7,12 @@
 
 #include <chrono>
 #include <cstdint>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include <spdlog/sinks/null_sink.h>
+#include <spdlog/sinks/ostream_sink.h>
 
 #include "bus/heartbeat.hpp"
 #include "ifar/goal_t.hpp"
@@ -117,6 +119,34 @@ TEST(Heartbeat, AnotherProcessOfTheSameNameOnTheUrlDegradesEveryBeat)
   // The impostor is heard before the second beat at the latest.
   EXPECT_EQ(beats[2].health, ifar::heartbeat_t::HEALTH_DEGRADED);
   EXPECT_EQ(beats[2].message, "another tester on this LCM URL (pid " + std::to_string(::getpid() + 1) + ")");
+}
+
+TEST(Heartbeat, LoggedProblemSaysWhenAProblemStartsChangesLastsAndClears)
+{
+  std::ostringstream log;
+  auto sink = std::make_shared<spdlog::sinks::ostream_sink_mt>(log);
+  sink->set_pattern("%l %v");
+  auto logger = std::make_shared<spdlog::logger>("driver", sink);
+  std::vector<std::string> problems = {"",
+                                       "no lidar packets on port 2368 for 1.0 s",
+                                       "no lidar packets on port 2368 for 2.0 s",
+                                       "no lidar packets on port 2368 for 3.0 s",
+                                       "no lidar packets on port 2368 for 4.0 s",
+                                       "bad packets",
+                                       ""};
+  std::size_t next = 0;
+  const ifar::bus::DaemonProblem logged =
+      ifar::bus::loggedProblem([&] { return problems[next++]; }, logger, 3);
+  std::vector<std::string> reported;
+  while (next < problems.size()) {
+    reported.push_back(logged());
+  }
+  EXPECT_EQ(reported, problems);  // the heartbeat gets what the daemon says, unchanged
+  EXPECT_EQ(log.str(),
+            "warning no lidar packets on port 2368 for 1.0 s\n"
+            "warning no lidar packets on port 2368 for 4.0 s\n"  // still so after 3 beats
+            "warning bad packets\n"
+            "info no longer: bad packets\n");
 }
 
 }  // namespace

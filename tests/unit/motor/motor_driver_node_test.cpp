@@ -59,6 +59,7 @@ class MotorDriverNodeTest : public ::testing::Test {
   std::vector<can::Frame> sent;        // everything the node sent, in order
   std::vector<can::Frame> drive_sent;  // everything the drives sent
   bool node_alive = true;              // false: the node neither cycles nor hears (a frozen driver)
+  bool left_powered = true;            // false: the left drive is silent (unplugged, powered off)
 
   void step(const std::optional<std::pair<double, double>>& velocity)
   {
@@ -74,6 +75,9 @@ class MotorDriverNodeTest : public ::testing::Test {
       }
     }
     for (sim::DriveEmulator* drive : {&left, &right}) {
+      if (drive == &left && !left_powered) {
+        continue;
+      }
       for (const can::Frame& frame : drive->update(now)) {
         drive_sent.push_back(frame);
         if (node_alive) {
@@ -177,6 +181,24 @@ TEST_F(MotorDriverNodeTest, NotANumberIsRefusedAndCounted)
   EXPECT_EQ(node.takeHealthProblem(now), "");
 }
 
+TEST_F(MotorDriverNodeTest, SaysWhichDriveItWaitsFor)
+{
+  EXPECT_EQ(node.readinessProblem(now),
+            "no heartbeat from drive 1 since start; no heartbeat from drive 2 since start");
+  run(40, 0.0, 0.0);
+  ASSERT_TRUE(node.running(now));
+  EXPECT_EQ(node.readinessProblem(now), "");
+  EXPECT_EQ(node.takeHealthProblem(now), "");
+  left_powered = false;
+  run(20, 0.0, 0.0);  // 200 ms: within the 300 ms heartbeat timeout
+  EXPECT_EQ(node.readinessProblem(now), "");
+  run(20, 0.0, 0.0);
+  EXPECT_EQ(node.readinessProblem(now), "drive 1 heartbeat lost");
+  left_powered = true;
+  run(60, 0.0, 0.0);
+  EXPECT_EQ(node.readinessProblem(now), "");
+}
+
 TEST_F(MotorDriverNodeTest, CommandsAreStaleByTheirOwnUtime)
 {
   // A replayed log: 50 s old commands, arriving now at 50 Hz. Nothing moves.
@@ -189,6 +211,9 @@ TEST_F(MotorDriverNodeTest, CommandsAreStaleByTheirOwnUtime)
       right.onFrame(frame, now);
     }
     for (sim::DriveEmulator* drive : {&left, &right}) {
+      if (drive == &left && !left_powered) {
+        continue;
+      }
       for (const can::Frame& frame : drive->update(now)) {
         node.onFrame(frame, now);
       }

@@ -21,7 +21,7 @@ TEST(PlannerDaemonConfig, ShippedFileLoadsAndPassesRejectUnknownKeys)
   EXPECT_DOUBLE_EQ(config.node.input.stale_input_age_s, 0.5);
   EXPECT_EQ(config.node.channels.velodyne_packet, "VELODYNE_PACKET");
   EXPECT_EQ(config.node.channels.planner_status, "PLANNER_STATUS");
-  EXPECT_EQ(config.node.vehicle_config, "config/vehicle.yaml");
+  EXPECT_EQ(config.node.vehicle_config, "vehicle.yaml");
   EXPECT_DOUBLE_EQ(config.planner.perception.cell_size_m, 0.15);
   EXPECT_EQ(config.planner.graph.votes, 10);
   EXPECT_DOUBLE_EQ(config.node.path_resend_hz, 20.0);

@@ -1,17 +1,19 @@
 #!/bin/sh
-# ifar-run's exit codes: 2 and one error line naming the input and the problem on bad input; 0 with the
-# JSON summary as the last line when the vehicle arrives (a small builtin room), 1 when it does not.
+# ifar-run's exit codes: 2 and one error line naming the input and the problem on bad input (3 for a picture
+# that cannot be written); 0 with the JSON summary as the last line when the vehicle arrives (a small
+# builtin room), 1 when it does not.
 set -u
 config="$IFAR_SOURCE_DIR/config"
 room="$IFAR_SOURCE_DIR/config/worlds/room.yaml"
 failures=0
 
-expect_bad_input() {
-  description="$1"; needle="$2"; shift 2
+# expect_exit CODE DESCRIPTION NEEDLE COMMAND...: exit code CODE and one error line holding NEEDLE.
+expect_exit() {
+  wanted="$1"; description="$2"; needle="$3"; shift 3
   output=$("$@" 2>&1 >/dev/null)
   code=$?
-  if [ "$code" -ne 2 ]; then
-    echo "FAIL $description: exit code $code, expected 2 ($output)"; failures=$((failures + 1)); return
+  if [ "$code" -ne "$wanted" ]; then
+    echo "FAIL $description: exit code $code, expected $wanted ($output)"; failures=$((failures + 1)); return
   fi
   case "$output" in
     *"$needle"*) echo "ok   $description: $output" ;;
@@ -19,27 +21,27 @@ expect_bad_input() {
   esac
 }
 
-expect_bad_input "missing world file" "/nonexistent/world.yaml" \
+expect_exit 2 "missing world file" "/nonexistent/world.yaml" \
   ifar-run /nonexistent/world.yaml --config-dir "$config"
-expect_bad_input "NaN goal" "--goal: coordinates must be finite" \
+expect_exit 2 "NaN goal" "--goal: expected X,Y (numbers separated by commas), got 'nan,5'" \
   ifar-run "$room" --goal nan,5 --config-dir "$config"
-expect_bad_input "malformed goal" "--goal: expected X,Y" \
+expect_exit 2 "malformed goal" "--goal: expected X,Y (numbers separated by commas), got '3'" \
   ifar-run "$room" --goal 3 --config-dir "$config"
-expect_bad_input "a goal and all goals" "give --goal or --all-goals, not both" \
+expect_exit 2 "a goal and all goals" "give --goal or --all-goals, not both" \
   ifar-run "$room" --goal 3,4 --all-goals --config-dir "$config"
-expect_bad_input "missing config directory" "/nonexistent/config/vehicle.yaml" \
+expect_exit 2 "missing config directory" "--config-dir '/nonexistent/config': no such folder" \
   ifar-run "$room" --config-dir /nonexistent/config
-expect_bad_input "non-positive max time" "--max-time" \
+expect_exit 2 "non-positive max time" "--max-time" \
   ifar-run "$room" --max-time 0 --config-dir "$config"
-expect_bad_input "graph time without a picture" "--graph-at and --graph-window need --graph-png" \
+expect_exit 2 "graph time without a picture" "--graph-at and --graph-window need --graph-png" \
   ifar-run "$room" --graph-at 2 --config-dir "$config"
-expect_bad_input "negative graph time" "--graph-at: must be a number of seconds >= 0" \
+expect_exit 2 "negative graph time" "--graph-at: must be a number of seconds >= 0" \
   ifar-run "$room" --graph-png /tmp/unused.png --graph-at -1 --config-dir "$config"
-expect_bad_input "malformed graph window" "--graph-window: expected X0,Y0,X1,Y1" \
+expect_exit 2 "malformed graph window" "--graph-window: expected X0,Y0,X1,Y1" \
   ifar-run "$room" --graph-png /tmp/unused.png --graph-window 1,2,3 --config-dir "$config"
-expect_bad_input "picture into a missing folder" "--png: cannot write '/nonexistent/run.png': folder '/nonexistent' does not exist" \
+expect_exit 3 "picture into a missing folder" "--png: cannot write '/nonexistent/run.png': folder '/nonexistent' does not exist" \
   ifar-run "$room" --png /nonexistent/run.png --config-dir "$config"
-expect_bad_input "graph picture into a missing folder" "--graph-png: cannot write '/nonexistent/graph.png'" \
+expect_exit 3 "graph picture into a missing folder" "--graph-png: cannot write '/nonexistent/graph.png'" \
   ifar-run "$room" --graph-png /nonexistent/graph.png --config-dir "$config"
 
 # --help works and names the command's options.

@@ -93,7 +93,7 @@ TEST(ShippedConfig, PlannerDaemon)
   EXPECT_EQ(shipped().planner.arrival_radius_m, 0.5);
   EXPECT_EQ(node.prior_graph, "");
   EXPECT_EQ(node.data_port, 2368);
-  EXPECT_EQ(node.vehicle_config, "config/vehicle.yaml");
+  EXPECT_EQ(node.vehicle_config, "vehicle.yaml");
   EXPECT_EQ(node.channels.velodyne_packet, "VELODYNE_PACKET");
   EXPECT_EQ(node.channels.blocked_passage, "BLOCKED_PASSAGE");
   EXPECT_EQ(node.channels.planner_status, "PLANNER_STATUS");
@@ -163,7 +163,7 @@ TEST(ShippedConfig, ExecutiveObstacles)
 TEST(ShippedConfig, Simulator)
 {
   const auto& sim = shipped().sim;
-  EXPECT_EQ(sim.vehicle_config, "config/vehicle.yaml");
+  EXPECT_EQ(sim.vehicle_config, "vehicle.yaml");
   EXPECT_EQ(sim.world, "");
   EXPECT_EQ(sim.simulator.seed, 1U);
   EXPECT_EQ(sim.simulator.physics.step_seconds, 1.0 / 200.0);

@@ -16,7 +16,7 @@ TEST(SimNodeSettings, ReadsTheCheckedInConfig)
   EXPECT_DOUBLE_EQ(settings.simulator.physics.step_seconds, 1.0 / 200.0);
   EXPECT_DOUBLE_EQ(settings.pose_rate_hz, 50.0);
   EXPECT_EQ(settings.command_source, CommandSource::kCan);
-  EXPECT_EQ(settings.can_config, "config/can.yaml");
+  EXPECT_EQ(settings.can_config, "can.yaml");
   root.optional<std::string>("log_level", "");  // read by runDaemon
   EXPECT_NO_THROW(root.rejectUnknownKeys());
 }

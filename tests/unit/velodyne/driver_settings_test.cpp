@@ -30,6 +30,15 @@ TEST(VelodyneDriverSettings, ShippedConfigLoadsCompletely)
   EXPECT_EQ(settings.receive_buffer_bytes, 4194304);
 }
 
+TEST(VelodyneDriverSettings, AwaitedPacketsNameTheSensorOrThePort)
+{
+  DriverSettings settings = loadDriverSettings(ConfigNode::loadString("{}", "v.yaml"));
+  EXPECT_EQ(awaitedPackets(settings), "lidar packets on port 2368");
+  settings = loadDriverSettings(
+      ConfigNode::loadString("sensor_address: 192.168.1.201\ndata_port: 2400\n", "v.yaml"));
+  EXPECT_EQ(awaitedPackets(settings), "lidar packets from 192.168.1.201:2400");
+}
+
 TEST(VelodyneDriverSettings, SensorModelIsAutoUnlessNamed)
 {
   EXPECT_EQ(loadDriverSettings(ConfigNode::loadString("{}", "v.yaml")).sensor_model, SensorModel::kAuto);
