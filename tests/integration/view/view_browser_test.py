@@ -193,9 +193,11 @@ def main():
         state = summary(driver)
 
         metres = scale_bar_metres(state["scaleBar"])
-        before_zoom = driver.script(
-            "const before = window.ifarView.summary().pixelsPerMetre; window.ifarView.zoom(4); return before;")
-        zoomed = wait_for(driver, "the zoomed picture", lambda s: s["drawn"]["frames"] > state["drawn"]["frames"], 5)
+        # The scale and the frame count read in the same script as the zoom: a frame drawn since then is
+        # drawn at the new scale (the page redraws every 100 ms, so a count read earlier proves nothing).
+        before_zoom, frames_at_zoom = driver.script(
+            "const s = window.ifarView.summary(); window.ifarView.zoom(4); return [s.pixelsPerMetre, s.drawn.frames];")
+        zoomed = wait_for(driver, "the zoomed picture", lambda s: s["drawn"]["frames"] > frames_at_zoom, 5)
         zoomed_metres = scale_bar_metres(zoomed["scaleBar"])
         for length, pixels_per_metre in ((metres, state["drawn"]["pixelsPerMetre"]),
                                          (zoomed_metres, zoomed["drawn"]["pixelsPerMetre"])):
