@@ -103,7 +103,7 @@ std::optional<int> parseCommandLine(CLI::App& app, int argc, char** argv)
     app.name(commandName(argv[0]));
   }
   if (argc == 2 && std::string(argv[1]) == "--describe") {
-    std::cout << firstSentence(app.get_description()) << std::endl;
+    std::cout << firstSentence(app.get_description()) << '\n';
     return 0;
   }
   try {

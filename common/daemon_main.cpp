@@ -156,14 +156,14 @@ int runDaemon(int argc, char** argv, const DaemonDescription& description,
     DaemonContext context{config, logger, lcm_url.empty() ? keys.lcm_url : lcm_url};
     return body(context);
   } catch (const ConfigError& error) {
-    std::cerr << "ifar-" << description.name << ": error: " << error.what() << std::endl;
+    std::cerr << "ifar-" << description.name << ": error: " << error.what() << '\n';
     return 2;
   } catch (const std::exception& error) {
     if (logger) {
       logger->critical("stopping on an unexpected error: {}", error.what());
       logger->flush();
     } else {
-      std::cerr << "ifar-" << description.name << ": error: " << error.what() << std::endl;
+      std::cerr << "ifar-" << description.name << ": error: " << error.what() << '\n';
     }
     return 1;
   }

@@ -300,7 +300,7 @@ int main(int argc, char** argv)
     }
   }
   if (json) {
-    std::cout << ifar::runner::summaryJson(summary) << std::endl;
+    std::cout << ifar::runner::summaryJson(summary) << '\n' << std::flush;
   } else {
     const std::string outcome = summary.arrived ? "arrived" : "not arrived: " + summary.reason;
     std::printf(

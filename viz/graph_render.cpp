@@ -193,8 +193,8 @@ std::optional<Window> parseWindow(const std::string& text)
   if (stream.peek() != std::char_traits<char>::eof()) {
     return std::nullopt;
   }
-  const Window window{{std::min(values[0], values[2]), std::min(values[1], values[3])},
-                      {std::max(values[0], values[2]), std::max(values[1], values[3])}};
+  Window window{{std::min(values[0], values[2]), std::min(values[1], values[3])},
+                {std::max(values[0], values[2]), std::max(values[1], values[3])}};
   if (!(window.high.x() > window.low.x() && window.high.y() > window.low.y())) {
     return std::nullopt;
   }

@@ -38,6 +38,7 @@ std::string statusName(baselines::BaselineStatus status)
 std::vector<geometry::Point> positions(const graph::SearchResult& result)
 {
   std::vector<geometry::Point> points;
+  points.reserve(result.path.size());
   for (const graph::PathPoint& point : result.path) {
     points.push_back(point.position);
   }

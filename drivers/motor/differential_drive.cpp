@@ -6,7 +6,7 @@
 namespace ifar::motor {
 namespace {
 
-const DifferentialDriveSettings& checked(const DifferentialDriveSettings& settings)
+DifferentialDriveSettings checked(const DifferentialDriveSettings& settings)
 {
   for (const std::uint8_t node_id : {settings.left.node_id, settings.right.node_id}) {
     if (node_id < 1 || node_id > 127) {

@@ -86,7 +86,7 @@ void MotorClient::onFrame(const can::Frame& frame, std::int64_t now_us)
       ++bad_frames_;
       return;
     }
-    nmt_state_ = *state;
+    nmt_state_ = state;
     last_heartbeat_us_ = now_us;
     if (*state == NmtState::kBootUp) {
       statusword_.reset();  // the drive restarted: what it said before, or was told, no longer holds

@@ -180,10 +180,14 @@ PcapReader PcapReader::open(const std::string& path)
   }
   std::vector<std::uint8_t> first(kFileHeaderSize);
   first.resize(std::fread(first.data(), 1, first.size(), file));
-  std::rewind(file);
+  if (std::fseek(file, 0, SEEK_SET) != 0) {
+    std::fclose(file);
+    return PcapReader(PcapError::kCannotOpen);
+  }
   PcapReader reader(PcapError::kNone);
   reader.openWith(file, first);
-  return reader;
+  // openWith closes the file or hands it to libpcap, which closes it with the handle.
+  return reader;  // NOLINT(clang-analyzer-unix.Stream)
 }
 
 PcapReader::PcapReader(std::unique_ptr<std::istream> stream)

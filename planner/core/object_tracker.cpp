@@ -121,6 +121,7 @@ TrackingResult ObjectTracker::update(const std::vector<geometry::Polygon>& outli
     boxes.push_back(boxOf(outline));
   }
   std::vector<Box> track_boxes;
+  track_boxes.reserve(tracks_.size());
   for (const Track& track : tracks_) {
     track_boxes.push_back(boxOf(track.outline));
   }

@@ -1,11 +1,13 @@
 #include "planner/graph/graph_file.hpp"
 
+#include <charconv>
 #include <cinttypes>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <system_error>
 #include <vector>
 
 namespace ifar::graph {
@@ -123,7 +125,9 @@ GraphLoadResult parseGraph(const std::string& text, const std::string& source_na
     return fail(0, "missing checksum line (file truncated?)");
   }
   std::uint64_t stored = 0;
-  if (std::sscanf(checksum_line.c_str() + 9, "%16" SCNx64, &stored) != 1 || checksum_line.size() != 9 + 16) {
+  const char* const digits_end = checksum_line.data() + checksum_line.size();
+  const std::from_chars_result parsed = std::from_chars(checksum_line.data() + 9, digits_end, stored, 16);
+  if (checksum_line.size() != 9 + 16 || parsed.ec != std::errc() || parsed.ptr != digits_end) {
     return fail(0, "malformed checksum line");
   }
   if (stored != fnv1a(text, checksum_start)) {

@@ -189,6 +189,7 @@ std::optional<Point> freePointNear(const World& world, const Point& target, cons
                                    double clearance, double spacing)
 {
   std::vector<Polygon> outlines;
+  outlines.reserve(world.obstacles.size() + world.objects.size());
   for (const auto& obstacle : world.obstacles) {
     outlines.push_back(obstacle.outline);
   }

@@ -47,6 +47,7 @@ WorldFormat detectWorldFormat(const std::string& path, WorldFormat other_names)
       }
     } catch (const common::ConfigError&) {
       // The world file loader reads it again and names the problem.
+      return WorldFormat::WorldYaml;
     }
     return WorldFormat::WorldYaml;
   }

@@ -45,7 +45,7 @@ std::string externalList()
 
 int fail(const std::string& message)
 {
-  std::cerr << "ifar: error: " << message << std::endl;
+  std::cerr << "ifar: error: " << message << '\n';
   return 1;
 }
 
@@ -62,7 +62,7 @@ int runSpy(const std::string& jar_override, const std::string& url)
   if (!url.empty()) {
     setenv("LCM_DEFAULT_URL", url.c_str(), 1);
   }
-  std::cerr << "ifar spy: lcm-spy with the project's types from " << jar << std::endl;
+  std::cerr << "ifar spy: lcm-spy with the project's types from " << jar << '\n';
   return fail(replaceProcess(ifar::tools::lcmJavaCommand({chart_jar, jar}, "lcm.spy.Spy", {})));
 }
 

@@ -101,10 +101,10 @@ int main(int argc, char** argv)
       throw ifar::common::ConfigError(config_path + ": no such launch file here, nor launch/" + config_path +
                                       "[.yaml] on the configuration search path");
     }
-    std::cout << "ifar launch: " << found->path << " (" << found->origin << ")" << std::endl;
+    std::cout << "ifar launch: " << found->path << " (" << found->origin << ")\n" << std::flush;
     spec = ifar::launch::loadLaunchSpec(ifar::common::ConfigNode::loadFile(found->path));
   } catch (const ifar::common::ConfigError& error) {
-    std::cerr << "ifar-launch: error: " << error.what() << std::endl;
+    std::cerr << "ifar-launch: error: " << error.what() << '\n';
     return 2;
   }
   std::error_code error;

@@ -124,6 +124,7 @@ void Supervisor::start(Child& child)
       setenv(key.c_str(), value.c_str(), 1);
     }
     std::vector<char*> argv;
+    argv.reserve(child.spec.command.size() + 1);
     for (const auto& argument : child.spec.command) {
       argv.push_back(const_cast<char*>(argument.c_str()));  // execvp predates const
     }

@@ -30,7 +30,7 @@ int main(int argc, char** argv)
   }
   lcm::LCM bus(ifar::bus::resolveLcmUrl(url));
   if (!bus.good()) {
-    std::cerr << "ifar-estop: error: cannot start LCM" << std::endl;
+    std::cerr << "ifar-estop: error: cannot start LCM\n";
     return 1;
   }
   sigset_t signals;
@@ -43,7 +43,8 @@ int main(int argc, char** argv)
   stop.source = "ifar estop";
   stop.reason = reason;
   std::cout << (release ? "releasing" : "engaging") << " the emergency stop"
-            << (once || release ? "" : " (resending until Ctrl-C)") << std::endl;
+            << (once || release ? "" : " (resending until Ctrl-C)") << '\n'
+            << std::flush;
   while (true) {
     stop.utime = ifar::common::nowMicroseconds();
     bus.publish("E_STOP", &stop);

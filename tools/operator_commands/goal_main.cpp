@@ -76,14 +76,13 @@ int main(int argc, char** argv)
     return *exit_code;
   }
   if (position.empty() && !cancel) {
-    std::cerr << "ifar-goal: error: give the goal as X,Y in metres, e.g. ifar goal 8,26" << std::endl;
+    std::cerr << "ifar-goal: error: give the goal as X,Y in metres, e.g. ifar goal 8,26\n";
     return 2;
   }
   if (!std::isfinite(wait_s) || wait_s < 0.0 ||
       !(std::isfinite(delay_s) && delay_s >= 0.0 && delay_s <= 3600.0)) {
     std::cerr << "ifar-goal: error: --wait and --delay must be finite numbers, --wait not negative, --delay "
-                 "between 0 and 3600 s"
-              << std::endl;
+                 "between 0 and 3600 s\n";
     return 2;
   }
   const double x = position.empty() ? 0.0 : position[0];
@@ -96,7 +95,7 @@ int main(int argc, char** argv)
   try {
     loop = std::make_unique<ifar::bus::RunLoop>(ifar::bus::resolveLcmUrl(url), logger);
   } catch (const std::exception& error) {
-    std::cerr << "ifar-goal: error: " << error.what() << std::endl;
+    std::cerr << "ifar-goal: error: " << error.what() << '\n';
     return 1;
   }
 
@@ -120,8 +119,8 @@ int main(int argc, char** argv)
       ++sent;
     }
   });
-  std::cout << (cancel ? "cancelled goal " : "sent goal ") << goal.goal_id << " (" << x << ", " << y << ")"
-            << std::endl;
+  std::cout << (cancel ? "cancelled goal " : "sent goal ") << goal.goal_id << " (" << x << ", " << y << ")\n"
+            << std::flush;
 
   const bool waiting = wait_s > 0.0 && !cancel;
   bool arrived = false;
@@ -152,7 +151,7 @@ int main(int argc, char** argv)
   }
   if (arrived) {
     std::cout << "goal " << goal.goal_id << " reached (" << last_status.pushes << " pushes, "
-              << last_status.replans << " replans)" << std::endl;
+              << last_status.replans << " replans)\n";
     return 0;
   }
   std::cout << "goal " << goal.goal_id << " not reached within " << wait_s << " s";
@@ -161,6 +160,6 @@ int main(int argc, char** argv)
   } else {
     std::cout << "; no EXEC_STATUS for this goal";
   }
-  std::cout << std::endl;
+  std::cout << '\n';
   return 1;
 }

@@ -199,7 +199,8 @@ int setUpInterface(const ifar::can::BusSettings& settings, const Options& option
   }
   for (const ifar::can::CommandLine& command :
        up ? ifar::can::interfaceUpCommands(settings) : ifar::can::interfaceDownCommands(settings)) {
-    std::cout << ifar::can::commandText(command) << std::endl;
+    // Flushed before the command runs, so its own output follows its line.
+    std::cout << ifar::can::commandText(command) << '\n' << std::flush;
     if (options.dry_run) {
       continue;
     }
