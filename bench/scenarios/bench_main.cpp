@@ -401,6 +401,19 @@ int main(int argc, char** argv)
   } else {
     std::cerr << "ifar bench: " << vehicle_path << " not found, using the default vehicle\n";
   }
+  // A scenario's goal counts as reached within the executive's tolerance: goals nearer than that to an
+  // obstacle are still reachable, ones under a movable object are not without pushing.
+  double goal_tolerance_m = 0.3;
+  const std::string executive_path = config_dir + "/executive.yaml";
+  if (std::ifstream(executive_path).good()) {
+    try {
+      goal_tolerance_m = ifar::common::ConfigNode::loadFile(executive_path)
+                             .optional<double>("goal_tolerance_m", goal_tolerance_m);
+    } catch (const std::exception& error) {
+      std::cerr << "ifar bench: " << error.what() << "\n";
+      return 1;
+    }
+  }
   scenarios::MapSettings map_settings;
   map_settings.vehicle = vehicle;
   map_settings.inflation_m = 0.5 * vehicle.width_m;
@@ -483,7 +496,7 @@ int main(int argc, char** argv)
       selection.min_optimal = scenarios::minimumOptimalLength(kind);
       std::vector<scenarios::Task> world_tasks;
       if (goal_sequences) {
-        world_tasks = scenarios::goalSequenceTasks(world.world, maps);
+        world_tasks = scenarios::goalSequenceTasks(world.world, maps, goal_tolerance_m);
         if (static_cast<int>(world_tasks.size()) > goals_left) {
           world_tasks.resize(static_cast<std::size_t>(goals_left));
         }

@@ -7,7 +7,8 @@
 
 namespace ifar::scenarios {
 
-std::vector<Task> goalSequenceTasks(const sim::World& world, const ScenarioMaps& maps)
+std::vector<Task> goalSequenceTasks(const sim::World& world, const ScenarioMaps& maps,
+                                    double goal_tolerance_m)
 {
   std::vector<Task> tasks;
   graph::SearchScratch scratch;
@@ -22,8 +23,8 @@ std::vector<Task> goalSequenceTasks(const sim::World& world, const ScenarioMaps&
     // sizes the run's time limit: such a goal is unreachable whatever the vehicle does.
     task.optimal = std::isfinite(optimum.length) ? optimum.length : (task.goal - task.start).norm();
     task.start_heading = index == 0 ? world.start.heading : optimum.heading;
-    task.achievable = lengthOn(maps.pushing, task.start, task.goal, scratch);
-    task.without_pushing = lengthOn(maps.far, task.start, task.goal, scratch);
+    task.achievable = lengthOn(maps.pushing, task.start, task.goal, scratch, goal_tolerance_m);
+    task.without_pushing = lengthOn(maps.far, task.start, task.goal, scratch, goal_tolerance_m);
     task.reachable_with_pushing = std::isfinite(task.achievable) && std::isfinite(optimum.length);
     task.from_world = true;
     tasks.push_back(task);

@@ -13,7 +13,10 @@
 
 namespace ifar::scenarios {
 
-/// Ids "g0", "g1", ... in the world's goal order.
-std::vector<Task> goalSequenceTasks(const sim::World& world, const ScenarioMaps& maps);
+/// Ids "g0", "g1", ... in the world's goal order. A goal the known-map search has to move by more than
+/// `goal_tolerance_m` (the executive's: the goal counts as reached within it) is not reached that way:
+/// under a movable object, only pushing reaches it (without_pushing NaN).
+std::vector<Task> goalSequenceTasks(const sim::World& world, const ScenarioMaps& maps,
+                                    double goal_tolerance_m);
 
 }  // namespace ifar::scenarios

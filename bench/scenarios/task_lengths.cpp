@@ -16,10 +16,14 @@ ExactOptimum exactOptimum(const ScenarioMaps& maps, const geometry::Point& start
 }
 
 double lengthOn(const PlanningGraph& map, const geometry::Point& start, const geometry::Point& goal,
-                graph::SearchScratch& scratch)
+                graph::SearchScratch& scratch, double goal_tolerance_m)
 {
   const graph::SearchResult result = graph::findPath(map.search, map.map.obstacles, start, goal, scratch);
-  return result.status == graph::SearchStatus::Found ? result.length : NAN;
+  if (result.status != graph::SearchStatus::Found ||
+      (result.goal_snapped && (result.goal - goal).norm() > goal_tolerance_m)) {
+    return NAN;
+  }
+  return result.length;
 }
 
 }  // namespace ifar::scenarios

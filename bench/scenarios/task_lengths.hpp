@@ -4,6 +4,7 @@
 // achievable way with only the objects too heavy to push, or the way that never pushes).
 
 #include <cmath>
+#include <limits>
 
 #include "bench/scenarios/scenario_maps.hpp"
 #include "common/geometry/point.hpp"
@@ -23,8 +24,11 @@ struct ExactOptimum {
 ExactOptimum exactOptimum(const ScenarioMaps& maps, const geometry::Point& start, const geometry::Point& goal,
                           graph::SearchScratch& scratch, bool allow_snapping = false);
 
-/// Length of the shortest path on `map`; NaN when there is none.
+/// Length of the shortest path on `map`; NaN when there is none, or when the search had to move the goal
+/// off an obstacle by more than `goal_tolerance_m` (a goal under a movable object is reached only by
+/// pushing it away).
 double lengthOn(const PlanningGraph& map, const geometry::Point& start, const geometry::Point& goal,
-                graph::SearchScratch& scratch);
+                graph::SearchScratch& scratch,
+                double goal_tolerance_m = std::numeric_limits<double>::infinity());
 
 }  // namespace ifar::scenarios
