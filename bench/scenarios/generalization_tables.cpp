@@ -163,14 +163,25 @@ std::string tableGeneralization(const std::vector<ResultRow>& rows)
         if (summary.runs == 0) {
           continue;
         }
-        text += "| " + kind + " | " + modeName(planner) + " | " + profile + " | " +
-                std::to_string(summary.runs) + " | " + std::to_string(summary.arrived) + " | " +
-                std::to_string(summary.arrived_reachable) + "/" + std::to_string(summary.reachable) + " | " +
-                std::to_string(summary.never_pushing) + " | " + fixed(summary.spl_achievable, 3) + " | " +
-                fixed(summary.spl_optimal, 3) + " | " + std::to_string(summary.no_path_pushing_required) +
-                " | " + std::to_string(summary.no_path) + " (" +
-                std::to_string(summary.no_path_never_pushing) + ") | " + std::to_string(summary.time_limit) +
-                " | " + std::to_string(summary.failed) + " |\n";
+        const std::vector<std::string> cells{
+            kind,
+            modeName(planner),
+            profile,
+            std::to_string(summary.runs),
+            std::to_string(summary.arrived),
+            std::to_string(summary.arrived_reachable) + "/" + std::to_string(summary.reachable),
+            std::to_string(summary.never_pushing),
+            fixed(summary.spl_achievable, 3),
+            fixed(summary.spl_optimal, 3),
+            std::to_string(summary.no_path_pushing_required),
+            std::to_string(summary.no_path) + " (" + std::to_string(summary.no_path_never_pushing) + ")",
+            std::to_string(summary.time_limit),
+            std::to_string(summary.failed)};
+        text += "|";
+        for (const std::string& value : cells) {
+          text.append(" ").append(value).append(" |");
+        }
+        text += "\n";
       }
     }
   }
@@ -190,7 +201,7 @@ std::string tableGeneralization(const std::vector<ResultRow>& rows)
   if (sensing.empty()) {
     return text;
   }
-  const std::string first = sensing.front();
+  const std::string& first = sensing.front();
   const std::vector<const ResultRow*> far_goals = drivenRows(rows, "namosim", "far", first);
   const std::vector<const ResultRow*> our_goals = drivenRows(rows, "namosim", "ours", first);
   if (!our_goals.empty() || !far_goals.empty()) {

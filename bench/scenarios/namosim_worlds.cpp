@@ -57,7 +57,7 @@ WorldSetResult namosimWorlds(const std::string& folder, double vehicle_width_m)
     for (const std::string& warning : first.warnings) {
       // Every robot with goals gets a world of its own here, so "robot ... not simulated" is not so.
       if (driven_robots.size() < 2 || warning.find("not simulated") == std::string::npos) {
-        result.notes.push_back(stem + ": " + warning);
+        result.notes.push_back(std::string(stem).append(": ").append(warning));
       }
     }
     for (const std::string& robot : driven_robots) {
@@ -68,10 +68,14 @@ WorldSetResult namosimWorlds(const std::string& folder, double vehicle_width_m)
         import = sim::importNamosimSvg(file.string(), settings);
       }
       if (!import.world.ok()) {
-        result.notes.push_back(stem + " robot " + robot + ": not imported: " + import.world.error());
+        result.notes.push_back(std::string(stem)
+                                   .append(" robot ")
+                                   .append(robot)
+                                   .append(": not imported: ")
+                                   .append(import.world.error()));
         continue;
       }
-      const std::string name = several ? stem + "-" + robot : stem;
+      const std::string name = several ? std::string(stem).append("-").append(robot) : stem;
       sim::World world = import.world.world();
       world.name = name;
       const int goals = static_cast<int>(world.goals.size());
