@@ -19,6 +19,10 @@ std::string kindName(ScenarioKind kind)
       return "blocked_office";
     case ScenarioKind::BlockedTunnel:
       return "blocked_tunnel";
+    case ScenarioKind::Namosim:
+      return "namosim";
+    case ScenarioKind::WillowPairs:
+      return "willow_pairs";
   }
   return "unknown";
 }
@@ -36,14 +40,19 @@ std::optional<ScenarioKind> parseKind(const std::string& text)
 const std::vector<ScenarioKind>& allKinds()
 {
   static const std::vector<ScenarioKind> kinds{
-      ScenarioKind::Room,   ScenarioKind::RoomObjects,   ScenarioKind::Office,       ScenarioKind::Willow,
-      ScenarioKind::Tunnel, ScenarioKind::BlockedOffice, ScenarioKind::BlockedTunnel};
+      ScenarioKind::Room,          ScenarioKind::RoomObjects, ScenarioKind::Office,
+      ScenarioKind::Willow,        ScenarioKind::Tunnel,      ScenarioKind::BlockedOffice,
+      ScenarioKind::BlockedTunnel, ScenarioKind::Namosim,     ScenarioKind::WillowPairs};
   return kinds;
 }
 
 double minimumOptimalLength(ScenarioKind kind)
 {
   switch (kind) {
+    case ScenarioKind::Namosim:
+      return 0.0;
+    case ScenarioKind::WillowPairs:
+      return 10.0;
     case ScenarioKind::Room:
     case ScenarioKind::RoomObjects:
       return 15.0;

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <random>
 
+#include "bench/scenarios/namosim_worlds.hpp"
 #include "common/grid_map/readers.hpp"
 #include "sim/generators/generators.hpp"
 #include "sim/importers/grid_importer.hpp"
@@ -363,6 +364,24 @@ WorldSetResult scenarioWorlds(ScenarioKind kind, const WorldSetSettings& setting
         result.notes.push_back("willow map '" + settings.willow_map + "' absent: kind skipped");
       }
       break;
+    case ScenarioKind::WillowPairs:
+      if (fileExists(settings.willow_map)) {
+        sim::WorldResult plain = sim::importGridMapFile(settings.willow_map, sim::GridImportSettings{});
+        if (plain.ok()) {
+          plain.world().name = "willow_full";
+        }
+        add("willow_full", plain, settings.tasks);
+      } else {
+        result.notes.push_back("willow map '" + settings.willow_map + "' absent: kind skipped");
+      }
+      break;
+    case ScenarioKind::Namosim: {
+      WorldSetResult namosim = namosimWorlds(settings.namosim_folder, settings.vehicle_width_m);
+      result.worlds = std::move(namosim.worlds);
+      result.notes.insert(result.notes.end(), namosim.notes.begin(), namosim.notes.end());
+      result.error = namosim.error;
+      break;
+    }
     case ScenarioKind::Office:
       // Offices 4s-1 | 4s and 4s+1 | 4s+2.
       for (int pair = 0; pair < 2 && result.ok(); ++pair) {

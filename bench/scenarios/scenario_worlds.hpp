@@ -3,7 +3,9 @@
 // generator (330 m x 270 m); Office generated offices: the generator's office is 48 m x 24 m, too small
 // for tasks longer than 80 m, so two generated offices are joined end to end along their corridors
 // (96 m x 24 m). Willow is the Willow Garage plan with movable boxes placed in its doors and corridors
-// by seed.
+// by seed. The generalization kinds: namosim takes every scenario SVG of a folder (namosim_worlds.hpp);
+// willow_pairs the full Willow Garage map as it is, without objects (its tasks are drawn pairs,
+// clear_pairs.hpp).
 
 #include <cstdint>
 #include <string>
@@ -23,8 +25,10 @@ struct ScenarioWorld {
 
 struct WorldSetSettings {
   std::uint64_t seed = 1;
-  int tasks = 10;          // tasks of the kind, shared out over its worlds
-  std::string willow_map;  // map_server .yaml of the Willow Garage plan; empty or missing: kind skipped
+  int tasks = 10;                // tasks of the kind, shared out over its worlds
+  std::string willow_map;        // map_server .yaml of the Willow Garage plan; empty or missing: kind skipped
+  std::string namosim_folder;    // namosim scenario SVGs; empty, missing or without one: kind skipped
+  double vehicle_width_m = 0.7;  // a namosim robot is scaled to this width
 };
 
 struct WorldSetResult {

@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "bench/scenarios/generalization_tables.hpp"
 #include "bench/scenarios/scenario_kind.hpp"
 #include "bench/scenarios/search_suite.hpp"
 #include "common/percentile.hpp"
@@ -615,6 +616,7 @@ std::string targetCheck(const std::vector<ResultRow>& rows)
   }
   text += interactionGainTargets(rows, runner);
   text += sensingTargets(rows);
+  text += generalizationTargets(rows);
   return text;
 }
 

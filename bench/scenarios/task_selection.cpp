@@ -3,6 +3,7 @@
 #include <cmath>
 #include <random>
 
+#include "bench/scenarios/task_lengths.hpp"
 #include "sim/world/world_geometry.hpp"
 
 namespace ifar::scenarios {
@@ -29,32 +30,6 @@ bool standable(const sim::World& world, const ScenarioMaps& maps, const geometry
   return true;
 }
 
-struct Optimum {
-  double length = NAN;
-  double heading = 0.0;
-};
-
-Optimum exactOptimum(const ScenarioMaps& maps, const geometry::Point& start, const geometry::Point& goal,
-                     graph::SearchScratch& scratch)
-{
-  const graph::SearchResult result =
-      graph::findPath(maps.exact_search, maps.exact.obstacles, start, goal, scratch);
-  if (result.status != graph::SearchStatus::Found || result.start_snapped || result.goal_snapped ||
-      result.path.size() < 2) {
-    return {};
-  }
-  const geometry::Point first_leg = result.path[1].position - result.path[0].position;
-  return {result.length, std::atan2(first_leg.y(), first_leg.x())};
-}
-
-/// Length of the shortest path on the map with only the objects too heavy to push; NaN when there is none.
-double lengthOn(const PlanningGraph& map, const geometry::Point& start, const geometry::Point& goal,
-                graph::SearchScratch& scratch)
-{
-  const graph::SearchResult result = graph::findPath(map.search, map.map.obstacles, start, goal, scratch);
-  return result.status == graph::SearchStatus::Found ? result.length : NAN;
-}
-
 }  // namespace
 
 std::vector<Task> selectTasks(const sim::World& world, const ScenarioMaps& maps,
@@ -65,6 +40,7 @@ std::vector<Task> selectTasks(const sim::World& world, const ScenarioMaps& maps,
     return tasks;
   }
   graph::SearchScratch scratch;
+  int passed_over = 0;
   const auto consider = [&](const geometry::Point& start, const geometry::Point& goal, bool from_world) {
     if (!standable(world, maps, start, settings.min_clearance_m) ||
         !standable(world, maps, goal, settings.min_clearance_m)) {
@@ -76,12 +52,11 @@ std::vector<Task> selectTasks(const sim::World& world, const ScenarioMaps& maps,
     if (component < 0 || component != vehicleComponent(maps, goal)) {
       return;
     }
-    const Optimum optimum = exactOptimum(maps, start, goal, scratch);
+    const ExactOptimum optimum = exactOptimum(maps, start, goal, scratch);
     if (!std::isfinite(optimum.length) || optimum.length <= settings.min_optimal) {
       return;
     }
     Task task;
-    task.id = "t" + std::to_string(tasks.size());
     task.start = start;
     task.start_heading = optimum.heading;
     task.goal = goal;
@@ -90,6 +65,14 @@ std::vector<Task> selectTasks(const sim::World& world, const ScenarioMaps& maps,
     task.without_pushing = lengthOn(maps.far, start, goal, scratch);
     task.reachable_with_pushing = std::isfinite(task.achievable);
     task.from_world = from_world;
+    if (settings.require_achievable && !task.reachable_with_pushing) {
+      return;
+    }
+    if (passed_over < settings.skip_first) {
+      ++passed_over;
+      return;
+    }
+    task.id = "t" + std::to_string(tasks.size());
     tasks.push_back(task);
   };
   if (settings.include_world_task) {

@@ -42,6 +42,12 @@ struct TaskSelectionSettings {
       0.6;  // start/goal this far from static obstacles and objects (vehicle half diagonal)
   int max_attempts = 20000;
   bool include_world_task = true;
+  /// Pairs with no achievable way (objects too heavy to push close it) are left out, not kept as
+  /// unreachable.
+  bool require_achievable = false;
+  /// The first this many pairs that qualify are passed over: one stream of pairs can be shared out in
+  /// disjoint blocks (clear_pairs.hpp).
+  int skip_first = 0;
 };
 
 std::vector<Task> selectTasks(const sim::World& world, const ScenarioMaps& maps,

@@ -63,7 +63,7 @@ TEST(JoinOffices, RefusesWorldsThatAreNotGeneratorOffices)
 TEST(ScenarioWorlds, QuotasAddUpToTheTaskCount)
 {
   for (const ScenarioKind kind : {ScenarioKind::Room, ScenarioKind::RoomObjects, ScenarioKind::Office}) {
-    const WorldSetResult set = scenarioWorlds(kind, {1, 10, ""});
+    const WorldSetResult set = scenarioWorlds(kind, {1, 10, "", "", 0.7});
     ASSERT_TRUE(set.ok()) << set.error;
     int quota = 0;
     for (const ScenarioWorld& world : set.worlds) {
@@ -75,7 +75,8 @@ TEST(ScenarioWorlds, QuotasAddUpToTheTaskCount)
 
 TEST(ScenarioWorlds, WillowIsSkippedWithANoteWhenTheMapIsAbsent)
 {
-  const WorldSetResult set = scenarioWorlds(ScenarioKind::Willow, {1, 10, "/nonexistent/willow.yaml"});
+  const WorldSetResult set =
+      scenarioWorlds(ScenarioKind::Willow, {1, 10, "/nonexistent/willow.yaml", "", 0.7});
   EXPECT_TRUE(set.ok());
   EXPECT_TRUE(set.worlds.empty());
   ASSERT_EQ(set.notes.size(), 1u);
@@ -105,7 +106,7 @@ TEST(ScenarioWorlds, NoTwoSuiteSeedsShareAWorld)
   for (const ScenarioKind kind : {ScenarioKind::Room, ScenarioKind::Office, ScenarioKind::BlockedOffice}) {
     std::set<std::string> names;
     for (const std::uint64_t seed : {1, 2, 3}) {
-      const WorldSetResult set = scenarioWorlds(kind, {seed, 4, ""});
+      const WorldSetResult set = scenarioWorlds(kind, {seed, 4, "", "", 0.7});
       ASSERT_TRUE(set.ok()) << set.error;
       ASSERT_EQ(set.worlds.size(), 2u);
       for (const ScenarioWorld& world : set.worlds) {
@@ -114,11 +115,11 @@ TEST(ScenarioWorlds, NoTwoSuiteSeedsShareAWorld)
     }
   }
   // Seed 1 keeps the worlds it always had.
-  const WorldSetResult office = scenarioWorlds(ScenarioKind::Office, {1, 4, ""});
+  const WorldSetResult office = scenarioWorlds(ScenarioKind::Office, {1, 4, "", "", 0.7});
   ASSERT_TRUE(office.ok()) << office.error;
   EXPECT_EQ(office.worlds[0].name, "office2x-3+4");
   EXPECT_EQ(office.worlds[1].name, "office2x-5+6");
-  EXPECT_EQ(scenarioWorlds(ScenarioKind::Room, {1, 4, ""}).worlds[1].name, "room-2");
+  EXPECT_EQ(scenarioWorlds(ScenarioKind::Room, {1, 4, "", "", 0.7}).worlds[1].name, "room-2");
 }
 
 TEST(ScenarioWorlds, NeverPushingInTheBlockedOfficeCostsALongWayRound)
