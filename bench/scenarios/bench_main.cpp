@@ -1,4 +1,4 @@
-// ifar bench: the scenario suite of issue 8 and the generalization kinds. Per kind (room, room_objects,
+// ifar bench: the scenario suite and its generalization kinds. Per kind (room, room_objects,
 // office, willow, tunnel, blocked_office, blocked_tunnel, namosim, willow_pairs) it builds the worlds,
 // selects the tasks, runs every planner on them (Tables I and II, planned paths) and, through the headless
 // runner, FAR mode and ours in closed loop (Tables II and III, driven). Writes every row as a JSON line,
@@ -195,7 +195,7 @@ struct KeptWorld {
 int main(int argc, char** argv)
 {
   CLI::App app{
-      "The issue 8 scenario suite: worlds and tasks per kind, Table I (search time: grid A*, RRT*,\n"
+      "The scenario suite: worlds and tasks per kind, Table I (search time: grid A*, RRT*,\n"
       "BIT*, FAR mode, ours), Table II (SPL) and Table III (system level, headless runner)."};
   std::string kind_list =
       "room,room_objects,office,willow,tunnel,blocked_office,blocked_tunnel,namosim,willow_pairs";
@@ -697,7 +697,7 @@ int main(int argc, char** argv)
               << scenarios::tablePlannerFrames(rows, jobs_count) << "\n"
               << scenarios::tableLosses(rows) << "\n"
               << scenarios::tableGeneralization(rows) << "\n"
-              << "Targets (issue 8):\n\n"
+              << "Targets:\n\n"
               << scenarios::targetCheck(rows);
   if (!notes.empty()) {
     tables_text << "\nNotes:\n\n";
