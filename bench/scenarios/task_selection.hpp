@@ -5,6 +5,7 @@
 // threshold. The world's own start -> goal comes first when it qualifies, then seeded random pairs.
 // Deterministic: the same world, maps and settings give the same tasks on every platform.
 
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -32,6 +33,14 @@ struct Task {
   /// pushing can save on the task.
   double without_pushing = 0.0;
   bool from_world = false;  // the world's own start -> goal
+
+  /// The length a run's time budget is given for: the achievable way where it is known and longer than
+  /// the exact optimum (a point's optimum can squeeze through gaps narrower than the vehicle, and the
+  /// vehicle has to drive round), else the optimum.
+  double budgetLength() const
+  {
+    return std::isfinite(achievable) && achievable > optimal ? achievable : optimal;
+  }
 };
 
 struct TaskSelectionSettings {
