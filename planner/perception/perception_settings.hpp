@@ -23,10 +23,8 @@ struct PerceptionSettings {
   /// 101..255 on a VLP-16); used when no detector polygons are given.
   float movable_reflectivity_threshold = 101.0F;
   /// A point's tag is its neighbourhood's when most returns within cells this wide around it disagree
-  /// with it (metres; 0 = each point by its own reflectivity; classification.hpp, TagReading). The vote
-  /// spans 3 cells: small enough that a wall standing within a box length of a tagged face (a door post
-  /// beside a box plugging the door, the wall above a low box) does not outvote the face's own returns.
-  double tag_neighbourhood_m = 0.075;
+  /// with it (metres; 0 = each point by its own reflectivity; classification.hpp, TagReading).
+  double tag_neighbourhood_m = 0.15;
   /// The vehicle-centred local layer: square side and cell size (metres). Twice the lidar's range, so
   /// the layer holds all the sensor can see: where it cuts a remembered wall, the cut corner is out of
   /// sight and behind the vehicle (a cut that moves with the vehicle makes the route flip between ways).

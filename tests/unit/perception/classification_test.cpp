@@ -1,7 +1,5 @@
 #include "planner/perception/classification.hpp"
 
-#include "planner/perception/perception_settings.hpp"
-
 #include <gtest/gtest.h>
 
 namespace ifar::perception {
@@ -32,42 +30,6 @@ TEST(Classification, ByReflectivityThreshold)
 
 // A face of a tagged object with one missed return, a wall with one false tag, and an object standing
 // against the wall: the lone dissenters take their neighbourhood's class, the touching faces keep theirs.
-// A box plugging a door, seen from close by: its face's top (0.6-0.8 m; lower returns fall inside the
-// lidar's minimum range) stands 0.15 m in front of the door's wall line, whose face above the box (0.8-1.2 m)
-// returns many more points, and one return of the face in twenty misses its tag. With the default
-// neighbourhood every face return is movable and every wall return background; were the wall's returns
-// counted with the face's, the face's end beside the door post would become wall and close the door.
-TEST(Classification, DefaultNeighbourhoodKeepsABoxFaceBesideADoorPost)
-{
-  std::vector<WorldPoint> points;
-  int face_return = 0;
-  for (int column = 0; column <= 90; ++column) {  // the box face, x 2.35 .. 3.25 at y 13.40
-    for (int row = 0; row < 3; ++row) {
-      WorldPoint point = pointAt(2.35 + 0.01 * column, 13.40, face_return % 20 == 7 ? 60.0F : 230.0F);
-      point.position_world.z() = 0.6 + 0.1 * row;
-      points.push_back(point);
-      ++face_return;
-    }
-  }
-  for (int column = 0; column <= 40; ++column) {  // the wall line beside the door, x 1.90 .. 2.30 at y 13.55
-    for (int row = 0; row < 9; ++row) {
-      WorldPoint point = pointAt(1.90 + 0.01 * column, 13.55, 51.0F);
-      point.position_world.z() = 0.8 + 0.05 * row;
-      points.push_back(point);
-    }
-  }
-  const PerceptionSettings defaults;
-  const ClassifiedPoints voted = classifyByReflectivity(points, tagReading(defaults));
-  for (const geometry::Point& point : voted.background) {
-    EXPECT_GT(point.y(), 13.5) << "face return at x " << point.x() << " read as wall";
-  }
-  for (const geometry::Point& point : voted.movable) {
-    EXPECT_LT(point.y(), 13.5) << "wall return at x " << point.x() << " read as movable";
-  }
-  EXPECT_EQ(voted.movable.size(), 91U * 3U);
-  EXPECT_EQ(voted.background.size(), 41U * 9U);
-}
-
 TEST(Classification, NeighbourhoodOverrulesLoneTagErrors)
 {
   std::vector<WorldPoint> points;
