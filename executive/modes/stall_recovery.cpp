@@ -18,7 +18,9 @@ StallRecovery::StallRecovery(const ExecutiveSettings& settings, const Differenti
       reverse_speed_(settings.pusher.reverse_speed),
       squeeze_clearance_m_(settings.pushed_object.guard_clearance_m),
       max_turn_rate_(settings.approach.control.max_angular_velocity),
-      turn_gain_(settings.approach.control.angular_gain)
+      turn_gain_(settings.approach.control.angular_gain),
+      escape_standstill_(settings.stall_recovery.still_distance_m, settings.stall_recovery.still_turn_rad,
+                         settings.stall_recovery.standstill_timeout_s)
 {
 }
 
@@ -29,6 +31,7 @@ void StallRecovery::beginStallEscape()
   reversing_ = false;
   turn_heading_.reset();
   start_.reset();
+  escape_flipped_ = false;
 }
 
 StallRecovery::Next StallRecovery::step(const CycleView& view, const std::optional<WayOn>& way_on,
@@ -105,6 +108,7 @@ StallRecovery::Next StallRecovery::escape(const CycleView& view, const std::opti
     reversing = reverseToward(view, way_on);
     reversing_ = reversing.has_value();
     escape_sign_ = reversing_ || back >= ahead ? -1.0 : 1.0;
+    escape_standstill_.anchor(view);
   } else if (reversing_) {
     reversing = reverseToward(view, way_on);
   }
@@ -120,6 +124,21 @@ StallRecovery::Next StallRecovery::escape(const CycleView& view, const std::opti
     }
     // Reversing got nowhere or was guarded: straight back from here, as without a waypoint behind.
     reversing_ = false;
+  }
+  if (escape_standstill_.standingStill(view)) {
+    if (escape_flipped_) {
+      after_stall_ = false;
+      escape_sign_ = 0.0;
+      request.command = {0.0, 0.0};
+      request.reason =
+          fmt::format("stalled for {:.1f} s: held both ways, following again from here", stall_timeout_s_);
+      return Next::FollowNextCycle;
+    }
+    escape_flipped_ = true;
+    escape_sign_ = -escape_sign_;
+    start_ = view.pose.position();
+    travelled = 0.0;
+    escape_standstill_.anchor(view);
   }
   request.reason =
       fmt::format("stalled for {:.1f} s: {} before following again: {:.2f} of {:.2f} m", stall_timeout_s_,

@@ -17,6 +17,7 @@
 #include "executive/modes/cycle.hpp"
 #include "executive/modes/executive_settings.hpp"
 #include "executive/modes/path_progress.hpp"
+#include "executive/modes/standstill_watch.hpp"
 
 namespace ifar::executive {
 
@@ -78,6 +79,10 @@ class StallRecovery {
   bool reversing_ = false;                // reversing along the cost-to-go to a waypoint behind
   std::optional<double> turn_heading_;    // after the straight escape: turning on the spot to this ...
   std::int64_t turn_since_us_ = 0;        // ... since then
+  // The straight escape standing still (wedged, its wheels slipping against what the guard does not see)
+  // as long as an approach or a push may: the other way once, then follow again from here.
+  StandstillWatch escape_standstill_;
+  bool escape_flipped_ = false;
 };
 
 }  // namespace ifar::executive

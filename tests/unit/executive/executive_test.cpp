@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <random>
 #include <string>
 #include <vector>
@@ -376,6 +377,42 @@ TEST_F(ExecutiveTest, StalledWithTheBackAgainstADoorPostDrivesAheadInstead)
   EXPECT_TRUE(drove_ahead) << "ended at (" << pose_.x << ", " << pose_.y << ", " << pose_.heading
                            << "): " << last_reason;
   EXPECT_FALSE(backed_up);
+}
+
+TEST_F(ExecutiveTest, StallEscapeHeldInPlaceTriesTheOtherWayThenFollowsAgain)
+{
+  // As above, but something the guard does not see holds the vehicle while it drives ahead (a box edge
+  // below the scan, wheels slipping): the escape may not drive ahead for good. After
+  // stall_recovery.standstill_timeout_s standing still it backs up instead, and follows again when
+  // that is held too.
+  const std::vector<Point> walls = doorWalls();
+  Path path = straightPath();
+  path.waypoints = {waypoint(0.0, -0.35), waypoint(0.25, 1.5)};
+  pose_ = Pose2{-0.03, -0.35, -28.0 * M_PI / 180.0};
+  std::optional<std::int64_t> ahead_since_us;
+  std::int64_t longest_ahead_us = 0;
+  bool tried_back = false;
+  std::string last_reason;
+  for (int cycle = 0; cycle < 1500; ++cycle) {
+    now_us_ += kCycleUs;
+    Inputs inputs = freshInputs(now_us_, path);
+    inputs.obstacles = Stamped<std::vector<Point>>{walls, now_us_};
+    const Output output = executive_.step(now_us_, inputs);
+    last_reason = output.status.reason;
+    const bool ahead = output.status.reason.find("driving ahead") != std::string::npos;
+    if (ahead) {
+      ahead_since_us = ahead_since_us.value_or(now_us_);
+      longest_ahead_us = std::max(longest_ahead_us, now_us_ - *ahead_since_us);
+      continue;  // held: the pose does not move
+    }
+    ahead_since_us.reset();
+    tried_back = tried_back || output.status.reason.find("backing up") != std::string::npos;
+    pose_ = testing::drive(pose_, output.command, kCycleUs * 1e-6);
+  }
+  ASSERT_GT(longest_ahead_us, 0) << "never drove ahead: " << last_reason;
+  EXPECT_LE(static_cast<double>(longest_ahead_us) * 1e-6, settings_.stall_recovery.standstill_timeout_s + 0.5)
+      << last_reason;
+  EXPECT_TRUE(tried_back) << last_reason;
 }
 
 TEST_F(ExecutiveTest, WedgedFacingIntoADeadEndAisleReversesOutTowardAWaypointBehind)
