@@ -223,6 +223,30 @@ std::optional<Point> freePointNear(const World& world, const Point& target, cons
   return std::nullopt;
 }
 
+/// Four walls just outside the box low..high (world frame), named edge_south, edge_east, edge_north,
+/// edge_west.
+void addEdgeWalls(const Point& low, const Point& high, const NamosimImportSettings& settings, World& world)
+{
+  const double thickness = settings.edge_wall_thickness_m;
+  const auto rectangle = [](double x0, double y0, double x1, double y1) {
+    return Polygon{Point(x0, y0), Point(x1, y0), Point(x1, y1), Point(x0, y1)};
+  };
+  const std::pair<const char*, Polygon> sides[] = {
+      {"edge_south", rectangle(low.x() - thickness, low.y() - thickness, high.x() + thickness, low.y())},
+      {"edge_east", rectangle(high.x(), low.y(), high.x() + thickness, high.y())},
+      {"edge_north", rectangle(low.x() - thickness, high.y(), high.x() + thickness, high.y() + thickness)},
+      {"edge_west", rectangle(low.x() - thickness, low.y(), low.x(), high.y())},
+  };
+  for (const auto& [name, outline] : sides) {
+    StaticObstacle obstacle;
+    obstacle.name = name;
+    obstacle.outline = outline;
+    obstacle.height_m = settings.wall_height_m;
+    obstacle.reflectivity = settings.wall_reflectivity;
+    world.obstacles.push_back(obstacle);
+  }
+}
+
 }  // namespace
 
 NamosimImport parseNamosimSvg(const std::string& text, const std::string& source_name,
@@ -409,8 +433,14 @@ NamosimImport parseNamosimSvg(const std::string& text, const std::string& source
     world.start = geometry::Pose2{spot.x(), spot.y(), 0.0};
   }
 
+  const bool drew_walls = !world.obstacles.empty();
+  if (settings.edge_wall_thickness_m > 0.0) {
+    addEdgeWalls(converter.toWorld(Point(view_box.min_x, view_box.min_y + view_box.height)),
+                 converter.toWorld(Point(view_box.min_x + view_box.width, view_box.min_y)), settings, world);
+  }
+
   // A world without walls, vehicle or goals is written, but said to be incomplete.
-  if (world.obstacles.empty()) {
+  if (!drew_walls) {
     import.incomplete = true;
     import.warnings.push_back(
         "no walls: no drawing element has type=\"wall\" and no map_layer bitmap holds any");

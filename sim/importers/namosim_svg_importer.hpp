@@ -36,6 +36,9 @@ struct NamosimImportSettings {
   double object_ground_friction = 0.5;
   double object_height_m = 1.0;
   double object_reflectivity = 0.9;
+  /// namosim plans and moves on a grid that ends at the document's extent: a wall this thick just outside
+  /// each side of the viewBox keeps the vehicle (and its lidar's world) inside it. 0: no edge walls.
+  double edge_wall_thickness_m = 0.2;
 };
 
 /// A robot of the file in the world frame, whether or not it became the vehicle.

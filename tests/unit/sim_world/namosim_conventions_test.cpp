@@ -15,6 +15,16 @@
 namespace ifar::sim {
 namespace {
 
+/// The walls the file draws: the importer's edge walls (edge_*) left out.
+std::size_t drawnWalls(const ifar::sim::World& world)
+{
+  std::size_t count = 0;
+  for (const auto& obstacle : world.obstacles) {
+    count += obstacle.name.rfind("edge_", 0) == 0 ? 0 : 1;
+  }
+  return count;
+}
+
 using geometry::Point;
 
 constexpr double kPi = 3.14159265358979323846;
@@ -209,7 +219,7 @@ TEST(SimWorldNamosimConventions, MapLayerBitmapBecomesWallsAndMovablesClearTheir
   const NamosimImport bare = importText(scenario(""));
   ASSERT_TRUE(bare.world.ok()) << bare.world.error();
   const World& walls = bare.world.world();
-  ASSERT_EQ(walls.obstacles.size(), 2u);
+  ASSERT_EQ(drawnWalls(walls), 2u);
   EXPECT_EQ(walls.obstacles[0].name, "map_cells_0");
   // Cell (1,0): x 110..120, y 200..210 in the file; y flips to 7.9..8.0 m.
   const Eigen::AlignedBox2d first = geometry::boundingBox(walls.obstacles[0].outline);
@@ -224,7 +234,7 @@ TEST(SimWorldNamosimConventions, MapLayerBitmapBecomesWallsAndMovablesClearTheir
   const NamosimImport boxed =
       importText(scenario("<rect id=\"crate\" x=\"121\" y=\"211\" width=\"8\" height=\"8\"/>"));
   ASSERT_TRUE(boxed.world.ok()) << boxed.world.error();
-  ASSERT_EQ(boxed.world.world().obstacles.size(), 1u);
+  ASSERT_EQ(drawnWalls(boxed.world.world()), 1u);
   const Eigen::AlignedBox2d merged = geometry::boundingBox(boxed.world.world().obstacles[0].outline);
   EXPECT_NEAR((merged.min() - Point(1.1, 7.8)).norm(), 0.0, 1e-12);
   EXPECT_NEAR((merged.max() - Point(1.2, 8.0)).norm(), 0.0, 1e-12);
@@ -259,7 +269,7 @@ TEST(SimWorldNamosimConventions, NamespacedTypeCountsButInkscapeTypesDoNot)
   ASSERT_TRUE(import.world.ok()) << import.world.error();
   ASSERT_EQ(import.world.world().objects.size(), 1u);
   EXPECT_EQ(import.world.world().objects[0].name, "crate");
-  EXPECT_EQ(import.world.world().obstacles.size(), 2u);
+  EXPECT_EQ(drawnWalls(import.world.world()), 2u);
   EXPECT_EQ(import.vehicle_robot, "robot_0");
 }
 
@@ -274,7 +284,7 @@ TEST(SimWorldNamosimConventions, OpenPathWithinRoundingIsClosed)
   };
   const NamosimImport closed = importText(wall("100.004 100.003"));
   ASSERT_TRUE(closed.world.ok()) << closed.world.error();
-  ASSERT_EQ(closed.world.world().obstacles.size(), 1u);
+  ASSERT_EQ(drawnWalls(closed.world.world()), 1u);
   EXPECT_EQ(closed.world.world().obstacles[0].outline.size(), 4u);
   EXPECT_NEAR(geometry::area(closed.world.world().obstacles[0].outline), 4.0, 1e-6);
   EXPECT_EQ(
@@ -317,8 +327,8 @@ TEST(SimWorldNamosimConventions, TransformedGroupMatchesTheWorldWrittenWithoutIt
   EXPECT_NEAR(a.objects[0].pose.x, b.objects[0].pose.x, 1e-9);
   EXPECT_NEAR(a.objects[0].pose.y, b.objects[0].pose.y, 1e-9);
   EXPECT_NEAR(geometry::area(a.objects[0].outline), geometry::area(b.objects[0].outline), 1e-9);
-  ASSERT_EQ(a.obstacles.size(), 1u);
-  ASSERT_EQ(b.obstacles.size(), 1u);
+  ASSERT_EQ(drawnWalls(a), 1u);
+  ASSERT_EQ(drawnWalls(b), 1u);
   ASSERT_EQ(a.obstacles[0].outline.size(), b.obstacles[0].outline.size());
   const auto low = [](const geometry::Polygon& polygon) { return geometry::boundingBox(polygon).min(); };
   EXPECT_NEAR((low(a.obstacles[0].outline) - low(b.obstacles[0].outline)).norm(), 0.0, 1e-9);
@@ -365,6 +375,39 @@ TEST(SimWorldNamosimConventions, MissingWallsRobotOrGoalsMakeAnIncompleteWorld)
                          "no robot drawn to take the scale from: 1 SVG unit = 1 cm, namosim's unit "
                          "(--scale sets metres per unit)"))
       << allWarnings(nothing);
+}
+
+// namosim's grid ends at the document's extent: four walls just outside the viewBox close the world, so
+// the vehicle cannot drive round the drawing's open side; with the thickness at 0 there are none.
+TEST(SimWorldNamosimConventions, TheViewBoxEdgeClosesTheWorld)
+{
+  const NamosimImport closed = importText(drawing(kWalls));
+  ASSERT_TRUE(closed.world.ok()) << closed.world.error();
+  const World& world = closed.world.world();
+  ASSERT_EQ(world.obstacles.size(), 6u);
+  const double edge = trueSize().edge_wall_thickness_m;
+  ASSERT_GT(edge, 0.0);
+  const char* const names[] = {"edge_south", "edge_east", "edge_north", "edge_west"};
+  const Eigen::AlignedBox2d expected[] = {
+      {geometry::Point(-edge, -edge), geometry::Point(10.0 + edge, 0.0)},
+      {geometry::Point(10.0, 0.0), geometry::Point(10.0 + edge, 10.0)},
+      {geometry::Point(-edge, 10.0), geometry::Point(10.0 + edge, 10.0 + edge)},
+      {geometry::Point(-edge, 0.0), geometry::Point(0.0, 10.0)},
+  };
+  for (std::size_t side = 0; side < 4; ++side) {
+    const auto& obstacle = world.obstacles[2 + side];
+    EXPECT_EQ(obstacle.name, names[side]);
+    const Eigen::AlignedBox2d box = geometry::boundingBox(obstacle.outline);
+    EXPECT_NEAR((box.min() - expected[side].min()).norm(), 0.0, 1e-9) << names[side];
+    EXPECT_NEAR((box.max() - expected[side].max()).norm(), 0.0, 1e-9) << names[side];
+    EXPECT_NEAR(geometry::area(obstacle.outline), expected[side].volume(), 1e-9) << names[side];
+  }
+
+  NamosimImportSettings open = trueSize();
+  open.edge_wall_thickness_m = 0.0;
+  const NamosimImport without = importText(drawing(kWalls), open);
+  ASSERT_TRUE(without.world.ok()) << without.world.error();
+  EXPECT_EQ(without.world.world().obstacles.size(), 2u);
 }
 
 }  // namespace

@@ -15,6 +15,16 @@
 namespace ifar::sim {
 namespace {
 
+/// The walls the file draws: the importer's edge walls (edge_*) left out.
+std::size_t drawnWalls(const ifar::sim::World& world)
+{
+  std::size_t count = 0;
+  for (const auto& obstacle : world.obstacles) {
+    count += obstacle.name.rfind("edge_", 0) == 0 ? 0 : 1;
+  }
+  return count;
+}
+
 constexpr double kPi = 3.14159265358979323846;
 
 std::string namosimFile(const std::string& name)
@@ -80,7 +90,7 @@ TEST(SimWorldNamosimSharedScenarios, EveryFileImportsWithWhatItHolds)
     const NamosimImport import = importShared(scenario.file);
     ASSERT_TRUE(import.world.ok()) << import.world.error();
     const World& world = import.world.world();
-    EXPECT_EQ(world.obstacles.size(), scenario.walls);
+    EXPECT_EQ(drawnWalls(world), scenario.walls);
     EXPECT_EQ(world.objects.size(), scenario.movables);
     EXPECT_EQ(import.robots.size(), scenario.robots);
     ASSERT_EQ(world.goals.size(), scenario.goals.size());
@@ -184,11 +194,12 @@ TEST(SimWorldNamosimSharedScenarios, LayeredScenarioTakesItsWallsFromTheMapBitma
   EXPECT_NEAR(import.world.world().goals.at(0).position.x(), 1.4811133, 1e-6);
   EXPECT_NEAR(import.world.world().goals.at(0).position.y(), 0.9644025, 1e-6);
   // The map bitmap (215 x 242 pixels drawn at 0,0 over 215 x 242 units) has unknown grey all round its
-  // edge: its walls span the whole viewBox, 2.15 m x 2.42 m at 1 unit = 1 cm.
+  // edge: its walls span the whole viewBox, 2.15 m x 2.42 m at 1 unit = 1 cm; the edge walls lie outside it.
   const World& world = import.world.world();
   EXPECT_EQ(world.obstacles.front().name, "image10_cells_0");
-  EXPECT_NEAR((world.bounds_min - geometry::Point(0.0, 0.0)).norm(), 0.0, 1e-12);
-  EXPECT_NEAR((world.bounds_max - geometry::Point(2.15, 2.42)).norm(), 0.0, 1e-12);
+  const double edge = NamosimImportSettings().edge_wall_thickness_m;
+  EXPECT_NEAR((world.bounds_min - geometry::Point(-edge, -edge)).norm(), 0.0, 1e-12);
+  EXPECT_NEAR((world.bounds_max - geometry::Point(2.15 + edge, 2.42 + edge)).norm(), 0.0, 1e-12);
   ASSERT_EQ(import.warnings.size(), 1u);
   EXPECT_EQ(import.warnings[0].rfind("robot 'robot_0' is not drawn: the start is the free spot nearest", 0),
             0u)

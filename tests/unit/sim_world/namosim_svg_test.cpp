@@ -11,6 +11,16 @@
 namespace ifar::sim {
 namespace {
 
+/// The walls the file draws: the importer's edge walls (edge_*) left out.
+std::size_t drawnWalls(const ifar::sim::World& world)
+{
+  std::size_t count = 0;
+  for (const auto& obstacle : world.obstacles) {
+    count += obstacle.name.rfind("edge_", 0) == 0 ? 0 : 1;
+  }
+  return count;
+}
+
 std::string namosimFile(const std::string& name)
 {
   return std::string(IFAR_SHARED_DATA) + "/namosim/" + name;
@@ -61,7 +71,7 @@ TEST(SimWorldNamosimSvg, MinimalStilmanHasWallsMovableGoalAndScaledRobot)
   const auto import = importNamosimSvg(path, settings);
   ASSERT_TRUE(import.world.ok()) << import.world.error();
   const auto& world = import.world.world();
-  EXPECT_EQ(world.obstacles.size(), 2u);
+  EXPECT_EQ(drawnWalls(world), 2u);
   EXPECT_EQ(world.objects.size(), 1u);
   ASSERT_EQ(world.goals.size(), 1u);
   EXPECT_EQ(world.goals[0].name, "goal_0");
@@ -90,7 +100,9 @@ TEST(SimWorldNamosimSvg, ExplicitScaleOverridesRobotScale)
   const auto import = importNamosimSvg(path, settings);
   ASSERT_TRUE(import.world.ok()) << import.world.error();
   EXPECT_DOUBLE_EQ(import.metres_per_unit, 0.01);
-  EXPECT_NEAR(import.world.world().bounds_max.x() - import.world.world().bounds_min.x(), 1.5186, 1e-3);
+  // The viewBox is 1.5186 m wide at 1 cm per unit; the edge walls add their thickness on both sides.
+  EXPECT_NEAR(import.world.world().bounds_max.x() - import.world.world().bounds_min.x(),
+              1.5186 + 2.0 * settings.edge_wall_thickness_m, 1e-3);
 }
 
 TEST(SimWorldNamosimSvg, AllSharedScenariosImportWithExpectedCounts)
@@ -112,7 +124,7 @@ TEST(SimWorldNamosimSvg, AllSharedScenariosImportWithExpectedCounts)
     }
     const auto import = importNamosimSvg(path, NamosimImportSettings());
     ASSERT_TRUE(import.world.ok()) << import.world.error();
-    EXPECT_EQ(import.world.world().obstacles.size(), expected.walls) << expected.file;
+    EXPECT_EQ(drawnWalls(import.world.world()), expected.walls) << expected.file;
     EXPECT_EQ(import.world.world().objects.size(), expected.movables) << expected.file;
     EXPECT_EQ(import.world.world().goals.size(), expected.goals) << expected.file;
   }
