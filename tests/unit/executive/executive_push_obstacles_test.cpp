@@ -77,8 +77,9 @@ void expectPlanGivenUp(const Output& output, const std::optional<AffordanceEvent
 {
   ASSERT_TRUE(event) << output.status.reason;
   EXPECT_EQ(event->object_id, 9);
-  EXPECT_FALSE(event->pushable);
-  EXPECT_EQ(event->reason, AffordanceReason::CostHigher);
+  // Standing still is no force evidence: the object stays pushable, the contact is reported not reached.
+  EXPECT_TRUE(event->pushable);
+  EXPECT_EQ(event->reason, AffordanceReason::ContactNotReached);
   EXPECT_EQ(event->text, text);
   EXPECT_EQ(output.status.mode, Mode::ReplanWait);
   EXPECT_TRUE(output.command.isZero());
@@ -201,8 +202,9 @@ TEST_F(ExecutivePushObstaclesTest, AContactThatCannotBeReachedIsReportedAndRepla
   }
   ASSERT_TRUE(event) << output.status.reason;
   EXPECT_EQ(event->object_id, 9);
-  EXPECT_FALSE(event->pushable);
-  EXPECT_EQ(event->reason, AffordanceReason::CostHigher);
+  // A light box the vehicle could not get to stays pushable: only force evidence says otherwise.
+  EXPECT_TRUE(event->pushable);
+  EXPECT_EQ(event->reason, AffordanceReason::ContactNotReached);
   EXPECT_NE(event->text.find("contact not reached"), std::string::npos) << event->text;
   EXPECT_EQ(output.status.mode, Mode::ReplanWait);
   EXPECT_TRUE(output.command.isZero());
@@ -309,7 +311,8 @@ TEST_F(ExecutivePushObstaclesTest, AnApproachStuckTwiceOnItsWayReportsTheContact
     event = output.affordance;
   }
   ASSERT_TRUE(event) << output.status.reason;
-  EXPECT_FALSE(event->pushable);
+  EXPECT_TRUE(event->pushable);
+  EXPECT_EQ(event->reason, AffordanceReason::ContactNotReached);
   EXPECT_NE(event->text.find("contact not reached"), std::string::npos) << event->text;
   EXPECT_EQ(output.status.pushes, 0);
 }
