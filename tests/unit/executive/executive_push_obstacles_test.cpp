@@ -108,7 +108,7 @@ class ExecutivePushObstaclesTest : public ::testing::Test {
         Stamped<ForceReading>{ForceReading{force_n.value_or(pushing ? 100.0 : 0.0), false}, now_us_};
     inputs.motor = Stamped<MotorReading>{MotorReading{true, false, ""}, now_us_};
     inputs.obstacles = Stamped<std::vector<Point>>{points, now_us_};
-    const Output output = executive_.step(now_us_, inputs);
+    Output output = executive_.step(now_us_, inputs);
     if (!held_ && !(force_n && output.command.linear > 0.0)) {  // a stalling force stops forward motion
       pose_ = testing::drive(pose_, output.command, kCycleUs * 1e-6);
     }
@@ -221,8 +221,8 @@ TEST_F(ExecutivePushObstaclesTest, AnApproachStuckOnItsWayToTheStandOffPointEsca
   // unpushable.
   pose_ = Pose2{0.2, 0.0, kPi / 2.0};
   std::vector<Point> wall;
-  for (double x = -1.5; x <= 2.0; x += 0.05) {
-    wall.emplace_back(x, 0.55);
+  for (int index = 0; index <= 70; ++index) {  // x from -1.5 to 2.0 every 5 cm
+    wall.emplace_back(-1.5 + 0.05 * index, 0.55);
   }
   Output output;
   bool escaped = false;
@@ -298,7 +298,8 @@ TEST_F(ExecutivePushObstaclesTest, AnApproachStuckTwiceOnItsWayReportsTheContact
   // help, and the second stand-still is reported as before.
   pose_ = Pose2{0.2, 0.0, kPi / 2.0};
   std::vector<Point> box;
-  for (double along = -1.0; along <= 1.0; along += 0.05) {
+  for (int index = 0; index <= 40; ++index) {  // -1.0 to 1.0 every 5 cm
+    const double along = -1.0 + 0.05 * index;
     box.emplace_back(0.2 + along, 0.55);
     box.emplace_back(0.2 + along, -0.55);
     box.emplace_back(-0.25, along);
