@@ -231,6 +231,10 @@ void Scenario::executiveCycled(const executive::ExecutiveOutputs& outputs, std::
     saturated_pushes_.decided(now_us);
     findings_.push_back("affordance: " + result.affordance->text);
   }
+  if (result.escalation) {
+    ++summary_.escalations;
+    findings_.push_back(*result.escalation);
+  }
   if (result.blocked_passage) {
     ++summary_.blocked_passages;
     findings_.push_back("blocked passage: " + result.blocked_passage->text);

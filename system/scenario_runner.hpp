@@ -88,6 +88,7 @@ struct RunSummary {
   int replans = 0;
   int affordance_updates = 0;
   int blocked_passages = 0;  // passages the executive gave up and the planner sealed
+  int escalations = 0;       // times the progress monitor dropped what the vehicle was stuck on
   /// Pushes held at the maximum force (true bumper force) longer than the tactile monitor's window plus
   /// kDecisionAllowanceS without an affordance decision; a working monitor keeps this at 0.
   int undecided_saturated_pushes = 0;

@@ -55,15 +55,16 @@ std::string summaryJson(const RunSummary& summary)
 {
   return fmt::format(
       "{{\"arrived\":{},\"reason\":{},\"distance_m\":{},\"time_s\":{},\"pushes\":{},\"replans\":{},"
-      "\"affordance_updates\":{},\"blocked_passages\":{},\"goal_distance_m\":{},\"wall_time_s\":{},"
+      "\"affordance_updates\":{},\"blocked_passages\":{},\"escalations\":{},\"goal_distance_m\":{},"
+      "\"wall_time_s\":{},"
       "\"planner_frame_ms\":{},\"interaction_ms\":{},\"undecided_saturated_pushes\":{},"
       "\"longest_saturated_push_s\":{},\"routes\":{},\"routes_switched\":{},\"losses\":{},\"legs\":{}}}",
       summary.arrived ? "true" : "false", common::jsonString(summary.reason), jsonNumber(summary.distance_m),
       jsonNumber(summary.sim_time_s), summary.pushes, summary.replans, summary.affordance_updates,
-      summary.blocked_passages, jsonNumber(summary.goal_distance_m), jsonNumber(summary.wall_time_s),
-      timesJson(summary.planner_frame), timesJson(summary.interaction), summary.undecided_saturated_pushes,
-      jsonNumber(summary.longest_saturated_push_s), summary.routes, summary.routes_switched,
-      lossesJson(summary.losses), legsJson(summary.legs));
+      summary.blocked_passages, summary.escalations, jsonNumber(summary.goal_distance_m),
+      jsonNumber(summary.wall_time_s), timesJson(summary.planner_frame), timesJson(summary.interaction),
+      summary.undecided_saturated_pushes, jsonNumber(summary.longest_saturated_push_s), summary.routes,
+      summary.routes_switched, lossesJson(summary.losses), legsJson(summary.legs));
 }
 
 }  // namespace ifar::runner

@@ -129,6 +129,7 @@ scenarios::ResultRow systemRow(scenarios::ScenarioKind kind, const std::string& 
   row.interaction_max_ms = run.interaction_max_ms;
   row.sensing = sensing;
   row.undecided_saturated_pushes = run.undecided_saturated_pushes;
+  row.escalations = run.escalations;
   row.excess_m = run.excess_m;
   row.losses = run.losses;
   if (!run.ran) {

@@ -57,6 +57,7 @@ std::string toJsonLine(const ResultRow& row)
     line += ", \"interaction_max_ms\": " + number(row.interaction_max_ms);
     line += ", \"sensing\": " + common::jsonString(row.sensing);
     line += ", \"undecided_saturated_pushes\": " + std::to_string(row.undecided_saturated_pushes);
+    line += ", \"escalations\": " + std::to_string(row.escalations);
     line += ", \"excess_m\": " + number(row.excess_m);
     for (int bucket = 0; bucket < runner::kLossBucketCount; ++bucket) {
       line += std::string(", \"loss_") + runner::lossBucketName(bucket) +
@@ -95,6 +96,7 @@ void rowFields(Fields& fields, Row& row)
   fields.field(row.interaction_max_ms);
   fields.field(row.sensing);
   fields.field(row.undecided_saturated_pushes);
+  fields.field(row.escalations);
   fields.field(row.excess_m);
   for (int bucket = 0; bucket < runner::kLossBucketCount; ++bucket) {
     fields.field(runner::lossBucket(row.losses, bucket));

@@ -38,6 +38,7 @@ struct ResultRow {
   // held at maximum force past the tactile monitor's window without a decision (runner::RunSummary).
   std::string sensing = "ideal";
   int undecided_saturated_pushes = 0;
+  int escalations = 0;  // system rows: the progress monitor's escalations (runner::RunSummary)
   // System rows: the distance driven beyond the achievable way (travelled - (achievable - left at the
   // end)) and where it went (system/loss_accounting.hpp); NaN when not accounted.
   double excess_m = NAN;

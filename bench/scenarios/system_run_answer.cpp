@@ -26,6 +26,7 @@ void runFields(Fields& fields, Run& run)
   fields.field(run.frame_max_ms);
   fields.field(run.interaction_max_ms);
   fields.field(run.undecided_saturated_pushes);
+  fields.field(run.escalations);
   fields.field(run.excess_m);
   for (int bucket = 0; bucket < runner::kLossBucketCount; ++bucket) {
     fields.field(runner::lossBucket(run.losses, bucket));

@@ -35,6 +35,7 @@ struct SystemRun {
   double frame_max_ms = NAN;
   double interaction_max_ms = NAN;
   int undecided_saturated_pushes = 0;  // runner::RunSummary::undecided_saturated_pushes
+  int escalations = 0;                 // runner::RunSummary::escalations
   // runner::RunSummary::losses: the distance beyond the achievable way and its buckets (NaN when not
   // accounted).
   double excess_m = NAN;

@@ -69,6 +69,7 @@ SystemRun SystemRunner::run(const sim::World& world, const Task& task, bool inte
     run.frame_max_ms = summary.planner_frame.max_ms;
     run.interaction_max_ms = summary.interaction.max_ms;
     run.undecided_saturated_pushes = summary.undecided_saturated_pushes;
+    run.escalations = summary.escalations;
     if (summary.losses.valid) {
       run.excess_m = summary.losses.excess_m;
       run.losses = summary.losses.buckets;

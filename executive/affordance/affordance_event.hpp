@@ -12,6 +12,9 @@ enum class AffordanceReason {
   CostHigher,  ///< measured cost above the plan by more than the threshold
   CostLower,   ///< measured cost below the plan by more than the threshold
   Jammed,      ///< slid below the maximum force, then stopped under it: blocked where it stands, pushable
+  /// The vehicle could not get where the plan needs it (a contact not reached, a push held by the guard):
+  /// a reachability failure that says nothing of the object, which stays pushable.
+  ContactNotReached,
 };
 
 const char* affordanceReasonName(AffordanceReason reason);

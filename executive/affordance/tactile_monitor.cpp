@@ -18,6 +18,8 @@ const char* affordanceReasonName(AffordanceReason reason)
       return "cost lower than planned";
     case AffordanceReason::Jammed:
       return "jammed after sliding";
+    case AffordanceReason::ContactNotReached:
+      return "contact not reached";
   }
   return "unknown";
 }

@@ -16,6 +16,7 @@ struct Executive::Cycle {
   std::int64_t target_object_id = -1;
   std::optional<AffordanceEvent> affordance;
   std::optional<BlockedPassage> blocked_passage;
+  std::optional<std::string> escalation;
 };
 
 namespace {
@@ -40,7 +41,8 @@ Executive::Executive(const ExecutiveSettings& settings, const common::VehicleSet
       doorway_run_(settings_, drive_),
       push_(settings_, vehicle, drive_),
       recovery_(settings_, drive_),
-      passages_(settings_)
+      passages_(settings_),
+      progress_monitor_(settings_.progress)
 {
 }
 
@@ -120,6 +122,8 @@ void Executive::startGoal(std::int64_t goal_id)
     goal_id_ = goal_id;
     pushes_ = 0;
     replans_ = 0;
+    escalations_ = 0;
+    progress_monitor_.startGoal();
     passages_.startGoal();
     push_.startGoal();
   }
@@ -554,11 +558,45 @@ Output Executive::step(std::int64_t now_us, const Inputs& inputs)
     halt(cycle, inputs, stale, e_stopped);
   } else {
     stepTask(cycle);
+    watchProgress(cycle);
     moving = task_ == Task::Follow || task_ == Task::Doorway || task_ == Task::Approach ||
              task_ == Task::Push || task_ == Task::BackOff;
   }
   const Mode mode = halted ? (e_stopped ? Mode::EStop : Mode::Stop) : modeOf(task_);
   return finishCycle(cycle, mode, stale, moving);
+}
+
+void Executive::watchProgress(Cycle& cycle)
+{
+  if (!progress_.hasPath() || !progress_.path().valid || progress_.path().waypoints.empty()) {
+    return;
+  }
+  const geometry::Point position = cycle.view.pose.position();
+  const bool counting = task_ == Task::Follow || task_ == Task::Doorway || task_ == Task::Approach ||
+                        task_ == Task::Push || task_ == Task::BackOff;
+  const double stuck_s = settings_.progress.timeout_s;
+  if (!progress_monitor_.update(cycle.view.now_us, position, progress_.remainingLength(position), counting)) {
+    return;
+  }
+  ++escalations_;
+  const std::string why = fmt::format("no progress toward the goal for {:.0f} s", stuck_s);
+  if (task_ == Task::Approach || task_ == Task::Push) {
+    AffordanceEvent event = push_.givenUpForProgress(why);
+    cycle.escalation =
+        fmt::format("escalation {}: {}: push of object {} dropped", escalations_, why, event.object_id);
+    waitForReplan(cycle, event);
+    return;
+  }
+  const geometry::Point toward = progress_.pointAlong(position, settings_.blocked_passage_ahead_m);
+  BlockedPassage passage;
+  passage.goal_id = goal_id_;
+  passage.from = position;
+  passage.to = toward;
+  passage.text = fmt::format("{}: route toward ({:.2f}, {:.2f}) dropped", why, toward.x(), toward.y());
+  cycle.escalation = fmt::format("escalation {}: {}", escalations_, passage.text);
+  if (!cycle.blocked_passage) {
+    cycle.blocked_passage = std::move(passage);
+  }
 }
 
 Output Executive::finishCycle(Cycle& cycle, Mode mode, std::int32_t stale, bool moving)
@@ -585,9 +623,11 @@ Output Executive::finishCycle(Cycle& cycle, Mode mode, std::int32_t stale, bool 
   status.stale = stale;
   status.pushes = pushes_;
   status.replans = replans_;
+  status.escalations = escalations_;
   status.reason = std::move(cycle.motion.reason);
   output.affordance = std::move(cycle.affordance);
   output.blocked_passage = std::move(cycle.blocked_passage);
+  output.escalation = std::move(cycle.escalation);
   output.mode_changed = mode != last_mode_;
   last_mode_ = mode;
   return output;

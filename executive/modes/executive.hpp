@@ -26,6 +26,7 @@
 #include "executive/modes/odometer.hpp"
 #include "executive/modes/passage_reports.hpp"
 #include "executive/modes/path_progress.hpp"
+#include "executive/modes/progress_monitor.hpp"
 #include "executive/modes/push_sequence.hpp"
 #include "executive/modes/stall_recovery.hpp"
 
@@ -41,6 +42,7 @@ struct Status {
   std::int32_t stale = 0;  ///< StaleInput bits
   int pushes = 0;          ///< push plans completed for this goal
   int replans = 0;         ///< replans requested for this goal
+  int escalations = 0;     ///< times the progress monitor dropped what the vehicle was stuck on, this goal
   std::string reason;
 };
 
@@ -56,6 +58,8 @@ struct Output {
   std::optional<AffordanceEvent> affordance;  ///< set on the cycle the tactile monitor found something
   /// Set on the cycle repeated stalls gave a passage up, or an impassable gap ahead was seen.
   std::optional<BlockedPassage> blocked_passage;
+  /// Set on the cycle the progress monitor escalated: what was dropped, for the log.
+  std::optional<std::string> escalation;
 };
 
 class Executive {
@@ -117,6 +121,10 @@ class Executive {
   /// Following (or an approach's collision-free leg) got nowhere: back off straight or reversing along
   /// the cost-to-go, turn to the way on, then follow again.
   void beginStallEscape(Cycle& cycle);
+  /// Feeds the progress monitor; when it escalates, drops what the vehicle is stuck on: the push in hand
+  /// (reported as a contact not reached, so the planner tries another or backs off) or the route ahead
+  /// (reported as a blocked passage, so the planner seals it and takes the next).
+  void watchProgress(Cycle& cycle);
 
   ExecutiveSettings settings_;
   DifferentialDrive drive_;
@@ -129,12 +137,14 @@ class Executive {
   StallRecovery recovery_;
   PassageReports passages_;
   Odometer odometer_;
+  ProgressMonitor progress_monitor_;
 
   Task task_ = Task::Idle;
   std::string task_reason_ = "no path yet";
   std::int64_t goal_id_ = -1;
   int pushes_ = 0;
   int replans_ = 0;
+  int escalations_ = 0;
   std::int64_t replan_requested_us_ = 0;
 
   VelocityCommand last_command_;

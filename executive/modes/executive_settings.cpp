@@ -109,6 +109,23 @@ void addStallRecovery(Table& table)
       "it");
 }
 
+void addProgress(Table& table)
+{
+  const auto add = [&table](const std::string& key, double ProgressSettings::*member, const char* unit,
+                            Range range, const std::string& meaning) {
+    table.add(
+        "progress." + key, [member](auto& s) -> auto& { return s.progress.*member; }, unit, range, meaning);
+  };
+  using S = ProgressSettings;
+  add("timeout_s", &S::timeout_s, "s", Range::nonNegative(),
+      "no progress toward the goal this long: drop the push or route the vehicle is stuck on, report it (0: "
+      "never)");
+  add("margin_m", &S::margin_m, "m", Range::nonNegative(),
+      "progress: the path left to the goal beats its best by this much ...");
+  add("new_ground_m", &S::new_ground_m, "m", Range::nonNegative(),
+      "... or the vehicle enters a square of this side it had not been in (0: only the path counts)");
+}
+
 void addFollower(Table& table)
 {
   const auto add = [&table](const std::string& key, auto member, const char* unit, Range range,
@@ -295,6 +312,7 @@ Table makeExecutiveParameters()
   Table table(common::Presence::required);
   addTopLevel(table);
   addStallRecovery(table);
+  addProgress(table);
   addFollower(table);
   addDoorway(table);
   addControlAndApproach(table);

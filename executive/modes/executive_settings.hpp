@@ -8,6 +8,7 @@
 #include "executive/doorway/doorway.hpp"
 #include "executive/follower/follower.hpp"
 #include "executive/follower/footprint.hpp"
+#include "executive/modes/progress_monitor.hpp"
 #include "executive/pusher/approach.hpp"
 #include "executive/pusher/push_tracker.hpp"
 
@@ -83,6 +84,7 @@ struct ExecutiveSettings {
   double replan_timeout_s = 10.0;  ///< waiting longer for a replanned path stops the vehicle
   double stall_timeout_s = 1.5;    ///< following without moving this long: back off and try again
   StallRecoverySettings stall_recovery;
+  ProgressSettings progress;  ///< the loop's progress toward the goal, and when it escalates
   /// This many stalls at one site toward one waypoint report the passage as blocked (0: never).
   int blocked_passage_stalls = 3;
   /// Stalls within this distance of the first one of a series, toward path points this close to each

@@ -123,4 +123,15 @@ geometry::Point PathProgress::pointAlong(const geometry::Point& position, double
   return from;
 }
 
+double PathProgress::remainingLength(const geometry::Point& position) const
+{
+  double length = 0.0;
+  geometry::Point from = position;
+  for (std::size_t index = index_; index < path_.waypoints.size(); ++index) {
+    length += (path_.waypoints[index].position - from).norm();
+    from = path_.waypoints[index].position;
+  }
+  return length;
+}
+
 }  // namespace ifar::executive

@@ -61,6 +61,8 @@ class PathProgress {
   /// The point `distance_m` along the path from `position` through the current waypoint and those after
   /// it; the last waypoint when the path is shorter.
   geometry::Point pointAlong(const geometry::Point& position, double distance_m) const;
+  /// The length of the path still to drive from `position`: to the current waypoint, then along the rest.
+  double remainingLength(const geometry::Point& position) const;
 
  private:
   double waypoint_tolerance_m_;

@@ -165,8 +165,8 @@ PushSequence::Step PushSequence::push(const CycleView& view, const CollisionGuar
     // vehicle's way (no force rises, so the tactile monitor says nothing). Without this the vehicle
     // stood there for good.
     step.object_left_at = observed ? observed : objectEstimate(true);
-    step.affordance = givingUp(fmt::format("object {}: push held by the guard: no motion for {:.1f} s",
-                                           plan_.object_id, settings_.stall_recovery.standstill_timeout_s));
+    step.affordance = notReached(fmt::format("object {}: push held by the guard: no motion for {:.1f} s",
+                                             plan_.object_id, settings_.stall_recovery.standstill_timeout_s));
     step.next = Next::WaitForReplan;
   }
   return step;
@@ -186,16 +186,16 @@ std::optional<AffordanceEvent> PushSequence::tactileVerdict(const CycleView& vie
   return event;
 }
 
-AffordanceEvent PushSequence::givingUp(const std::string& text) const
+AffordanceEvent PushSequence::notReached(const std::string& text) const
 {
-  // The plan costs more than planned, without bound. Algorithm 2's answer: tell the planner, wait for
-  // its replan.
+  // Only force evidence says an object cannot be pushed: standing still short of it says that the vehicle
+  // could not get there, which the planner answers by trying again (another contact, later) instead.
   AffordanceEvent event;
   event.object_id = plan_.object_id;
-  event.pushable = false;
+  event.pushable = true;
   event.planned_cost = plan_.expected_cost;
   event.measured_cost = plan_.expected_cost;
-  event.reason = AffordanceReason::CostHigher;
+  event.reason = AffordanceReason::ContactNotReached;
   event.text = text;
   return event;
 }
@@ -203,8 +203,8 @@ AffordanceEvent PushSequence::givingUp(const std::string& text) const
 AffordanceEvent PushSequence::unreachable(const std::string& contact) const
 {
   // The contact cannot be reached (the stand-off point boxed in, the guard stopping the creep).
-  return givingUp(fmt::format("object {}: {} not reached: no motion for {:.1f} s on the way to it",
-                              plan_.object_id, contact, settings_.stall_recovery.standstill_timeout_s));
+  return notReached(fmt::format("object {}: {} not reached: no motion for {:.1f} s on the way to it",
+                                plan_.object_id, contact, settings_.stall_recovery.standstill_timeout_s));
 }
 
 void PushSequence::startObjectPath()

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "common/geometry/point.hpp"
 #include "common/span.hpp"
 #include "common/vehicle.hpp"
@@ -57,6 +59,12 @@ class PushSequence {
   /// One cycle of the push (after approach() said Push).
   Step push(const CycleView& view, const CollisionGuard& guard, MotionRequest& request);
 
+  /// AFFORDANCE "contact not reached" for the plan's object: the loop made no progress with it (`why`).
+  AffordanceEvent givenUpForProgress(const std::string& why) const
+  {
+    return notReached(fmt::format("object {}: {}: push given up for now", plan_.object_id, why));
+  }
+
   /// Where the plan expects the object's centroid: at first contact while approaching (`pushing` false),
   /// at the start of the current primitive while pushing; none when the plan says nothing of it.
   std::optional<geometry::Point> objectEstimate(bool pushing) const;
@@ -78,10 +86,10 @@ class PushSequence {
   /// The tactile monitor's verdict this cycle, when it has one (cheaper than planned: the push goes on).
   std::optional<AffordanceEvent> tactileVerdict(const CycleView& view, const PushStep& tracked,
                                                 const std::optional<geometry::Point>& observed);
-  /// AFFORDANCE "not pushable, cost higher" with `text`: the vehicle stood still where the plan needs it
-  /// to move.
-  AffordanceEvent givingUp(const std::string& text) const;
-  /// givingUp() for a contact (`contact`) that cannot be reached.
+  /// AFFORDANCE "contact not reached" with `text`: the vehicle stood still on its way to where the plan
+  /// needs it; the object stays pushable.
+  AffordanceEvent notReached(const std::string& text) const;
+  /// notReached() for a contact (`contact`) that cannot be reached.
   AffordanceEvent unreachable(const std::string& contact) const;
 
   ExecutiveSettings settings_;

@@ -175,6 +175,9 @@ ifar::affordance_t toAffordanceMessage(const AffordanceEvent& event, std::int64_
     case AffordanceReason::Jammed:
       message.reason = ifar::affordance_t::REASON_JAMMED;
       break;
+    case AffordanceReason::ContactNotReached:
+      message.reason = ifar::affordance_t::REASON_CONTACT_NOT_REACHED;
+      break;
   }
   return message;
 }

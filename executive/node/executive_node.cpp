@@ -131,6 +131,9 @@ ExecutiveOutputs ExecutiveNode::cycle(std::int64_t now_us)
     outputs.affordance = toAffordanceMessage(*output.affordance, now_us);
     logger_->info("affordance: {}", output.affordance->text);
   }
+  if (output.escalation) {
+    logger_->warn("{}", *output.escalation);
+  }
   if (output.blocked_passage) {
     outputs.blocked_passage = toBlockedPassageMessage(*output.blocked_passage, now_us);
     logger_->warn("blocked passage: {}", output.blocked_passage->text);

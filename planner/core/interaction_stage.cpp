@@ -19,6 +19,23 @@ double millisecondsSince(Clock::time_point start)
 
 }  // namespace
 
+const char* contactOutcomeName(ContactOutcome outcome)
+{
+  switch (outcome) {
+    case ContactOutcome::Retried:
+      return "planned again";
+    case ContactOutcome::BackedOff:
+      return "no push plans for a while";
+    case ContactOutcome::SuspendedGoal:
+      return "no push plans until the next goal";
+    case ContactOutcome::Unpushable:
+      return "already unpushable";
+    case ContactOutcome::UnknownObject:
+      return "no such object tracked";
+  }
+  return "unknown";
+}
+
 InteractionStage::InteractionStage(const interaction::InteractionSettings& settings, double outline_cell_m)
     : settings_(settings), cache_(settings, outline_cell_m)
 {
@@ -45,6 +62,43 @@ bool InteractionStage::unpushable(std::int64_t object_id) const
 {
   const auto found = objects_.find(object_id);
   return found != objects_.end() && found->second.unpushable;
+}
+
+bool InteractionStage::suspendedAt(const ObjectState& state, std::int64_t utime) const
+{
+  return state.suspended_for_goal || utime < state.suspended_until_us;
+}
+
+bool InteractionStage::suspended(std::int64_t object_id) const
+{
+  const auto found = objects_.find(object_id);
+  return found != objects_.end() && suspendedAt(found->second, last_frame_ ? last_frame_->utime : 0);
+}
+
+std::size_t InteractionStage::liftBackoffs(const graph::ObstacleSet* obstacles, graph::DvGraph& graph)
+{
+  const std::int64_t now_us = last_frame_ ? last_frame_->utime : 0;
+  std::vector<std::int64_t> lifted;
+  for (auto& [object_id, state] : objects_) {
+    if (!state.unpushable && !state.suspended_for_goal && now_us < state.suspended_until_us) {
+      state.suspended_until_us = 0;
+      lifted.push_back(object_id);
+    }
+  }
+  for (const std::int64_t object_id : lifted) {
+    reprocess(object_id, obstacles, graph);
+  }
+  return lifted.size();
+}
+
+void InteractionStage::startGoal()
+{
+  for (auto& [object_id, state] : objects_) {
+    state.contacts_not_reached = 0;
+    state.backoffs = 0;
+    state.suspended_until_us = 0;
+    state.suspended_for_goal = false;
+  }
 }
 
 std::size_t InteractionStage::plansMade(std::int64_t object_id) const
@@ -125,6 +179,12 @@ void InteractionStage::process(const InteractionFrame& frame, std::size_t index,
   const std::int64_t object_id = frame.objects[index].id;
   ObjectState& state = stateOf(object_id);
   if (state.unpushable) {
+    return;
+  }
+  if (suspendedAt(state, frame.utime)) {
+    if (state.inserted) {
+      removeFromGraph(state, object_id, graph);
+    }
     return;
   }
   ++stats.processed;
@@ -217,8 +277,15 @@ AffordanceOutcome InteractionStage::applyAffordance(std::int64_t object_id, bool
     return AffordanceOutcome::Removed;  // never pushable again: a later estimate does not bring it back
   }
   state.physics = physics;
+  reprocess(object_id, obstacles, graph);
+  return AffordanceOutcome::Updated;
+}
+
+void InteractionStage::reprocess(std::int64_t object_id, const graph::ObstacleSet* obstacles,
+                                 graph::DvGraph& graph)
+{
   cache_.invalidate(object_id);
-  removeFromGraph(state, object_id, graph);
+  removeFromGraph(stateOf(object_id), object_id, graph);
   if (last_frame_ && obstacles != nullptr) {
     for (std::size_t index = 0; index < last_frame_->objects.size(); ++index) {
       if (last_frame_->objects[index].id == object_id) {
@@ -228,7 +295,36 @@ AffordanceOutcome InteractionStage::applyAffordance(std::int64_t object_id, bool
       }
     }
   }
-  return AffordanceOutcome::Updated;
+}
+
+ContactOutcome InteractionStage::contactNotReached(std::int64_t object_id, bool known,
+                                                   const graph::ObstacleSet* obstacles, graph::DvGraph& graph)
+{
+  if (!known && objects_.count(object_id) == 0) {
+    return ContactOutcome::UnknownObject;
+  }
+  ObjectState& state = stateOf(object_id);
+  if (state.unpushable) {
+    return ContactOutcome::Unpushable;
+  }
+  const interaction::PlanningLoopSettings& loop = settings_.loop;
+  ++state.contacts_not_reached;
+  if (state.contacts_not_reached <= loop.contact_retries) {
+    // A new plan from the scene as it is now: the vehicle has moved, and the search may take another face.
+    reprocess(object_id, obstacles, graph);
+    return ContactOutcome::Retried;
+  }
+  state.contacts_not_reached = 0;
+  removeFromGraph(state, object_id, graph);
+  cache_.invalidate(object_id);
+  if (state.backoffs >= loop.contact_backoffs) {
+    state.suspended_for_goal = true;
+    return ContactOutcome::SuspendedGoal;
+  }
+  ++state.backoffs;
+  const std::int64_t now_us = last_frame_ ? last_frame_->utime : 0;
+  state.suspended_until_us = now_us + static_cast<std::int64_t>(loop.contact_backoff_s * 1e6);
+  return ContactOutcome::BackedOff;
 }
 
 }  // namespace ifar::planner

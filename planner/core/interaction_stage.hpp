@@ -35,6 +35,7 @@ struct InteractionFrame {
   std::vector<TrackedObject> objects;
   interaction::LocalScene scene;
   geometry::Point robot = geometry::Point::Zero();
+  std::int64_t utime = 0;  // the scan's time, microseconds: back-offs run on it
 };
 
 struct InteractionStats {
@@ -45,6 +46,17 @@ struct InteractionStats {
 };
 
 enum class AffordanceOutcome { Updated, Removed, UnknownObject };
+
+/// What the planner did with a contact the vehicle did not reach.
+enum class ContactOutcome {
+  Retried,        ///< planned again at once (another contact when the search finds one)
+  BackedOff,      ///< no push plans for contact_backoff_s
+  SuspendedGoal,  ///< no push plans until the next goal (contact_backoffs used up)
+  Unpushable,     ///< already known unpushable: nothing changes
+  UnknownObject,
+};
+
+const char* contactOutcomeName(ContactOutcome outcome);
 
 class InteractionStage {
  public:
@@ -64,6 +76,19 @@ class InteractionStage {
                                     const interaction::ObjectPhysics& physics,
                                     const graph::ObstacleSet* obstacles, graph::DvGraph& graph);
 
+  /// The vehicle did not reach a contact of the object (AFFORDANCE "contact not reached"): a reachability
+  /// failure, so the object stays pushable. Plans again at once loop.contact_retries times, then backs
+  /// off (no push plans for loop.contact_backoff_s), at most loop.contact_backoffs times per goal.
+  ContactOutcome contactNotReached(std::int64_t object_id, bool known, const graph::ObstacleSet* obstacles,
+                                   graph::DvGraph& graph);
+  /// A new goal: objects suspended for the last one get push plans again.
+  void startGoal();
+  /// Ends every running back-off (not the suspensions until the next goal) and plans those objects again
+  /// from the last frame's scene, when there is one. Returns how many.
+  std::size_t liftBackoffs(const graph::ObstacleSet* obstacles, graph::DvGraph& graph);
+  /// True while the object gets no push plans after contacts not reached.
+  bool suspended(std::int64_t object_id) const;
+
   /// The physics the planner currently assumes for the object (the prior for unknown ids).
   interaction::ObjectPhysics physicsOf(std::int64_t object_id) const;
   bool unpushable(std::int64_t object_id) const;
@@ -79,7 +104,15 @@ class InteractionStage {
     bool inserted = false;
     bool unpushable = false;
     std::size_t plans_made = 0;
+    int contacts_not_reached = 0;         // since the last back-off
+    int backoffs = 0;                     // this goal
+    std::int64_t suspended_until_us = 0;  // no push plans before this scan time
+    bool suspended_for_goal = false;      // no push plans until the next goal
   };
+
+  /// Replans the object from the last frame's scene (after its estimate changed), when there is one.
+  void reprocess(std::int64_t object_id, const graph::ObstacleSet* obstacles, graph::DvGraph& graph);
+  bool suspendedAt(const ObjectState& state, std::int64_t utime) const;
 
   /// Asks the cache for objects[index] and puts the result into the graph when it changed.
   void process(const InteractionFrame& frame, std::size_t index, const graph::ObstacleSet& obstacles,

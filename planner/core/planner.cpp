@@ -105,6 +105,7 @@ bool Planner::setGoal(const Goal& goal)
   if (!goal_ || goal_->id != goal.id) {
     no_path_forgets_ = 0;
     last_forget_at_.reset();
+    interaction_.startGoal();
   }
   goal_ = goal;
   return true;
@@ -321,6 +322,7 @@ FrameResult Planner::processFrame(const FrameInput& frame)
   if (settings_.interaction_enabled && !empty_scan) {
     InteractionFrame interaction_frame;
     interaction_frame.robot = robot;
+    interaction_frame.utime = frame.utime;
     geometry::Point region_minimum = geometry::Point::Constant(std::numeric_limits<double>::infinity());
     geometry::Point region_maximum = -region_minimum;
     for (TrackedObject& object : tracked.seen) {
@@ -487,6 +489,13 @@ void Planner::search(FrameResult& result)
       }
     }
   }
+  if (found.status != graph::SearchStatus::Found && interaction_.liftBackoffs(&*obstacles_, global_) > 0) {
+    // A back-off is for taking another way; with none, waiting gains nothing: the pushes come back now
+    // (the back-offs of the goal are bounded, so this cannot repeat for ever).
+    appendMessage(status.message, "no path without the objects backed off from: their pushes planned again");
+    found = graph::findPath(graph::SearchGraph::fromDvGraph(global_), *obstacles_, *robot_, goal_->position,
+                            scratch_, preference, unseen);
+  }
   status.timings.search_ms = millisecondsSince(start);
   if (dropped_edges > 0) {
     appendMessage(status.message,
@@ -575,6 +584,9 @@ FrameResult Planner::applyAffordance(const AffordanceUpdate& update)
   const Clock::time_point start = Clock::now();
   std::string problem;
   AffordanceOutcome outcome = AffordanceOutcome::UnknownObject;
+  if (update.contact_not_reached) {
+    return contactNotReached(update.object_id);
+  }
   if (!std::isfinite(update.push_force_n) || !std::isfinite(update.affordance)) {
     problem = "affordance for object " + std::to_string(update.object_id) +
               " rejected: push_force_n and affordance must be finite";
@@ -618,6 +630,28 @@ FrameResult Planner::applyAffordance(const AffordanceUpdate& update)
                       ? "object " + std::to_string(update.object_id) + " unpushable: edges removed"
                       : "object " + std::to_string(update.object_id) + " physics updated");
   }
+  result.status.timings.interaction_ms = update_ms;
+  result.status.timings.total_ms += update_ms;
+  return result;
+}
+
+FrameResult Planner::contactNotReached(std::int64_t object_id)
+{
+  // Not force evidence: the affordance, the memory of it and the object's seal stay as they are.
+  const Clock::time_point start = Clock::now();
+  const ContactOutcome outcome = interaction_.contactNotReached(object_id, tracker_.contains(object_id),
+                                                                obstacles_ ? &*obstacles_ : nullptr, global_);
+  if (outcome == ContactOutcome::UnknownObject) {
+    ++bad_inputs_;
+  }
+  const double update_ms = millisecondsSince(start);
+  FrameResult result = replan();
+  appendMessage(
+      result.status.message,
+      outcome == ContactOutcome::UnknownObject
+          ? "affordance for object " + std::to_string(object_id) + " rejected: no such object tracked"
+          : "object " + std::to_string(object_id) +
+                " contact not reached, still pushable: " + contactOutcomeName(outcome));
   result.status.timings.interaction_ms = update_ms;
   result.status.timings.total_ms += update_ms;
   return result;

@@ -76,6 +76,8 @@ struct AffordanceUpdate {
   bool pushable = true;       // false: remove the object's interaction edges for good
   double push_force_n = 0.0;  // measured force to keep it sliding (<= 0: unknown)
   double affordance = 0.0;    // measured mu (<= 0: unknown)
+  // The vehicle did not reach the contact: no estimate, the object stays pushable and is tried again.
+  bool contact_not_reached = false;
 };
 
 /// A passage the vehicle could not get through (the executive's BLOCKED_PASSAGE): from where it stalled
@@ -119,6 +121,7 @@ class Planner {
 
   /// Updates the object's physics estimate or marks it unpushable, redoes/removes its edges and
   /// searches again at once (no frame needed). Unknown object id: counted as bad input, message says so.
+  /// A contact not reached changes no estimate: see InteractionStage::contactNotReached.
   FrameResult applyAffordance(const AffordanceUpdate& update);
 
   /// Seals the narrowest point between passage.from and passage.to (see passage_seal.hpp): from the next
@@ -143,8 +146,14 @@ class Planner {
   }
   /// How often the object got new interaction plans (cache misses taken), for diagnostics and tests.
   std::size_t interactionPlans(std::int64_t object_id) const { return interaction_.plansMade(object_id); }
+  /// Whether the object is marked unpushable (by force evidence only).
+  bool objectUnpushable(std::int64_t object_id) const { return interaction_.unpushable(object_id); }
+  /// Whether the object's pushes are suspended after contacts not reached.
+  bool objectSuspended(std::int64_t object_id) const { return interaction_.suspended(object_id); }
 
  private:
+  /// The vehicle did not reach a contact of the object: retry or back off, then search again.
+  FrameResult contactNotReached(std::int64_t object_id);
   /// Search and state for the current robot position; fills result.path and the status.
   void search(FrameResult& result);
   void fillSizes(PlannerStatus& status) const;

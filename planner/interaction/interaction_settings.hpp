@@ -96,6 +96,14 @@ struct PlanningLoopSettings {
   /// An object keeps the convex hull of its outlines (a part hidden in one view shows in another) until
   /// the vehicle comes this close to it; 0: every frame's outline as seen (planner/core/outline_memory.hpp).
   double outline_memory_restart_m = 0.0;
+  /// A contact the vehicle did not reach (no force evidence: the object stays pushable) is planned again at
+  /// once this many times; the next report suspends the object's pushes for contact_backoff_s.
+  int contact_retries = 1;
+  /// How long an object whose contacts were not reached gets no push plans: time for the surroundings
+  /// to change (a person, another object) or for the route round it; at the 0.5 m/s cruise about 10 m.
+  double contact_backoff_s = 20.0;
+  /// Back-offs per object and goal; after them the object gets no push plans until the next goal.
+  int contact_backoffs = 2;
 };
 
 /// Everything one object's interaction planning needs.

@@ -101,7 +101,19 @@ void addLoop(Table& table)
           "outline_memory_restart_m", [](auto& s) -> auto& { return s.loop.outline_memory_restart_m; }, "m",
           Range::nonNegative(),
           "experimental, 0 = off: an object keeps the hull of its outlines (parts hidden in one view show in "
-          "another) until the vehicle comes this close");
+          "another) until the vehicle comes this close")
+      .add(
+          "contact_retries", [](auto& s) -> auto& { return s.loop.contact_retries; }, "",
+          Range::nonNegative(),
+          "a contact the vehicle did not reach is planned again at once this many times (the object stays "
+          "pushable); the next report backs off")
+      .add(
+          "contact_backoff_s", [](auto& s) -> auto& { return s.loop.contact_backoff_s; }, "s",
+          Range::positive(), "an object whose contacts were not reached gets no push plans for this long")
+      .add(
+          "contact_backoffs", [](auto& s) -> auto& { return s.loop.contact_backoffs; }, "",
+          Range::nonNegative(),
+          "back-offs per object and goal; then the object gets no push plans until the next goal");
 }
 
 Table makeInteractionParameters()

@@ -189,6 +189,7 @@ AffordanceUpdate toAffordanceUpdate(const affordance_t& message)
   update.pushable = message.pushable;
   update.push_force_n = message.push_force_n;
   update.affordance = message.affordance;
+  update.contact_not_reached = message.reason == affordance_t::REASON_CONTACT_NOT_REACHED;
   return update;
 }
 

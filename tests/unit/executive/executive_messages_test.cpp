@@ -151,6 +151,10 @@ TEST(LcmConversions, OutputMessagesUseTheWireConstants)
   const ifar::affordance_t jammed = toAffordanceMessage(event, 78);
   EXPECT_EQ(jammed.reason, ifar::affordance_t::REASON_JAMMED);
   EXPECT_EQ(jammed.pushable, 1);
+  event.reason = AffordanceReason::ContactNotReached;
+  const ifar::affordance_t not_reached = toAffordanceMessage(event, 79);
+  EXPECT_EQ(not_reached.reason, ifar::affordance_t::REASON_CONTACT_NOT_REACHED);
+  EXPECT_EQ(not_reached.pushable, 1);
 
   BlockedPassage passage;
   passage.goal_id = 4;

@@ -77,8 +77,9 @@ void expectPlanGivenUp(const Output& output, const std::optional<AffordanceEvent
 {
   ASSERT_TRUE(event) << output.status.reason;
   EXPECT_EQ(event->object_id, 9);
-  EXPECT_FALSE(event->pushable);
-  EXPECT_EQ(event->reason, AffordanceReason::CostHigher);
+  // Standing still is no force evidence: the object stays pushable, the contact is reported not reached.
+  EXPECT_TRUE(event->pushable);
+  EXPECT_EQ(event->reason, AffordanceReason::ContactNotReached);
   EXPECT_EQ(event->text, text);
   EXPECT_EQ(output.status.mode, Mode::ReplanWait);
   EXPECT_TRUE(output.command.isZero());
@@ -107,7 +108,7 @@ class ExecutivePushObstaclesTest : public ::testing::Test {
         Stamped<ForceReading>{ForceReading{force_n.value_or(pushing ? 100.0 : 0.0), false}, now_us_};
     inputs.motor = Stamped<MotorReading>{MotorReading{true, false, ""}, now_us_};
     inputs.obstacles = Stamped<std::vector<Point>>{points, now_us_};
-    const Output output = executive_.step(now_us_, inputs);
+    Output output = executive_.step(now_us_, inputs);
     if (!held_ && !(force_n && output.command.linear > 0.0)) {  // a stalling force stops forward motion
       pose_ = testing::drive(pose_, output.command, kCycleUs * 1e-6);
     }
@@ -201,8 +202,9 @@ TEST_F(ExecutivePushObstaclesTest, AContactThatCannotBeReachedIsReportedAndRepla
   }
   ASSERT_TRUE(event) << output.status.reason;
   EXPECT_EQ(event->object_id, 9);
-  EXPECT_FALSE(event->pushable);
-  EXPECT_EQ(event->reason, AffordanceReason::CostHigher);
+  // A light box the vehicle could not get to stays pushable: only force evidence says otherwise.
+  EXPECT_TRUE(event->pushable);
+  EXPECT_EQ(event->reason, AffordanceReason::ContactNotReached);
   EXPECT_NE(event->text.find("contact not reached"), std::string::npos) << event->text;
   EXPECT_EQ(output.status.mode, Mode::ReplanWait);
   EXPECT_TRUE(output.command.isZero());
@@ -219,8 +221,8 @@ TEST_F(ExecutivePushObstaclesTest, AnApproachStuckOnItsWayToTheStandOffPointEsca
   // unpushable.
   pose_ = Pose2{0.2, 0.0, kPi / 2.0};
   std::vector<Point> wall;
-  for (double x = -1.5; x <= 2.0; x += 0.05) {
-    wall.emplace_back(x, 0.55);
+  for (int index = 0; index <= 70; ++index) {  // x from -1.5 to 2.0 every 5 cm
+    wall.emplace_back(-1.5 + 0.05 * index, 0.55);
   }
   Output output;
   bool escaped = false;
@@ -296,7 +298,8 @@ TEST_F(ExecutivePushObstaclesTest, AnApproachStuckTwiceOnItsWayReportsTheContact
   // help, and the second stand-still is reported as before.
   pose_ = Pose2{0.2, 0.0, kPi / 2.0};
   std::vector<Point> box;
-  for (double along = -1.0; along <= 1.0; along += 0.05) {
+  for (int index = 0; index <= 40; ++index) {  // -1.0 to 1.0 every 5 cm
+    const double along = -1.0 + 0.05 * index;
     box.emplace_back(0.2 + along, 0.55);
     box.emplace_back(0.2 + along, -0.55);
     box.emplace_back(-0.25, along);
@@ -309,7 +312,8 @@ TEST_F(ExecutivePushObstaclesTest, AnApproachStuckTwiceOnItsWayReportsTheContact
     event = output.affordance;
   }
   ASSERT_TRUE(event) << output.status.reason;
-  EXPECT_FALSE(event->pushable);
+  EXPECT_TRUE(event->pushable);
+  EXPECT_EQ(event->reason, AffordanceReason::ContactNotReached);
   EXPECT_NE(event->text.find("contact not reached"), std::string::npos) << event->text;
   EXPECT_EQ(output.status.pushes, 0);
 }

@@ -132,6 +132,52 @@ class ExecutiveTest : public ::testing::Test {
   std::vector<AffordanceEvent> events_;
 };
 
+TEST_F(ExecutiveTest, NoProgressTowardTheGoalEscalatesByDroppingTheRouteAhead)
+{
+  // Held in place while following (a livelock of stalls and escapes that get nowhere; the stall series
+  // is not reported here): after progress.timeout_s of no progress the executive drops the route ahead
+  // as a blocked passage, says so, and counts it.
+  settings_.progress.timeout_s = 10.0;
+  settings_.blocked_passage_stalls = 0;
+  executive_ = Executive(settings_, vehicle_);
+  const Path path = straightPath();
+  std::optional<Output> escalated;
+  int cycles = 0;
+  while (cycles < 1500 && !escalated) {
+    const Output output = run(1, path, 0.0, true);
+    ++cycles;
+    if (output.escalation) {
+      escalated = output;
+    }
+  }
+  ASSERT_TRUE(escalated.has_value());
+  EXPECT_NEAR(cycles * kCycleUs * 1e-6, 10.0, 0.1);
+  EXPECT_NE(escalated->escalation->find("escalation 1: no progress toward the goal for 10 s"),
+            std::string::npos)
+      << *escalated->escalation;
+  ASSERT_TRUE(escalated->blocked_passage.has_value());
+  EXPECT_NE(escalated->blocked_passage->text.find("no progress toward the goal"), std::string::npos);
+  EXPECT_EQ(escalated->blocked_passage->from, Point(0.0, 0.0));
+  EXPECT_EQ(escalated->status.escalations, 1);
+  // The next one only after another timeout.
+  const Output later = run(250, path, 0.0, true);
+  EXPECT_EQ(later.status.escalations, 1);
+  EXPECT_EQ(run(300, path, 0.0, true).status.escalations, 2);
+}
+
+TEST_F(ExecutiveTest, NoEscalationWhileTheVehicleGetsCloser)
+{
+  settings_.progress.timeout_s = 2.0;
+  executive_ = Executive(settings_, vehicle_);
+  Path path = straightPath();
+  path.waypoints.back().position = Point(12.0, 0.0);
+  for (int cycle = 0; cycle < 1000 && executive_.mode() != Mode::Arrived; ++cycle) {
+    const Output output = run(1, path);
+    ASSERT_FALSE(output.escalation.has_value()) << *output.escalation;
+  }
+  EXPECT_EQ(executive_.mode(), Mode::Arrived);
+}
+
 TEST_F(ExecutiveTest, IdleWithoutPath)
 {
   Inputs inputs = freshInputs(now_us_, straightPath());

@@ -192,6 +192,142 @@ TEST(InteractionPlanner, UnpushableBoxIsDroppedAtOnceAndForGood)
   EXPECT_TRUE(planner.applyAffordance(update).path.pushes.empty());
 }
 
+/// A 12 m room split at y = 6 by a partition with a 2 m doorway (x 5 to 7). A box fills the doorway from
+/// its right post to `gap_m` short of the left one; movable (a tagged box) or a wall (control).
+sim::World doorwayWithBox(double gap_m, bool movable)
+{
+  sim::World world;
+  world.name = "doorway_with_box";
+  world.bounds_min = geometry::Point(0.0, 0.0);
+  world.bounds_max = geometry::Point(12.0, 12.0);
+  const auto wall = [&world](const std::string& name, double x0, double y0, double x1, double y1) {
+    sim::StaticObstacle obstacle;
+    obstacle.name = name;
+    obstacle.outline = {geometry::Point(x0, y0), geometry::Point(x1, y0), geometry::Point(x1, y1),
+                        geometry::Point(x0, y1)};
+    world.obstacles.push_back(obstacle);
+  };
+  wall("south", 0.0, 0.0, 12.0, 0.3);
+  wall("north", 0.0, 11.7, 12.0, 12.0);
+  wall("west", 0.0, 0.3, 0.3, 11.7);
+  wall("east", 11.7, 0.3, 12.0, 11.7);
+  wall("partition_west", 0.3, 5.85, 5.0, 6.15);
+  wall("partition_east", 7.0, 5.85, 11.7, 6.15);
+  const double box_left = 5.0 + gap_m;
+  const double half_width = (7.0 - box_left) / 2.0;
+  if (movable) {
+    sim::MovableObject box;
+    box.id = 1;
+    box.name = "box";
+    box.outline = {geometry::Point(-half_width, -0.25), geometry::Point(half_width, -0.25),
+                   geometry::Point(half_width, 0.25), geometry::Point(-half_width, 0.25)};
+    box.pose = geometry::Pose2{box_left + half_width, 6.0, 0.0};
+    box.mass_kg = 30.0;
+    world.objects.push_back(box);
+  } else {
+    wall("box", box_left, 5.75, 7.0, 6.25);
+  }
+  world.start = geometry::Pose2{5.5, 3.0, M_PI / 2.0};
+  world.goals.push_back(sim::Goal{"goal", geometry::Point(5.5, 9.0)});
+  return world;
+}
+
+/// Where the path for `world` seen from its start crosses the partition (none: no path through it).
+std::optional<double> doorwayCrossing(const sim::World& world, bool interaction, FrameResult& result)
+{
+  PlannerSettings settings;
+  settings.interaction_enabled = interaction;
+  Planner planner{settings};
+  EXPECT_TRUE(planner.setGoal(Goal{3, world.goals.front().position}));
+  FrameAssembler assembler{InputSettings{}};
+  for (const FrameInput& frame :
+       test_support::feedAll(test_support::recordSimulation(world, 1.25), assembler)) {
+    result = planner.processFrame(frame);
+  }
+  if (!result.path.valid) {
+    return std::nullopt;
+  }
+  return crossingX(result.path, 6.0);
+}
+
+// The vehicle is 0.7 m wide and the planner inflates every obstacle by half of that: a gap 0.1 m wider than
+// the vehicle between a movable box and a wall stays open in the graph (the two classes are dilated in
+// images of their own, so neither swallows the gap to the other), and the path takes it instead of pushing
+// the box. Two walls 0.1 m apart more than the vehicle would merge (one class, one dilation): the gap has
+// to be some 0.9 m before it opens between them, which the control shows.
+TEST(InteractionPlanner, AGapBetweenAMovableBoxAndAWallThatTheVehicleFitsStaysOpen)
+{
+  const double gap_m = common::VehicleSettings{}.width_m + 0.1;
+  for (const bool interaction : {false, true}) {
+    FrameResult result;
+    const std::optional<double> crossing = doorwayCrossing(doorwayWithBox(gap_m, true), interaction, result);
+    ASSERT_TRUE(crossing.has_value()) << "interaction " << interaction << ": " << result.status.message;
+    EXPECT_GT(*crossing, 5.0) << "interaction " << interaction;
+    EXPECT_LT(*crossing, 5.0 + gap_m) << "interaction " << interaction;
+    EXPECT_TRUE(result.path.pushes.empty()) << "interaction " << interaction;
+  }
+  FrameResult walls;
+  EXPECT_FALSE(doorwayCrossing(doorwayWithBox(gap_m, false), false, walls).has_value());
+  const std::optional<double> wider = doorwayCrossing(doorwayWithBox(gap_m + 0.1, false), false, walls);
+  ASSERT_TRUE(wider.has_value()) << walls.status.message;
+  EXPECT_LT(*wider, 5.0 + gap_m + 0.1);
+}
+
+// A contact the vehicle did not reach is no force evidence: the light box stays pushable. The first report
+// plans it again at once, the next suspends its pushes for contact_backoff_s, after which they come back;
+// the back-offs per goal are bounded, and a new goal lifts them.
+TEST(InteractionPlanner, AContactNotReachedKeepsTheBoxPushableAndRetriesAfterABackOff)
+{
+  PlannerSettings settings;
+  settings.interaction.loop.contact_retries = 1;
+  settings.interaction.loop.contact_backoff_s = 5.0;
+  settings.interaction.loop.contact_backoffs = 1;
+  Planner planner{settings};
+  const FrameResult pushed = runStartThenApproach(planner);
+  const std::int64_t box = objectNear(pushed, kDoorwayBox);
+  ASSERT_EQ(pushed.path.pushes.size(), 1U);
+  ASSERT_EQ(pushed.path.pushes.front().object_id, box);
+
+  AffordanceUpdate update;
+  update.object_id = box;
+  update.pushable = true;
+  update.contact_not_reached = true;
+  const FrameResult retried = planner.applyAffordance(update);
+  EXPECT_NE(retried.status.message.find("contact not reached, still pushable: planned again"),
+            std::string::npos)
+      << retried.status.message;
+  ASSERT_EQ(retried.path.pushes.size(), 1U) << retried.status.message;
+  EXPECT_EQ(retried.path.pushes.front().object_id, box);
+  EXPECT_FALSE(planner.objectUnpushable(box));
+
+  const FrameResult backed_off = planner.applyAffordance(update);
+  EXPECT_TRUE(backed_off.path.pushes.empty());
+  EXPECT_TRUE(planner.objectSuspended(box));
+  EXPECT_FALSE(planner.objectUnpushable(box));
+  EXPECT_EQ(backed_off.status.bad_inputs, 0);
+
+  // Within the back-off the box gets no pushes; after it, it does again (it was never unpushable).
+  FrameInput frame = approachFrames().back();
+  frame.utime += 2'000'000;
+  EXPECT_TRUE(planner.processFrame(frame).path.pushes.empty());
+  frame.utime += 4'000'000;
+  const FrameResult after = planner.processFrame(frame);
+  ASSERT_EQ(after.path.pushes.size(), 1U) << after.status.message;
+  EXPECT_EQ(after.path.pushes.front().object_id, box);
+
+  // The one back-off of this goal is used: the next reports suspend the box until the goal changes.
+  planner.applyAffordance(update);
+  EXPECT_TRUE(planner.applyAffordance(update).path.pushes.empty());
+  frame.utime += 60'000'000;
+  EXPECT_TRUE(planner.processFrame(frame).path.pushes.empty());
+  EXPECT_FALSE(planner.objectUnpushable(box));
+  ASSERT_TRUE(planner.setGoal(Goal{4, kGoal}));
+  frame.utime += 100'000;
+  const FrameResult next_goal = planner.processFrame(frame);
+  ASSERT_EQ(next_goal.path.pushes.size(), 1U) << next_goal.status.message;
+  EXPECT_EQ(next_goal.path.pushes.front().object_id, box);
+}
+
 // The tracker loses the unpushable box (scans that do not show it) and finds it again under a new id:
 // what AFFORDANCE said stays with it, so the vehicle is not sent to push it again.
 TEST(InteractionPlanner, AnUnpushableBoxLostAndFoundAgainStaysUnpushable)

@@ -141,6 +141,13 @@ TEST(PlannerMessages, PushPathCarriesWaypointKindsAndPushPlans)
   EXPECT_FALSE(update.pushable);
   EXPECT_DOUBLE_EQ(update.push_force_n, 12.5);
   EXPECT_DOUBLE_EQ(update.affordance, 0.25);
+  EXPECT_FALSE(update.contact_not_reached);
+  // A contact not reached is its own outcome: no estimate, and the object stays pushable.
+  affordance.pushable = true;
+  affordance.reason = affordance_t::REASON_CONTACT_NOT_REACHED;
+  const AffordanceUpdate not_reached = toAffordanceUpdate(affordance);
+  EXPECT_TRUE(not_reached.contact_not_reached);
+  EXPECT_TRUE(not_reached.pushable);
 
   blocked_passage_t blocked{};
   blocked.from_x = 20.75;

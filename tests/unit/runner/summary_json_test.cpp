@@ -22,6 +22,7 @@ TEST(RunnerSummaryJson, ExactLine)
   summary.replans = 2;
   summary.affordance_updates = 3;
   summary.blocked_passages = 1;
+  summary.escalations = 2;
   summary.goal_distance_m = 0.42;
   summary.planner_frame = FrameTimes{103, 4.1, 9.75, 12.0};
   summary.interaction = FrameTimes{103, 0.0, 2.5, 140.9};
@@ -38,8 +39,9 @@ TEST(RunnerSummaryJson, ExactLine)
   EXPECT_EQ(
       summaryJson(summary),
       "{\"arrived\":true,\"reason\":\"arrived\",\"distance_m\":23.457,\"time_s\":41.200,\"pushes\":1,"
-      "\"replans\":2,\"affordance_updates\":3,\"blocked_passages\":1,\"goal_distance_m\":0.420,\"wall_"
-      "time_s\":12.500,\"planner_frame_ms\":{\"frames\":103,\"median\":4.100,\"p99\":9.750,\"max\":12.000},"
+      "\"replans\":2,\"affordance_updates\":3,\"blocked_passages\":1,\"escalations\":2,"
+      "\"goal_distance_m\":0.420,\"wall_time_s\":12.500,\"planner_frame_ms\":{\"frames\":103,\"median\":4."
+      "100,\"p99\":9.750,\"max\":12.000},"
       "\"interaction_ms\":{\"frames\":103,\"median\":0.000,\"p99\":2.500,\"max\":140.900},"
       "\"undecided_saturated_pushes\":1,\"longest_saturated_push_s\":6.250,\"routes\":4,\"routes_switched\":"
       "1,"
