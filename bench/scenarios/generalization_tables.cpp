@@ -5,21 +5,12 @@
 #include <cstdio>
 
 #include "bench/scenarios/driven_outcome.hpp"
+#include "bench/scenarios/table_text.hpp"
 
 namespace ifar::scenarios {
 namespace {
 
 const char* const kKinds[] = {"namosim", "willow_pairs"};
-
-std::string fixed(double value, int digits)
-{
-  if (!std::isfinite(value)) {
-    return "-";
-  }
-  char text[64];
-  std::snprintf(text, sizeof(text), "%.*f", digits, value);
-  return text;
-}
 
 bool driven(const ResultRow& row)
 {

@@ -11,21 +11,11 @@
 #include "bench/scenarios/generalization_tables.hpp"
 #include "bench/scenarios/scenario_kind.hpp"
 #include "bench/scenarios/search_suite.hpp"
+#include "bench/scenarios/table_text.hpp"
 #include "common/percentile.hpp"
 
 namespace ifar::scenarios {
 namespace {
-
-/// `value` with `digits` decimals; "-" when not finite.
-std::string fixed(double value, int digits)
-{
-  if (!std::isfinite(value)) {
-    return "-";
-  }
-  char text[64];
-  std::snprintf(text, sizeof(text), "%.*f", digits, value);
-  return text;
-}
 
 /// Milliseconds with about three significant digits.
 std::string milliseconds(double value)
