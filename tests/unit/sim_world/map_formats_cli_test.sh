@@ -57,8 +57,8 @@ fi
 # ifar-render takes the SVG itself, with the importer's options.
 status=0; ifar-render "$work/room.svg" --scale 0.01 --resolution 0.1 --out "$work/room.png" 2>"$work/err" || status=$?
 width=$(od -An -tu1 -j16 -N4 "$work/room.png" 2>/dev/null | awk '{print $1*16777216 + $2*65536 + $3*256 + $4}')
-# 6 m + 2 m margin at 0.1 m per pixel.
-[ "$status" -eq 0 ] && [ "${width:-0}" -eq 80 ] && ok "render SVG: 80 pixels wide" ||
+# 6 m, the 0.2 m edge walls either side and 2 m margin at 0.1 m per pixel.
+[ "$status" -eq 0 ] && [ "${width:-0}" -eq 84 ] && ok "render SVG: 84 pixels wide" ||
   fail "render SVG: exit $status, width ${width:-none}: $(cat "$work/err")"
 
 # A MovingAI map and a map_server map (a .yaml told from a world file by its image and resolution keys).
