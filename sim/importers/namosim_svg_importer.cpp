@@ -223,10 +223,11 @@ std::optional<Point> freePointNear(const World& world, const Point& target, cons
   return std::nullopt;
 }
 
-/// Four walls just outside the box low..high (world frame), named edge_south, edge_east, edge_north,
-/// edge_west.
-void addEdgeWalls(const Point& low, const Point& high, const NamosimImportSettings& settings, World& world)
+/// Four walls just outside `area` (world frame), named edge_south, edge_east, edge_north, edge_west.
+void addEdgeWalls(const Eigen::AlignedBox2d& area, const NamosimImportSettings& settings, World& world)
 {
+  const Point& low = area.min();
+  const Point& high = area.max();
   const double thickness = settings.edge_wall_thickness_m;
   const auto rectangle = [](double x0, double y0, double x1, double y1) {
     return Polygon{Point(x0, y0), Point(x1, y0), Point(x1, y1), Point(x0, y1)};
@@ -312,6 +313,10 @@ NamosimImport parseNamosimSvg(const std::string& text, const std::string& source
     import.robot_diameter_units = body->size;
   }
   const Converter converter(view_box, metres_per_unit);
+  // The viewBox in the world frame (y flipped: its bottom edge is the world's low y).
+  const Eigen::AlignedBox2d view_area(
+      converter.toWorld(Point(view_box.min_x, view_box.min_y + view_box.height)),
+      converter.toWorld(Point(view_box.min_x + view_box.width, view_box.min_y)));
   const double closing = settings.closing_tolerance * drawing_size;
   const double curve_tolerance = std::max(settings.curve_tolerance_m / metres_per_unit, 0.0);
 
@@ -423,20 +428,16 @@ NamosimImport parseNamosimSvg(const std::string& text, const std::string& source
   } else if (settings.start) {
     world.start = *settings.start;
   } else {
-    const Point low = converter.toWorld(Point(view_box.min_x, view_box.min_y + view_box.height));
-    const Point high = converter.toWorld(Point(view_box.min_x + view_box.width, view_box.min_y));
-    const Eigen::AlignedBox2d area(low, high);
     const double clearance = 0.5 * settings.vehicle_width_m;
-    const Point spot = freePointNear(world, area.center(), area, clearance,
-                                     std::max(clearance, area.sizes().maxCoeff() / 200.0))
-                           .value_or(area.center());
+    const Point spot = freePointNear(world, view_area.center(), view_area, clearance,
+                                     std::max(clearance, view_area.sizes().maxCoeff() / 200.0))
+                           .value_or(view_area.center());
     world.start = geometry::Pose2{spot.x(), spot.y(), 0.0};
   }
 
   const bool drew_walls = !world.obstacles.empty();
   if (settings.edge_wall_thickness_m > 0.0) {
-    addEdgeWalls(converter.toWorld(Point(view_box.min_x, view_box.min_y + view_box.height)),
-                 converter.toWorld(Point(view_box.min_x + view_box.width, view_box.min_y)), settings, world);
+    addEdgeWalls(view_area, settings, world);
   }
 
   // A world without walls, vehicle or goals is written, but said to be incomplete.
