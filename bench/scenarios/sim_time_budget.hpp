@@ -1,7 +1,7 @@
 #pragma once
 // How long (simulated seconds) a driven run may take before it counts as a failure: a base plus a
-// per-metre allowance on the task's optimal length, capped. One definition for the runner's stop and for
-// the tables that report the same runs against a stricter budget.
+// per-metre allowance on a length, capped. One definition for the runner's stop (given Task::budgetLength)
+// and for the tables that report the same runs against a stricter budget (on the exact optimum).
 
 #include <algorithm>
 #include <string>
