@@ -547,8 +547,7 @@ Output Executive::step(std::int64_t now_us, const Inputs& inputs)
   const std::int32_t stale = staleBits(now_us, inputs);
   absorbPath(inputs);
 
-  const bool active = task_ == Task::Follow || task_ == Task::Doorway || task_ == Task::Approach ||
-                      task_ == Task::Push || task_ == Task::ReplanWait || task_ == Task::BackOff;
+  const bool active = drivingTask() || task_ == Task::ReplanWait;
   const bool e_stopped = inputs.e_stop && inputs.e_stop->value.engaged;
   const geometry::Pose2& pose = cycle.view.pose;
   const bool pose_finite = std::isfinite(pose.x) && std::isfinite(pose.y) && std::isfinite(pose.heading);
@@ -559,11 +558,16 @@ Output Executive::step(std::int64_t now_us, const Inputs& inputs)
   } else {
     stepTask(cycle);
     watchProgress(cycle);
-    moving = task_ == Task::Follow || task_ == Task::Doorway || task_ == Task::Approach ||
-             task_ == Task::Push || task_ == Task::BackOff;
+    moving = drivingTask();
   }
   const Mode mode = halted ? (e_stopped ? Mode::EStop : Mode::Stop) : modeOf(task_);
   return finishCycle(cycle, mode, stale, moving);
+}
+
+bool Executive::drivingTask() const
+{
+  return task_ == Task::Follow || task_ == Task::Doorway || task_ == Task::Approach || task_ == Task::Push ||
+         task_ == Task::BackOff;
 }
 
 void Executive::watchProgress(Cycle& cycle)
@@ -572,10 +576,9 @@ void Executive::watchProgress(Cycle& cycle)
     return;
   }
   const geometry::Point position = cycle.view.pose.position();
-  const bool counting = task_ == Task::Follow || task_ == Task::Doorway || task_ == Task::Approach ||
-                        task_ == Task::Push || task_ == Task::BackOff;
   const double stuck_s = settings_.progress.timeout_s;
-  if (!progress_monitor_.update(cycle.view.now_us, position, progress_.remainingLength(position), counting)) {
+  if (!progress_monitor_.update(cycle.view.now_us, position, progress_.remainingLength(position),
+                                drivingTask())) {
     return;
   }
   ++escalations_;

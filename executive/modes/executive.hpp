@@ -125,6 +125,8 @@ class Executive {
   /// (reported as a contact not reached, so the planner tries another or backs off) or the route ahead
   /// (reported as a blocked passage, so the planner seals it and takes the next).
   void watchProgress(Cycle& cycle);
+  /// A task in which the vehicle drives (waiting for a replan, stopped or idle it does not).
+  bool drivingTask() const;
 
   ExecutiveSettings settings_;
   DifferentialDrive drive_;
