@@ -245,7 +245,10 @@ void addControlAndApproach(Table& table)
   add("contact_tolerance_m", &A::contact_tolerance_m, "m", Range::positive(),
       "the contact pose is reached within this");
   add("contact_force_n", &A::contact_force_n, "N", Range::positive(),
-      "a bumper force above this means contact");
+      "a bumper force above this means contact ...");
+  add("force_contact_reach_m", &A::force_contact_reach_m, "m", Range::nonNegative(),
+      "... within this of the contact pose: force felt farther back is not the object (a kerb the lidar "
+      "does not show), and standing still there is a contact not reached");
   add("lane_join_m", &A::lane_join_m, "m", Range::nonNegative(),
       "stuck on the way to the stand-off point within this behind the contact, in its lane: creep along it");
   add("lane_join_offset_m", &A::lane_join_offset_m, "m", Range::nonNegative(),

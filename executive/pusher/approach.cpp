@@ -108,7 +108,10 @@ ApproachStep Approach::step(const geometry::Pose2& pose, double force_n,
   }
   if (phase_ == ApproachPhase::Creep) {
     const geometry::Point relative = relativePosition(contact_, pose);
-    if (relative.x() >= -settings.contact_tolerance_m || force_n >= settings.contact_force_n) {
+    const bool at_contact = relative.x() >= -settings.contact_tolerance_m;
+    const bool object_felt =
+        force_n >= settings.contact_force_n && relative.x() >= -settings.force_contact_reach_m;
+    if (at_contact || object_felt) {
       phase_ = ApproachPhase::Done;
     } else {
       // Reference: the point of the push lane beside the vehicle, moving forward at creep speed.

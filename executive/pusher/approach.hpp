@@ -19,7 +19,12 @@ struct ApproachSettings {
   double heading_tolerance_rad = 0.05;
   double creep_speed = 0.15;          ///< m/s over the last stand-off distance
   double contact_tolerance_m = 0.03;  ///< the contact pose counts as reached within this (along the heading)
-  double contact_force_n = 20.0;      ///< a bumper force above this means contact
+  double contact_force_n = 20.0;      ///< a bumper force above this means contact ...
+  /// ... within this of the contact pose (along the lane). The object's face is placed to a raster cell
+  /// or two; force felt farther back, on the stand-off leg, is something the lidar does not show (a kerb,
+  /// a step below the obstacle band) and must not be taken for the object: the creep goes on, and
+  /// standing still there gives the contact up as not reached, which keeps the object pushable.
+  double force_contact_reach_m = 0.3;
   /// A vehicle stuck on the collision-free leg that stands in the push lane (at most `lane_join_offset_m`
   /// beside its line, `lane_join_m` behind the contact pose, `lane_join_heading_rad` off its heading)
   /// creeps along the lane instead (joinLane): in a corridor too narrow to turn in, the leg's last

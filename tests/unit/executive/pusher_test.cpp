@@ -185,7 +185,7 @@ TEST_F(PusherTest, ApproachEndsOnContactForce)
 {
   const Pose2 contact{1.0, 0.0, 0.0};
   Approach approach;
-  const Pose2 pose{0.7, 0.0, 0.0};  // in the lane, 0.3 m short
+  const Pose2 pose{0.8, 0.0, 0.0};  // in the lane, 0.2 m short: within force_contact_reach_m
   approach.begin(contact, pose, approach_);
   EXPECT_EQ(approach.phase(), ApproachPhase::Align);
   const ApproachStep creeping = approach.step(pose, 0.0, {}, approach_, follower_, drive_);
@@ -194,6 +194,22 @@ TEST_F(PusherTest, ApproachEndsOnContactForce)
   const ApproachStep touching = approach.step(pose, 50.0, {}, approach_, follower_, drive_);
   EXPECT_EQ(touching.phase, ApproachPhase::Done);
   EXPECT_TRUE(touching.command.isZero());
+}
+
+TEST_F(PusherTest, ForceFeltFartherFromTheContactThanItsReachIsNotTheObject)
+{
+  // 0.5 m short of the contact, more than force_contact_reach_m (0.3): the bumper presses on something
+  // the lidar does not show. The creep goes on (standing still there gives the contact up as not reached).
+  ASSERT_DOUBLE_EQ(approach_.force_contact_reach_m, 0.3);
+  const Pose2 contact{1.0, 0.0, 0.0};
+  Approach approach;
+  const Pose2 pose{0.5, 0.0, 0.0};
+  approach.begin(contact, pose, approach_);
+  const ApproachStep pressing = approach.step(pose, 200.0, {}, approach_, follower_, drive_);
+  EXPECT_EQ(pressing.phase, ApproachPhase::Creep);
+  EXPECT_GT(pressing.command.linear, 0.0);
+  const ApproachStep closer = approach.step(Pose2{0.75, 0.0, 0.0}, 200.0, {}, approach_, follower_, drive_);
+  EXPECT_EQ(closer.phase, ApproachPhase::Done);
 }
 
 TEST_F(PusherTest, AStuckApproachInThePushLaneJoinsItAndCreepsToTheContact)

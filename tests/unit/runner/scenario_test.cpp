@@ -1,6 +1,7 @@
 // Whole runs of the headless runner on the shipped config: arrival on a free path, determinism, pushing
-// the light box of the demo room, adapting to a box too heavy to push, FAR mode going round, and what a
-// frame observer (ifar-run --graph-png) sees.
+// the light box of the demo room, adapting to a box too heavy to push, a doorway livelock the progress
+// monitor ends, a kerb that keeps the box out of reach, FAR mode going round, and what a frame observer
+// (ifar-run --graph-png) sees.
 // Each run takes tens of simulated seconds (label "system").
 
 #include <algorithm>
@@ -191,6 +192,82 @@ TEST(RunnerScenario, HeavyBoxIsFoundUnpushableAndAvoided)
   ASSERT_TRUE(summary.losses.valid) << summary.losses.problem;
   EXPECT_GT(summary.losses.buckets.attempts_m, 1.0);
   EXPECT_NEAR(summary.losses.buckets.total(), summary.losses.excess_m, 0.01);
+}
+
+/// The demo room with its doorway box taken out, and `obstacles` and `objects` put in.
+sim::World demoRoomWith(const std::vector<sim::StaticObstacle>& obstacles,
+                        const std::vector<sim::MovableObject>& objects)
+{
+  sim::World world = worldFile(kSourceDir + "/config/worlds/demo_room.yaml");
+  world.objects.erase(std::remove_if(world.objects.begin(), world.objects.end(),
+                                     [](const sim::MovableObject& object) { return object.id == 1; }),
+                      world.objects.end());
+  world.obstacles.insert(world.obstacles.end(), obstacles.begin(), obstacles.end());
+  world.objects.insert(world.objects.end(), objects.begin(), objects.end());
+  return world;
+}
+
+sim::StaticObstacle block(const std::string& name, double x0, double y0, double x1, double y1,
+                          double height_m)
+{
+  sim::StaticObstacle obstacle;
+  obstacle.name = name;
+  obstacle.outline = {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+  obstacle.height_m = height_m;
+  return obstacle;
+}
+
+bool anyLineHas(const std::vector<std::string>& lines, const std::string& text)
+{
+  return std::any_of(lines.begin(), lines.end(),
+                     [&](const std::string& line) { return line.find(text) != std::string::npos; });
+}
+
+TEST(RunnerScenario, AStoolBesideAPillarInADoorwayLivelocksUntilTheProgressMonitorEscalates)
+{
+  // The 1.4 m doorway holds a 0.3 m pillar at its west post and a 0.35 m stool at its east post: 0.75 m
+  // between them, which the planner's outlines leave open but the 0.7 m vehicle does not get through
+  // with its guard's clearance. With stall and on-sight gap reports off, nothing but the progress
+  // monitor tells the planner: without it the vehicle tries the gap until the time limit.
+  sim::MovableObject stool;
+  stool.id = 1;
+  stool.name = "stool";
+  stool.outline = {{-0.175, -0.175}, {0.175, -0.175}, {0.175, 0.175}, {-0.175, 0.175}};
+  stool.pose = geometry::Pose2{8.525, 16.0, 0.0};
+  stool.height_m = 0.8;
+  stool.mass_kg = 8.0;
+  stool.ground_friction = 0.4;
+  RunRequest request =
+      requestFor(demoRoomWith({block("pillar", 7.3, 15.7, 7.6, 16.3, 2.0)}, {stool}), kDemoGoal, 240.0);
+  request.executive.blocked_passage_stalls = 0;
+  request.executive.blocked_passage_on_sight = executive::GapReportScope::Off;
+  std::vector<std::string> lines;
+  const RunSummary summary = runAndLog(request, &lines);
+  EXPECT_TRUE(summary.arrived) << summary.reason;
+  EXPECT_GE(summary.escalations, 1);
+  EXPECT_TRUE(anyLineHas(lines, "no progress toward the goal for 60 s"));
+
+  request.executive.progress.timeout_s = 0.0;
+  request.max_sim_time_s = 200.0;
+  const RunSummary unmonitored = runScenario(request, {});
+  EXPECT_FALSE(unmonitored.arrived);
+  EXPECT_EQ(unmonitored.escalations, 0);
+}
+
+TEST(RunnerScenario, ForceFeltShortOfTheBoxIsAContactNotReachedAndTheBoxStaysPushable)
+{
+  // A 0.1 m kerb across the doorway's approach, 1.1 m south of the light box: below the lidar's obstacle
+  // band, so no one plans round it, and the bumper presses on it with the box out of reach. That force
+  // is not the box's: the contact is not reached, the box stays pushable, and the vehicle goes east.
+  RunRequest request = requestFor(worldFile(kSourceDir + "/config/worlds/demo_room.yaml"), kDemoGoal, 240.0);
+  request.world.obstacles.push_back(block("kerb", 6.8, 14.4, 9.2, 14.6, 0.1));
+  std::vector<std::string> lines;
+  const RunSummary summary = runAndLog(request, &lines);
+  EXPECT_TRUE(summary.arrived) << summary.reason;
+  EXPECT_TRUE(anyLineHas(lines, "object 1 contact not reached, still pushable"));
+  EXPECT_FALSE(anyLineHas(lines, "unpushable"));
+  EXPECT_EQ(summary.pushes, 0);
+  EXPECT_TRUE(passesEastOpening(summary));
 }
 
 TEST(RunnerScenario, FarModeGoesRoundWithoutPushing)
