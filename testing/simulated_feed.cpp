@@ -21,12 +21,7 @@ planner::PoseSample planarPose(std::int64_t utime, double x, double y, double he
 std::vector<FeedRecord> recordSimulation(const sim::World& world, double seconds, double linear,
                                          double angular)
 {
-  return recordSimulation(world, sim::SimulatorSettings{}, seconds, linear, angular);
-}
-
-std::vector<FeedRecord> recordSimulation(const sim::World& world, const sim::SimulatorSettings& settings,
-                                         double seconds, double linear, double angular)
-{
+  sim::SimulatorSettings settings;
   sim::Simulator simulator(world, common::VehicleSettings{}, settings);
   simulator.setVelocityCommand(linear, angular);
   std::vector<FeedRecord> records;

@@ -6,7 +6,6 @@
 #include <vector>
 
 #include "planner/core/frame_assembler.hpp"
-#include "sim/simulator/simulator.hpp"
 #include "sim/world/world.hpp"
 
 namespace ifar::test_support {
@@ -23,9 +22,6 @@ struct FeedRecord {
 /// packet and one pose per 10 ms step.
 std::vector<FeedRecord> recordSimulation(const sim::World& world, double seconds, double linear = 0.0,
                                          double angular = 0.0);
-/// ... with the simulator's settings (a sensing profile, a seed).
-std::vector<FeedRecord> recordSimulation(const sim::World& world, const sim::SimulatorSettings& settings,
-                                         double seconds, double linear = 0.0, double angular = 0.0);
 
 /// Feeds the records in order (the clock is each record's own time) and returns the completed frames.
 std::vector<planner::FrameInput> feedAll(const std::vector<FeedRecord>& records,

@@ -67,15 +67,6 @@ PlannerSettings completed(PlannerSettings settings)
   return settings;
 }
 
-TagHoldSettings tagHoldSettings(const PlannerSettings& settings)
-{
-  // FAR mode knows no movable objects: nothing to hold. The margin is the error of a return's position
-  // between two scans (the lidar's range noise and the pose's jitter), the one the carving allows.
-  return settings.interaction_enabled
-             ? TagHoldSettings::fromVehicle(settings.vehicle, settings.perception.carve_margin_m)
-             : TagHoldSettings{};
-}
-
 TrackerSettings trackerSettings(const PlannerSettings& settings)
 {
   TrackerSettings tracker;
@@ -101,8 +92,7 @@ Planner::Planner(const PlannerSettings& settings)
       object_seals_(settings_.perception.cell_size_m),
       affordances_(trackerSettings(settings_).association_distance_m),
       outline_memory_(settings_.interaction_enabled ? settings_.interaction.loop.outline_memory_restart_m
-                                                    : 0.0),
-      tag_hold_(tagHoldSettings(settings_))
+                                                    : 0.0)
 {
 }
 
@@ -227,16 +217,9 @@ FrameResult Planner::processFrame(const FrameInput& frame)
     input.remembered_background = common::Span<const geometry::Point>(remembered.data(), remembered.size());
     input.kept_background = common::Span<const geometry::Point>(kept.data(), kept.size());
   }
-  const Eigen::Vector3d sensor_position = (frame.motion.vehicle_at_end * input.mount).translation();
-  const geometry::Point sensor(sensor_position.x(), sensor_position.y());
-  const TagHold::Returns held = tag_hold_.heldNear(sensor);
-  input.held.movable = common::Span<const geometry::Point>(held.movable.data(), held.movable.size());
-  input.held.background = common::Span<const geometry::Point>(held.background.data(), held.background.size());
-  input.held.margin_m = tag_hold_.settings().margin_m;
   perception::PerceptionResult perceived = perception::runPerception(input, settings_.perception);
   const Clock::time_point memory_start = Clock::now();
   updateBackgroundMemory(perceived, status.work);
-  tag_hold_.releaseSeenThrough(perceived.free_space, settings_.perception.cell_size_m);
   status.timings.perception_ms = perceived.stats.total_ms + millisecondsSince(memory_start);
   status.obstacle_points =
       static_cast<std::int64_t>(perceived.stats.background_points + perceived.stats.movable_points);
@@ -301,17 +284,6 @@ FrameResult Planner::processFrame(const FrameInput& frame)
   for (std::size_t outline = 0; outline < movable_polygons.size(); ++outline) {
     result.polygon_ids[movable_polygons[outline]] = tracked.polygon_ids[outline];
   }
-  {
-    // By their tags alone: the hold's own returns must not carry it on to what stands beside them.
-    const std::size_t tagged = perceived.observed_movable.size() - perceived.stats.held_points;
-    tag_hold_.observe(
-        tracked.seen, common::Span<const geometry::Point>(perceived.observed_movable.data(), tagged),
-        common::Span<const float>(perceived.observed_movable_heights_m.data(),
-                                  std::min(tagged, perceived.observed_movable_heights_m.size())),
-        common::Span<const geometry::Point>(perceived.observed_background.data(),
-                                            perceived.observed_background.size()),
-        sensor);
-  }
   shapeOutlines(tracked, movable_polygons, robot, result);
   affordances_.seen(tracked.seen);
   for (const std::int64_t dropped : tracked.dropped) {
@@ -319,7 +291,6 @@ FrameResult Planner::processFrame(const FrameInput& frame)
     interaction_.drop(dropped, global_);
     affordances_.dropped(dropped);
     outline_memory_.forget(dropped);
-    tag_hold_.forget(dropped);
   }
   for (const TrackedObject& object : tracked.seen) {
     if (const std::optional<LearnedAffordance> learned = affordances_.inherit(object.id, object.centroid)) {
@@ -634,8 +605,6 @@ FrameResult Planner::applyAffordance(const AffordanceUpdate& update)
       affordances_.learned(update.object_id, update.pushable, physics, tracker_.centroidOf(update.object_id));
       // Pushed, the object has moved and the gap beside it with it; unpushable, it is a wall like the seal.
       releaseObjectSeal(update.object_id, !update.pushable);
-      // Pushed, it is no longer where its returns were held; unpushable, it is background from now on.
-      tag_hold_.forget(update.object_id);
       if (!update.pushable && settings_.perception.remember_background) {
         // What the vehicle cannot move is a wall from now on, also once it is out of sight: otherwise
         // the corridor it closes looks open again from the room beside it, and the route flips each

@@ -22,7 +22,6 @@
 #include "planner/core/outline_memory.hpp"
 #include "planner/core/planner_status.hpp"
 #include "planner/core/seen_space.hpp"
-#include "planner/core/tag_hold.hpp"
 #include "planner/graph/dv_graph.hpp"
 #include "planner/graph/obstacle_set.hpp"
 #include "planner/graph/search.hpp"
@@ -183,7 +182,6 @@ class Planner {
   ObjectSeals object_seals_;             // ... beside a movable object: kept with the object
   AffordanceMemory affordances_;
   OutlineMemory outline_memory_;                 // partly seen objects: the most of each one seen
-  TagHold tag_hold_;                             // objects seen from farther keep their class up close
   SeenSpace seen_;                               // where the scans have looked (graph.unseen_cost)
   std::optional<graph::ObstacleSet> obstacles_;  // last frame's observed obstacles, for attachment
   std::optional<Goal> goal_;

@@ -1,10 +1,8 @@
 #include "planner/perception/classification.hpp"
 
 #include <Eigen/Geometry>
-#include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <unordered_map>
 
 #include "planner/perception/cell_key.hpp"
@@ -121,94 +119,6 @@ ClassifiedPoints classifyByDetector(common::Span<const WorldPoint> points,
       result.background_heights_m.push_back(height);
     }
   }
-  return result;
-}
-
-namespace {
-
-/// Points by cells one side wide: a point within that distance of one lies in its cell or a neighbour.
-class PointCells {
- public:
-  PointCells(common::Span<const geometry::Point> points, double side) : side_(side)
-  {
-    for (const geometry::Point& point : points) {
-      if (point.allFinite()) {
-        const auto [column, row] = cellOf(point);
-        cells_[packCellKey(column, row)].push_back(point);
-      }
-    }
-  }
-  /// Squared distance from `point` to the nearest point within one side (infinity when none).
-  double nearestSquared(const geometry::Point& point) const
-  {
-    double nearest = std::numeric_limits<double>::infinity();
-    const auto [column, row] = cellOf(point);
-    for (std::int64_t dc = -1; dc <= 1; ++dc) {
-      for (std::int64_t dr = -1; dr <= 1; ++dr) {
-        const auto found = cells_.find(packCellKey(column + dc, row + dr));
-        if (found != cells_.end()) {
-          for (const geometry::Point& other : found->second) {
-            nearest = std::min(nearest, (other - point).squaredNorm());
-          }
-        }
-      }
-    }
-    return nearest;
-  }
-  bool empty() const { return cells_.empty(); }
-
- private:
-  std::pair<std::int64_t, std::int64_t> cellOf(const geometry::Point& point) const
-  {
-    return {static_cast<std::int64_t>(std::floor(point.x() / side_)),
-            static_cast<std::int64_t>(std::floor(point.y() / side_))};
-  }
-  double side_;
-  std::unordered_map<std::uint64_t, std::vector<geometry::Point>> cells_;
-};
-
-}  // namespace
-
-ClassifiedPoints classifyByReflectivity(common::Span<const WorldPoint> points, const TagReading& reading,
-                                        const HeldReturns& held, std::size_t& held_points)
-{
-  held_points = 0;
-  if (held.movable.empty() || !(held.margin_m > 0.0)) {
-    return classifyByReflectivity(points, reading);
-  }
-  const std::vector<bool> tagged = votedTags(points, reading);
-  const PointCells movable_cells(held.movable, held.margin_m);
-  const PointCells background_cells(held.background, held.margin_m);
-  const double margin_squared = held.margin_m * held.margin_m;
-  ClassifiedPoints result;
-  result.background.reserve(points.size());
-  result.background_heights_m.reserve(points.size());
-  std::vector<std::size_t> taken;
-  for (std::size_t index = 0; index < points.size(); ++index) {
-    const WorldPoint& point = points[index];
-    const geometry::Point ground(point.position_world.x(), point.position_world.y());
-    const auto height = static_cast<float>(point.height_above_ground_m);
-    if (tagged[index]) {
-      result.movable.push_back(ground);
-      result.movable_heights_m.push_back(height);
-      continue;
-    }
-    if (point.reflectivity < reading.threshold && ground.allFinite()) {
-      const double to_movable = movable_cells.nearestSquared(ground);
-      if (to_movable <= margin_squared && to_movable < background_cells.nearestSquared(ground)) {
-        taken.push_back(index);
-        continue;
-      }
-    }
-    result.background.push_back(ground);
-    result.background_heights_m.push_back(height);
-  }
-  for (const std::size_t index : taken) {
-    const WorldPoint& point = points[index];
-    result.movable.emplace_back(point.position_world.x(), point.position_world.y());
-    result.movable_heights_m.push_back(static_cast<float>(point.height_above_ground_m));
-  }
-  held_points = taken.size();
   return result;
 }
 

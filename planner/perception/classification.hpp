@@ -2,7 +2,6 @@
 // Splits obstacle points into movable (S_mov) and background (S_bg), either by the reflectivity of
 // retro-reflective tags or by the outlines an external detector publishes.
 
-#include <cstddef>
 #include <vector>
 
 #include "common/geometry/polygon.hpp"
@@ -40,22 +39,5 @@ ClassifiedPoints classifyByReflectivity(common::Span<const WorldPoint> points, c
 /// ignored. An empty polygon list makes every point background.
 ClassifiedPoints classifyByDetector(common::Span<const WorldPoint> points,
                                     common::Span<const geometry::Polygon> detector_polygons);
-
-/// Where a movable object's returns and the background's around it lay in an earlier scan that showed
-/// more of the object (ground plane, world frame; the planner's TagHold).
-struct HeldReturns {
-  common::Span<const geometry::Point> movable;
-  common::Span<const geometry::Point> background;
-  /// A return within this of a held movable one, and nearer to it than to any held background one, is
-  /// the object's (metres; 0 = nothing held).
-  double margin_m = 0.0;
-};
-
-/// Movable when the point carries a tag (`reading`), or, read untagged on its own, when `held` takes it:
-/// a tag missed where the scan shows too little of the object for the vote to restore it. A return the
-/// vote turned (its own tag outvoted) keeps the vote's class. The points `held` took come last among
-/// the movable ones, `held_points` of them.
-ClassifiedPoints classifyByReflectivity(common::Span<const WorldPoint> points, const TagReading& reading,
-                                        const HeldReturns& held, std::size_t& held_points);
 
 }  // namespace ifar::perception

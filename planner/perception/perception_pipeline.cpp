@@ -108,8 +108,7 @@ PerceptionResult runPerception(const PerceptionInput& input, const PerceptionSet
   stage_start = Clock::now();
   ClassifiedPoints classified = input.detector_polygons
                                     ? classifyByDetector(filtered.obstacle_points, *input.detector_polygons)
-                                    : classifyByReflectivity(filtered.obstacle_points, tagReading(settings),
-                                                             input.held, result.stats.held_points);
+                                    : classifyByReflectivity(filtered.obstacle_points, tagReading(settings));
   result.stats.classification_ms = millisecondsSince(stage_start);
   result.stats.background_points = classified.background.size();
   result.stats.movable_points = classified.movable.size();

@@ -9,7 +9,6 @@
 
 #include "common/geometry/polygon.hpp"
 #include "common/span.hpp"
-#include "planner/perception/classification.hpp"
 #include "planner/perception/free_space_view.hpp"
 #include "planner/perception/local_layer.hpp"
 #include "planner/perception/perception_settings.hpp"
@@ -29,10 +28,6 @@ struct PerceptionInput {
   common::Span<const geometry::Point> remembered_background;
   /// Background known otherwise (passages sealed after stalls, a prior map): drawn as it is.
   common::Span<const geometry::Point> kept_background;
-  /// Where movable objects' returns and the background's around them were seen in scans that showed
-  /// more of them (the planner's TagHold): a return read untagged is movable where they say so
-  /// (classification.hpp, HeldReturns). Reflectivity classification only; used during the call.
-  HeldReturns held;
 };
 
 enum class PerceptionStatus {
@@ -52,7 +47,6 @@ struct PerceptionStats {
   std::size_t outside_height_band_points = 0;
   std::size_t background_points = 0;
   std::size_t movable_points = 0;
-  std::size_t held_points = 0;      // of the movable ones, read untagged and taken by the held returns (last)
   std::size_t gap_fill_points = 0;  // joined across grazing gaps (grazing_gap_fill.hpp), this scan only
   std::size_t points_outside_layer = 0;
   std::size_t dropped_contours = 0;
