@@ -293,4 +293,42 @@ bool polygonsIntersect(const Polygon& first, const Polygon& second)
   return containsPoint(first, second.front()) || containsPoint(second, first.front());
 }
 
+Polygon offsetPolygon(const Polygon& polygon, double distance)
+{
+  const std::size_t count = polygon.size();
+  if (count < 3 || distance == 0.0) {
+    return polygon;
+  }
+  // Outward normal of each edge: a counter-clockwise polygon has its inside on the left.
+  std::vector<Vector> normals(count, Vector::Zero());
+  for (std::size_t index = 0; index < count; ++index) {
+    const Vector along = polygon[(index + 1) % count] - polygon[index];
+    const double length = along.norm();
+    if (length > kEpsilon) {
+      normals[index] = Vector(along.y(), -along.x()) / length;
+    }
+  }
+  constexpr double kMitreLimit = 2.0;
+  Polygon offset;
+  offset.reserve(count);
+  for (std::size_t index = 0; index < count; ++index) {
+    const Vector& before = normals[(index + count - 1) % count];
+    const Vector& after = normals[index];
+    const Vector sum = before + after;
+    const double cosine_plus_one = 1.0 + before.dot(after);
+    Vector shift = Vector::Zero();
+    // The mitre is 1 / cos(half the turn) = sqrt(2 / (1 + cos(turn))) long: at most kMitreLimit.
+    if (cosine_plus_one >= 2.0 / (kMitreLimit * kMitreLimit)) {
+      // The mitre point: on both offset edges' lines.
+      shift = sum / cosine_plus_one;
+    } else if (sum.norm() > kEpsilon) {
+      shift = sum.normalized() * kMitreLimit;
+    } else {
+      shift = after;  // a zero-length neighbour edge or an edge folding straight back
+    }
+    offset.push_back(polygon[index] + distance * shift);
+  }
+  return offset;
+}
+
 }  // namespace ifar::geometry

@@ -48,6 +48,12 @@ double width(const Polygon& polygon);
 /// Distance from `point` to the polygon's boundary (0 on it).
 double distanceToBoundary(const Polygon& polygon, const Point& point);
 
+/// A counter-clockwise polygon with every edge moved `distance` outward (inward when negative), its
+/// corners mitred, the mitre capped at twice `distance` (a sharp spike is cut back, not stretched).
+/// Meant for offsets smaller than the polygon's edges: a longer one can fold an edge back; check the
+/// result with isSimple() where that matters.
+Polygon offsetPolygon(const Polygon& polygon, double distance);
+
 /// True when the polygons' closed regions share a point (touching counts).
 bool polygonsIntersect(const Polygon& first, const Polygon& second);
 

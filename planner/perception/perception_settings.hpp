@@ -32,6 +32,10 @@ struct PerceptionSettings {
   double cell_size_m = 0.15;
   /// Obstacles grow by this radius before contours are taken: the vehicle's half width.
   double inflation_radius_m = 0.35;
+  /// Experimental: move the traced borders the part of the inflation radius that the whole cells of the
+  /// disc miss (local_layer.cpp), so an obstacle grows by the radius on average, not by a whole number of
+  /// cells (0.30 m for 0.35 m on 0.15 m cells, which leaves every gap the planner sees 0.1 m too wide).
+  bool exact_inflation = false;
   /// Douglas-Peucker tolerance for contour simplification (metres).
   double simplify_epsilon_m = 0.1;
   /// Contours (outer borders and holes) enclosing less area than this are dropped (square metres).

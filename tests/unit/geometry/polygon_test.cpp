@@ -221,5 +221,36 @@ TEST(PolygonsIntersect, ContainmentAndDisjoint)
   EXPECT_FALSE(polygonsIntersect({}, outer));
 }
 
+TEST(OffsetPolygon, EdgesMoveByTheDistanceAndCornersMeetOnBothLines)
+{
+  const Polygon grown = offsetPolygon(rectangle(0.0, 0.0, 2.0, 1.0), 0.1);
+  ASSERT_EQ(grown.size(), 4U);
+  EXPECT_TRUE(grown[0].isApprox(Point(-0.1, -0.1)));
+  EXPECT_TRUE(grown[1].isApprox(Point(2.1, -0.1)));
+  EXPECT_TRUE(grown[2].isApprox(Point(2.1, 1.1)));
+  EXPECT_TRUE(grown[3].isApprox(Point(-0.1, 1.1)));
+  const Polygon shrunk = offsetPolygon(rectangle(0.0, 0.0, 2.0, 1.0), -0.25);
+  EXPECT_NEAR(area(shrunk), 1.5 * 0.5, 1e-12);
+  // The concave corner of the L moves out along its bisector as well: onto both shifted edges.
+  const Polygon l_grown = offsetPolygon(lShape(), 0.1);
+  const Polygon l_expected{Point(-0.1, -0.1), Point(2.1, -0.1), Point(2.1, 1.1),
+                           Point(1.1, 1.1),   Point(1.1, 2.1),  Point(-0.1, 2.1)};
+  ASSERT_EQ(l_grown.size(), l_expected.size());
+  for (std::size_t index = 0; index < l_grown.size(); ++index) {
+    EXPECT_TRUE(l_grown[index].isApprox(l_expected[index])) << index;
+  }
+  EXPECT_TRUE(isSimple(l_grown));
+}
+
+TEST(OffsetPolygon, ASharpSpikeIsCappedAtTwiceTheDistance)
+{
+  // A thin triangle: its tip turns by nearly 180 degrees, where an uncapped mitre would run far out.
+  const Polygon spike{Point(0.0, 0.0), Point(10.0, 0.5), Point(0.0, 1.0)};
+  const Polygon grown = offsetPolygon(spike, 0.1);
+  EXPECT_NEAR((grown[1] - spike[1]).norm(), 0.2, 1e-12);
+  EXPECT_GT(grown[1].x(), spike[1].x());
+  EXPECT_EQ(offsetPolygon(spike, 0.0), spike);
+}
+
 }  // namespace
 }  // namespace ifar::geometry

@@ -193,5 +193,56 @@ TEST(LocalLayer, NoPointsNoPolygons)
   EXPECT_EQ(layer.dropped_contours, 0U);
 }
 
+TEST(LocalLayer, BordersLieTheInflationRadiusOutOnAverageWhereverTheBoxSitsInItsCells)
+{
+  // A 3 m x 2 m box at 40 positions spread over the cells: the disc reaches 2 whole cells (0.30 m) of
+  // 0.15 m, and the traced border is moved the remaining 0.05 m, so the gap the planner sees beside an
+  // obstacle is the vehicle's, not 0.1 m wider. Each side is off by at most half a cell.
+  PerceptionSettings settings = sixtyMetreLayer();
+  settings.exact_inflation = true;
+  ASSERT_DOUBLE_EQ(settings.cell_size_m, 0.15);
+  ASSERT_DOUBLE_EQ(settings.inflation_radius_m, 0.35);
+  double sum = 0.0;
+  int sides = 0;
+  for (int position = 0; position < 40; ++position) {
+    const double x0 = 0.0137 * position;  // 0 .. 0.53 m: more than three cells
+    const double y0 = 0.0091 * position;
+    ClassifiedPoints points;
+    points.background = outlinePoints({{x0, y0}, {x0 + 3.0, y0}, {x0 + 3.0, y0 + 2.0}, {x0, y0 + 2.0}});
+    const LocalLayer layer = buildLocalLayer(points, geometry::Point(0.0, 0.0), settings);
+    const auto outer = polygonsOf(layer, ObstacleClass::Background, BoundaryKind::Outer);
+    ASSERT_EQ(outer.size(), 1U) << position;
+    const Eigen::AlignedBox2d box = geometry::boundingBox(outer[0].vertices);
+    for (const double inflation :
+         {x0 - box.min().x(), box.max().x() - (x0 + 3.0), y0 - box.min().y(), box.max().y() - (y0 + 2.0)}) {
+      EXPECT_NEAR(inflation, settings.inflation_radius_m, 0.5 * settings.cell_size_m + 1e-9) << position;
+      sum += inflation;
+      ++sides;
+    }
+  }
+  EXPECT_NEAR(sum / sides, settings.inflation_radius_m, 0.01);
+}
+
+TEST(LocalLayer, WithoutExactInflationBordersLieTheDiscsWholeCellsOut)
+{
+  // The same boxes with the shipped default: 2 cells of 0.15 m, 0.30 m on average, 0.05 m short.
+  const PerceptionSettings settings = sixtyMetreLayer();
+  ASSERT_FALSE(settings.exact_inflation);
+  double sum = 0.0;
+  int sides = 0;
+  for (int position = 0; position < 40; ++position) {
+    const double x0 = 0.0137 * position;
+    ClassifiedPoints points;
+    points.background = outlinePoints({{x0, 0.0}, {x0 + 3.0, 0.0}, {x0 + 3.0, 2.0}, {x0, 2.0}});
+    const LocalLayer layer = buildLocalLayer(points, geometry::Point(0.0, 0.0), settings);
+    const auto outer = polygonsOf(layer, ObstacleClass::Background, BoundaryKind::Outer);
+    ASSERT_EQ(outer.size(), 1U) << position;
+    const Eigen::AlignedBox2d box = geometry::boundingBox(outer[0].vertices);
+    sum += (x0 - box.min().x()) + (box.max().x() - (x0 + 3.0));
+    sides += 2;
+  }
+  EXPECT_NEAR(sum / sides, 2.0 * settings.cell_size_m, 0.01);
+}
+
 }  // namespace
 }  // namespace ifar::perception

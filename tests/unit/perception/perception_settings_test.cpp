@@ -13,6 +13,7 @@ perception:
   layer_size_m: 40.0
   cell_size_m: 0.2
   inflation_radius_m: 0.4
+  exact_inflation: true
   simplify_epsilon_m: 0.05
   min_polygon_area_m2: 0.1
   tag_neighbourhood_m: 0.3
@@ -50,6 +51,7 @@ TEST(PerceptionSettings, ReadsEveryKey)
   EXPECT_DOUBLE_EQ(settings.cell_size_m, 0.2);
   EXPECT_DOUBLE_EQ(settings.inflation_radius_m, 0.4);
   EXPECT_DOUBLE_EQ(settings.simplify_epsilon_m, 0.05);
+  EXPECT_TRUE(settings.exact_inflation);
   EXPECT_DOUBLE_EQ(settings.min_polygon_area_m2, 0.1);
   EXPECT_FALSE(settings.remember_background);
   EXPECT_DOUBLE_EQ(settings.tag_neighbourhood_m, 0.3);

@@ -41,6 +41,7 @@ TEST(ShippedConfig, PlannerPerceptionAndGraph)
   EXPECT_EQ(perception.cell_size_m, 0.15);
   EXPECT_EQ(perception.inflation_radius_m, 0.35);
   EXPECT_EQ(perception.simplify_epsilon_m, 0.1);
+  EXPECT_FALSE(perception.exact_inflation);  // experimental
   EXPECT_EQ(perception.min_polygon_area_m2, 0.05);
   EXPECT_TRUE(perception.remember_background);
   EXPECT_EQ(perception.gap_fill_azimuth_step_deg, 0.0);
