@@ -65,7 +65,7 @@ GppcMapResult runGppcMap(const std::string& map_path)
 
   const auto build_began = Clock::now();
   const graph::PriorMap prior = graph::buildPriorMap(map.map, 0.0);
-  const graph::SearchGraph search_graph = graph::SearchGraph::fromDvGraph(prior.graph);
+  const graph::SearchGraph search_graph = graph::SearchGraph::fromCompleteGraph(prior.graph, prior.obstacles);
   result.build_seconds = std::chrono::duration<double>(Clock::now() - build_began).count();
   result.vertices = prior.graph.vertexCount();
   result.edges = prior.graph.visibilityEdgeCount();
