@@ -99,21 +99,28 @@ void AStarSearch::Query::run(SearchResult& result)
   readPath(result);
 }
 
-inline bool AStarSearch::Query::seesStart(std::uint32_t vertex)
+inline bool AStarSearch::Query::seesStart(std::uint32_t vertex, SearchResult& result)
 {
   const geometry::Point& position = graph_.positions_[vertex];
   const bool corner = graph_.kinds_[vertex] == VertexKind::Corner;
   const LoopCorner geometry{position, graph_.previous_[vertex], graph_.next_[vertex], 0};
-  return (!corner || isTangent(geometry, position - start_)) &&
-         obstacles_.visibleFrom(position, start_cache_);
+  if (corner && !isTangent(geometry, position - start_)) {
+    return false;
+  }
+  ++result.start_tests;
+  return obstacles_.visibleFrom(position, start_cache_);
 }
 
-inline bool AStarSearch::Query::seesGoal(std::uint32_t vertex)
+inline bool AStarSearch::Query::seesGoal(std::uint32_t vertex, SearchResult& result)
 {
   const geometry::Point& position = graph_.positions_[vertex];
   const bool corner = graph_.kinds_[vertex] == VertexKind::Corner;
   const LoopCorner geometry{position, graph_.previous_[vertex], graph_.next_[vertex], 0};
-  return (!corner || isTangent(geometry, position - goal_)) && obstacles_.visibleFrom(position, goal_cache_);
+  if (corner && !isTangent(geometry, position - goal_)) {
+    return false;
+  }
+  ++result.goal_tests;
+  return obstacles_.visibleFrom(position, goal_cache_);
 }
 
 void AStarSearch::Query::preparePreference()
@@ -278,7 +285,7 @@ inline void AStarSearch::Query::linkCell(const SearchScratch::QueueEntry& cell_e
   scratch_.cell_done_stamp_[cell] = generation_;
   for (std::uint32_t slot = graph_.cell_offsets_[cell]; slot < graph_.cell_offsets_[cell + 1]; ++slot) {
     const std::uint32_t vertex = graph_.cell_vertices_[slot];
-    if (seesStart(vertex)) {
+    if (seesStart(vertex, result)) {
       ++result.start_links;
       relax(start_index_, vertex,
             (graph_.positions_[vertex] - start_).norm() + surchargeOf(start_, graph_.positions_[vertex]));
@@ -393,7 +400,7 @@ inline void AStarSearch::Query::linkGoal(std::uint32_t vertex, SearchResult& res
 {
   // The goal is attached lazily: its link from a vertex only matters once that vertex is expanded,
   // so testing visibility here gives the same result as attaching it to every vertex up front.
-  if (seesGoal(vertex)) {
+  if (seesGoal(vertex, result)) {
     ++result.goal_links;
     relax(vertex, goal_index_,
           (goal_ - graph_.positions_[vertex]).norm() + surchargeOf(graph_.positions_[vertex], goal_));

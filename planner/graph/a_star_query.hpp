@@ -32,8 +32,8 @@ class AStarSearch::Query {
   // State: one generation of the scratch per query.
   void startGeneration();
   // Validity: a vertex the robot (goal) sees, and tangent to it if a corner.
-  bool seesStart(std::uint32_t vertex);
-  bool seesGoal(std::uint32_t vertex);
+  bool seesStart(std::uint32_t vertex, SearchResult& result);
+  bool seesGoal(std::uint32_t vertex, SearchResult& result);
   // Heuristic: the straight line to the goal.
   double heuristic(std::uint32_t vertex) const { return (goal_ - graph_.positions_[vertex]).norm(); }
   // Arc costs.

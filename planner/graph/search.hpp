@@ -127,6 +127,8 @@ struct SearchResult {
   std::size_t expansions = 0;
   std::size_t start_links = 0;  // vertices found to see the robot (tested lazily, in priority order)
   std::size_t goal_links = 0;   // expanded vertices found to see the goal (tested lazily)
+  std::size_t start_tests = 0;  // lines from the robot tested for visibility (tangent vertices only)
+  std::size_t goal_tests = 0;   // lines to the goal tested for visibility
   /// With NoPath: of the vertices the search reached, the one nearest the goal (straight line) and how
   /// far it is from it; infinity when it reached none.
   geometry::Point nearest_reached = geometry::Point::Zero();
