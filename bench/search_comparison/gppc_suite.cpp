@@ -65,7 +65,7 @@ GppcMapResult runGppcMap(const std::string& map_path)
 
   const auto build_began = Clock::now();
   const graph::PriorMap prior = graph::buildPriorMap(map.map, 0.0);
-  const graph::SearchGraph search_graph = graph::SearchGraph::fromDvGraph(prior.graph);
+  const graph::SearchGraph search_graph = graph::SearchGraph::fromCompleteGraph(prior.graph, prior.obstacles);
   result.build_seconds = std::chrono::duration<double>(Clock::now() - build_began).count();
   result.vertices = prior.graph.vertexCount();
   result.edges = prior.graph.visibilityEdgeCount();
@@ -93,6 +93,9 @@ GppcMapResult runGppcMap(const std::string& map_path)
     const auto began = Clock::now();
     const double began_cpu_ms = baselines::threadCpuMilliseconds();
     const graph::SearchResult found = plan(scenario);
+    result.mean_expansions += static_cast<double>(found.expansions);
+    result.mean_start_tests += static_cast<double>(found.start_tests);
+    result.mean_goal_tests += static_cast<double>(found.goal_tests);
     cpu_microseconds.push_back(1e3 * (baselines::threadCpuMilliseconds() - began_cpu_ms));
     wall_microseconds.push_back(std::chrono::duration<double, std::micro>(Clock::now() - began).count());
     const double expected = scenario.optimal_length;
@@ -110,6 +113,12 @@ GppcMapResult runGppcMap(const std::string& map_path)
     }
   }
   result.queries = scenarios.scenarios.size();
+  if (result.queries > 0) {
+    const double queries = static_cast<double>(result.queries);
+    result.mean_expansions /= queries;
+    result.mean_start_tests /= queries;
+    result.mean_goal_tests /= queries;
+  }
   result.median_us = common::nearestRankPercentile(cpu_microseconds, 50.0);
   result.p99_us = common::nearestRankPercentile(cpu_microseconds, 99.0);
   result.max_us = common::nearestRankPercentile(cpu_microseconds, 100.0);
@@ -162,6 +171,9 @@ std::string gppcJsonLine(const GppcMapResult& result)
        << ", \"p99_us\": " << formatted(result.p99_us, 3) << ", \"max_us\": " << formatted(result.max_us, 3)
        << ", \"wall_median_us\": " << formatted(result.wall_median_us, 3)
        << ", \"wall_p99_us\": " << formatted(result.wall_p99_us, 3)
+       << ", \"mean_expansions\": " << formatted(result.mean_expansions, 1)
+       << ", \"mean_start_tests\": " << formatted(result.mean_start_tests, 1)
+       << ", \"mean_goal_tests\": " << formatted(result.mean_goal_tests, 1)
        << ", \"build_seconds\": " << formatted(result.build_seconds, 4)
        << ", \"vertices\": " << result.vertices << ", \"edges\": " << result.edges
        << ", \"graph_mb\": " << formatted(result.graph_mb, 3) << ", \"not_exact\": [";

@@ -32,6 +32,11 @@ struct GppcMapResult {
   double max_us = 0.0;
   double wall_median_us = 0.0;  // the same in wall time (a loaded machine stretches it)
   double wall_p99_us = 0.0;
+  // Per query, on average: vertices expanded, and lines tested for visibility from the start and to
+  // the goal (where the time goes besides the expansions).
+  double mean_expansions = 0.0;
+  double mean_start_tests = 0.0;
+  double mean_goal_tests = 0.0;
   double build_seconds = 0.0;  // wall time: grid to prior map to search snapshot
   std::size_t vertices = 0;
   std::size_t edges = 0;

@@ -31,7 +31,10 @@ AStarSearch::Query::Query(const SearchGraph& graph, const ObstacleSet& obstacles
       goal_cache_(goal),
       kept_fraction_(1.0 - std::clamp(preference.discount, 0.0, 0.9)),
       preferring_(kept_fraction_ < 1.0 && preference.route.size() >= 2),
-      surcharged_(static_cast<bool>(surcharge))
+      surcharged_(static_cast<bool>(surcharge)),
+      // A preference or a surcharge prices a way by more than its length: a bend that a straighter way
+      // would cut may then be the cheapest.
+      taut_only_(!graph.taut_only_.empty() && !preferring_ && !surcharged_)
 {
   startGeneration();
   prepareCells();
@@ -96,21 +99,28 @@ void AStarSearch::Query::run(SearchResult& result)
   readPath(result);
 }
 
-inline bool AStarSearch::Query::seesStart(std::uint32_t vertex)
+inline bool AStarSearch::Query::seesStart(std::uint32_t vertex, SearchResult& result)
 {
   const geometry::Point& position = graph_.positions_[vertex];
   const bool corner = graph_.kinds_[vertex] == VertexKind::Corner;
   const LoopCorner geometry{position, graph_.previous_[vertex], graph_.next_[vertex], 0};
-  return (!corner || isTangent(geometry, position - start_)) &&
-         obstacles_.visibleFrom(position, start_cache_);
+  if (corner && !isTangent(geometry, position - start_)) {
+    return false;
+  }
+  ++result.start_tests;
+  return obstacles_.visibleFrom(position, start_cache_);
 }
 
-inline bool AStarSearch::Query::seesGoal(std::uint32_t vertex)
+inline bool AStarSearch::Query::seesGoal(std::uint32_t vertex, SearchResult& result)
 {
   const geometry::Point& position = graph_.positions_[vertex];
   const bool corner = graph_.kinds_[vertex] == VertexKind::Corner;
   const LoopCorner geometry{position, graph_.previous_[vertex], graph_.next_[vertex], 0};
-  return (!corner || isTangent(geometry, position - goal_)) && obstacles_.visibleFrom(position, goal_cache_);
+  if (corner && !isTangent(geometry, position - goal_)) {
+    return false;
+  }
+  ++result.goal_tests;
+  return obstacles_.visibleFrom(position, goal_cache_);
 }
 
 void AStarSearch::Query::preparePreference()
@@ -275,7 +285,7 @@ inline void AStarSearch::Query::linkCell(const SearchScratch::QueueEntry& cell_e
   scratch_.cell_done_stamp_[cell] = generation_;
   for (std::uint32_t slot = graph_.cell_offsets_[cell]; slot < graph_.cell_offsets_[cell + 1]; ++slot) {
     const std::uint32_t vertex = graph_.cell_vertices_[slot];
-    if (seesStart(vertex)) {
+    if (seesStart(vertex, result)) {
       ++result.start_links;
       relax(start_index_, vertex,
             (graph_.positions_[vertex] - start_).norm() + surchargeOf(start_, graph_.positions_[vertex]));
@@ -316,6 +326,10 @@ inline void AStarSearch::Query::relax(std::uint32_t from, std::uint32_t to, doub
 
 inline void AStarSearch::Query::expand(std::uint32_t vertex, SearchResult& result)
 {
+  if (taut_only_ && graph_.taut_only_[vertex] != 0) {
+    expandTaut(vertex, result);
+    return;
+  }
   for (std::uint32_t arc = graph_.offsets_[vertex]; arc < graph_.offsets_[vertex + 1]; ++arc) {
     relax(vertex, graph_.targets_[arc], arcCost(vertex, arc));
   }
@@ -329,9 +343,64 @@ inline void AStarSearch::Query::expand(std::uint32_t vertex, SearchResult& resul
       }
     }
   }
+  linkGoal(vertex, result);
+}
+
+inline void AStarSearch::Query::expandTaut(std::uint32_t vertex, SearchResult& result)
+{
+  // Only the bends that wrap this corner (isTautBend): a path reaching it from its parent and turning
+  // the other way is cut short near the corner by a free chord, so it is never the shortest. The graph
+  // has no interaction arcs and the costs are lengths (no preference, no surcharge) here.
+  const geometry::Point& position = graph_.positions_[vertex];
+  const LoopCorner corner{position, graph_.previous_[vertex], graph_.next_[vertex], 0};
+  const std::uint32_t parent = scratch_.parent_[vertex];
+  const geometry::Vector incoming = position - (parent == start_index_ ? start_ : graph_.positions_[parent]);
+  const int incoming_side = wedgeSide(corner, incoming);
+  const std::uint32_t left_end = graph_.left_end_[vertex];
+  const std::uint32_t right_end = graph_.right_end_[vertex];
+  // With the wedge on the left of the way in, only a left turn (or none) with the wedge on the left of
+  // the way out wraps it: the left run up to the incoming direction (search.cpp sorts it so). Mirrored
+  // on the right; undecided ways in look at every arc.
+  if (incoming_side > 0) {
+    for (std::uint32_t arc = graph_.offsets_[vertex]; arc < left_end; ++arc) {
+      const std::uint32_t to = graph_.targets_[arc];
+      if (turnSide(incoming, graph_.positions_[to] - position) < 0) {
+        break;
+      }
+      relax(vertex, to, graph_.costs_[arc]);
+    }
+  } else if (incoming_side < 0) {
+    for (std::uint32_t arc = left_end; arc < right_end; ++arc) {
+      const std::uint32_t to = graph_.targets_[arc];
+      if (turnSide(incoming, graph_.positions_[to] - position) > 0) {
+        break;
+      }
+      relax(vertex, to, graph_.costs_[arc]);
+    }
+  } else {
+    for (std::uint32_t arc = graph_.offsets_[vertex]; arc < right_end; ++arc) {
+      const std::uint32_t to = graph_.targets_[arc];
+      if (isTautBend(corner, incoming, graph_.positions_[to] - position)) {
+        relax(vertex, to, graph_.costs_[arc]);
+      }
+    }
+  }
+  for (std::uint32_t arc = right_end; arc < graph_.offsets_[vertex + 1]; ++arc) {
+    const std::uint32_t to = graph_.targets_[arc];
+    if (isTautBend(corner, incoming, graph_.positions_[to] - position)) {
+      relax(vertex, to, graph_.costs_[arc]);
+    }
+  }
+  if (isTautBend(corner, incoming, goal_ - position)) {
+    linkGoal(vertex, result);
+  }
+}
+
+inline void AStarSearch::Query::linkGoal(std::uint32_t vertex, SearchResult& result)
+{
   // The goal is attached lazily: its link from a vertex only matters once that vertex is expanded,
   // so testing visibility here gives the same result as attaching it to every vertex up front.
-  if (seesGoal(vertex)) {
+  if (seesGoal(vertex, result)) {
     ++result.goal_links;
     relax(vertex, goal_index_,
           (goal_ - graph_.positions_[vertex]).norm() + surchargeOf(graph_.positions_[vertex], goal_));

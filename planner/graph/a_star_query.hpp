@@ -32,8 +32,8 @@ class AStarSearch::Query {
   // State: one generation of the scratch per query.
   void startGeneration();
   // Validity: a vertex the robot (goal) sees, and tangent to it if a corner.
-  bool seesStart(std::uint32_t vertex);
-  bool seesGoal(std::uint32_t vertex);
+  bool seesStart(std::uint32_t vertex, SearchResult& result);
+  bool seesGoal(std::uint32_t vertex, SearchResult& result);
   // Heuristic: the straight line to the goal.
   double heuristic(std::uint32_t vertex) const { return (goal_ - graph_.positions_[vertex]).norm(); }
   // Arc costs.
@@ -66,6 +66,8 @@ class AStarSearch::Query {
   // Expansion.
   void relax(std::uint32_t from, std::uint32_t to, double cost);
   void expand(std::uint32_t vertex, SearchResult& result);
+  void expandTaut(std::uint32_t vertex, SearchResult& result);
+  void linkGoal(std::uint32_t vertex, SearchResult& result);
   // The path.
   void readPath(SearchResult& result) const;
   std::optional<std::uint32_t> arcTaken(std::uint32_t from, std::uint32_t vertex) const;
@@ -87,6 +89,7 @@ class AStarSearch::Query {
   double kept_fraction_ = 1.0;  ///< of a preferred arc's cost
   bool preferring_ = false;
   bool surcharged_ = false;
+  bool taut_only_ = false;  ///< bends away from a corner are skipped (SearchGraph::fromCompleteGraph)
 };
 
 }  // namespace ifar::graph

@@ -76,6 +76,53 @@ inline bool isTangent(const LoopCorner& corner, const geometry::Vector& directio
   return previous_side * next_side >= 0;
 }
 
+/// The side of the line through the corner along `direction` that the blocked wedge lies on: +1 left,
+/// -1 right; 0 when the wedge reaches both sides or lies along the line (same tolerance as isTangent).
+inline int wedgeSide(const LoopCorner& corner, const geometry::Vector& direction)
+{
+  const geometry::Vector to_previous = corner.previous - corner.position;
+  const geometry::Vector to_next = corner.next - corner.position;
+  const double previous_cross = direction.x() * to_previous.y() - direction.y() * to_previous.x();
+  const double next_cross = direction.x() * to_next.y() - direction.y() * to_next.x();
+  const double scale = 1e-9 * (std::abs(direction.x()) + std::abs(direction.y()));
+  const double previous_tolerance = scale * (std::abs(to_previous.x()) + std::abs(to_previous.y()));
+  const double next_tolerance = scale * (std::abs(to_next.x()) + std::abs(to_next.y()));
+  const int previous_side =
+      previous_cross > previous_tolerance ? 1 : (previous_cross < -previous_tolerance ? -1 : 0);
+  const int next_side = next_cross > next_tolerance ? 1 : (next_cross < -next_tolerance ? -1 : 0);
+  if (previous_side * next_side < 0) {
+    return 0;
+  }
+  return previous_side != 0 ? previous_side : next_side;
+}
+
+/// The turn from `incoming` to `outgoing`: +1 left (counter-clockwise), -1 right, 0 straight on or
+/// straight back (within the orientation tolerance).
+inline int turnSide(const geometry::Vector& incoming, const geometry::Vector& outgoing)
+{
+  const double value = incoming.x() * outgoing.y() - incoming.y() * outgoing.x();
+  const double tolerance = 1e-9 * (std::abs(incoming.x()) + std::abs(incoming.y())) *
+                           (std::abs(outgoing.x()) + std::abs(outgoing.y()));
+  return value > tolerance ? 1 : (value < -tolerance ? -1 : 0);
+}
+
+/// False when a path that arrives at a convex corner along `incoming` and leaves along `outgoing`
+/// can be shortened right at the corner, so that no shortest path bends there that way: it turns while
+/// the corner's blocked wedge lies outside the turn (on the far side of one of the two lines from the
+/// small sector between them, so a chord cutting the bend close to the corner is free and shorter), or
+/// it goes straight back. True for every other bend (wrapping the corner, straight on, or undecided
+/// within the orientation tolerance). Only the corner's own wedge is looked at: another obstacle vertex
+/// at the same position may still fill the sector.
+inline bool isTautBend(const LoopCorner& corner, const geometry::Vector& incoming,
+                       const geometry::Vector& outgoing)
+{
+  const int turn = turnSide(incoming, outgoing);
+  if (turn == 0) {
+    return incoming.dot(outgoing) >= 0.0;
+  }
+  return wedgeSide(corner, incoming) != -turn && wedgeSide(corner, outgoing) != -turn;
+}
+
 struct SnapResult {
   geometry::Point point;
   bool snapped = false;   // the input was inside an obstacle and was moved to its boundary

@@ -132,11 +132,95 @@ SearchGraph SearchGraph::fromDvGraph(const DvGraph& graph)
   return result;
 }
 
+SearchGraph SearchGraph::fromCompleteGraph(const DvGraph& graph, const ObstacleSet& obstacles)
+{
+  SearchGraph result = fromDvGraph(graph);
+  if (std::any_of(result.interaction_.begin(), result.interaction_.end(),
+                  [](std::uint32_t interaction) { return interaction != kNoInteraction; })) {
+    return result;
+  }
+  // Positions where two or more obstacle vertices meet (outlines that touch, a loop through one point
+  // twice): another vertex's wedge there may fill the sector that a bend away from this corner cuts.
+  const auto before = [](const geometry::Point& a, const geometry::Point& b) {
+    return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
+  };
+  std::vector<geometry::Point> positions;
+  for (const LoopCorner& corner : obstacles.corners()) {
+    positions.push_back(corner.position);
+  }
+  std::sort(positions.begin(), positions.end(), before);
+  std::vector<geometry::Point> shared;
+  for (std::size_t index = 1; index < positions.size(); ++index) {
+    if (positions[index] == positions[index - 1] && (shared.empty() || shared.back() != positions[index])) {
+      shared.push_back(positions[index]);
+    }
+  }
+  result.taut_only_.assign(result.size(), 0);
+  for (std::size_t vertex = 0; vertex < result.size(); ++vertex) {
+    const bool alone = !std::binary_search(shared.begin(), shared.end(), result.positions_[vertex], before);
+    result.taut_only_[vertex] = result.kinds_[vertex] == VertexKind::Corner && alone ? 1 : 0;
+  }
+  result.sortArcsAroundCorners();
+  return result;
+}
+
+void SearchGraph::sortArcsAroundCorners()
+{
+  // A path that reaches a corner with the wedge on its left can only go on wrapping it through the arcs
+  // that also have the wedge on their left and turn left (a_star_query.cpp): in the clockwise order from
+  // the next edge's direction, a run from the first arc up to the incoming direction. The same mirrored
+  // on the right. Sorted so, an expansion stops at the first arc that turns the wrong way.
+  left_end_.assign(size(), 0);
+  right_end_.assign(size(), 0);
+  struct Arc {
+    int run;     // 0 left, 1 right, 2 undecided
+    double key;  // angle from the run's first direction, in the run's sense (radians)
+    std::uint32_t target;
+    double cost;
+  };
+  std::vector<Arc> arcs;
+  for (std::size_t vertex = 0; vertex < size(); ++vertex) {
+    const std::uint32_t begin = offsets_[vertex];
+    const std::uint32_t end = offsets_[vertex + 1];
+    left_end_[vertex] = right_end_[vertex] = begin;
+    if (taut_only_[vertex] == 0) {
+      continue;
+    }
+    const geometry::Point& position = positions_[vertex];
+    const LoopCorner corner{position, previous_[vertex], next_[vertex], 0};
+    const geometry::Vector to_next = next_[vertex] - position;
+    const geometry::Vector to_previous = previous_[vertex] - position;
+    arcs.clear();
+    for (std::uint32_t arc = begin; arc < end; ++arc) {
+      const geometry::Vector outgoing = positions_[targets_[arc]] - position;
+      const int side = wedgeSide(corner, outgoing);
+      Arc entry{2, 0.0, targets_[arc], costs_[arc]};
+      if (side > 0) {
+        entry.run = 0;
+        entry.key = -std::atan2(geometry::cross(to_next, outgoing), to_next.dot(outgoing));
+      } else if (side < 0) {
+        entry.run = 1;
+        entry.key = std::atan2(geometry::cross(to_previous, outgoing), to_previous.dot(outgoing));
+      }
+      arcs.push_back(entry);
+    }
+    std::sort(arcs.begin(), arcs.end(),
+              [](const Arc& a, const Arc& b) { return a.run != b.run ? a.run < b.run : a.key < b.key; });
+    for (std::uint32_t index = 0; index < arcs.size(); ++index) {
+      targets_[begin + index] = arcs[index].target;
+      costs_[begin + index] = arcs[index].cost;
+      left_end_[vertex] += arcs[index].run == 0 ? 1 : 0;
+      right_end_[vertex] += arcs[index].run <= 1 ? 1 : 0;
+    }
+  }
+}
+
 std::size_t SearchGraph::memoryBytes() const
 {
   const auto bytesOf = [](const auto& values) { return values.capacity() * sizeof(values[0]); };
   return bytesOf(ids_) + bytesOf(index_of_) + bytesOf(positions_) + bytesOf(previous_) + bytesOf(next_) +
-         bytesOf(kinds_) + bytesOf(offsets_) + bytesOf(targets_) + bytesOf(costs_) + bytesOf(interaction_) +
+         bytesOf(kinds_) + bytesOf(taut_only_) + bytesOf(left_end_) + bytesOf(right_end_) +
+         bytesOf(offsets_) + bytesOf(targets_) + bytesOf(costs_) + bytesOf(interaction_) +
          bytesOf(interaction_objects_) + bytesOf(interaction_plans_) + bytesOf(interaction_contacts_) +
          bytesOf(interaction_approaches_) + bytesOf(cell_offsets_) + bytesOf(cell_vertices_);
 }

@@ -28,6 +28,17 @@ class SearchGraph {
  public:
   SearchGraph() = default;
   static SearchGraph fromDvGraph(const DvGraph& graph);
+  /// A snapshot of `graph`, which must be the complete reduced visibility graph of `obstacles`: every
+  /// convex corner, and an edge for every pair of them tangent at both ends that see each other, as
+  /// addReducedVisibilityGraph builds it (vertices and edges neither added nor removed since; topological
+  /// waypoints may be added), over loops that do not cross one another (as traced from a grid, so every
+  /// corner of the blocked region is a loop vertex). Every shortest path is then a path of this graph that
+  /// bends only where it wraps a corner, so a search without route preference or surcharge skips, at a corner
+  /// it reached from a parent, the arcs and the goal link that would bend away from the corner's obstacle
+  /// (isTautBend): same costs as fromDvGraph, with fewer arcs relaxed and fewer goal lines tested. Corners
+  /// that share their position with another obstacle vertex, and graphs with interaction edges (a push's cost
+  /// is not its length), are searched without it.
+  static SearchGraph fromCompleteGraph(const DvGraph& graph, const ObstacleSet& obstacles);
 
   std::size_t size() const { return positions_.size(); }
   std::size_t arcCount() const { return targets_.size(); }
@@ -37,6 +48,7 @@ class SearchGraph {
  private:
   friend class AStarSearch;
   void buildVertexGrid();
+  void sortArcsAroundCorners();
 
   std::vector<VertexId> ids_;
   std::vector<std::uint32_t> index_of_;  // VertexId -> dense index; the uint32 maximum for dead ids
@@ -44,6 +56,14 @@ class SearchGraph {
   std::vector<geometry::Point> previous_;
   std::vector<geometry::Point> next_;
   std::vector<VertexKind> kinds_;
+  // Per vertex: 1 for a corner at which a search may skip the bends that do not wrap it (see
+  // fromCompleteGraph); empty for a graph that is not known to be complete.
+  std::vector<std::uint8_t> taut_only_;
+  // Per such corner, its arcs in three runs: [offsets_[v], left_end_[v]) leave with the corner's wedge on
+  // their left, ordered clockwise from the next edge's direction; [left_end_[v], right_end_[v]) with it on
+  // their right, counter-clockwise from the previous edge's direction; the rest undecided.
+  std::vector<std::uint32_t> left_end_;
+  std::vector<std::uint32_t> right_end_;
   std::vector<std::uint32_t> offsets_;  // arcs of vertex v: [offsets_[v], offsets_[v + 1])
   std::vector<std::uint32_t> targets_;
   std::vector<double> costs_;
@@ -107,6 +127,8 @@ struct SearchResult {
   std::size_t expansions = 0;
   std::size_t start_links = 0;  // vertices found to see the robot (tested lazily, in priority order)
   std::size_t goal_links = 0;   // expanded vertices found to see the goal (tested lazily)
+  std::size_t start_tests = 0;  // lines from the robot tested for visibility (tangent vertices only)
+  std::size_t goal_tests = 0;   // lines to the goal tested for visibility
   /// With NoPath: of the vertices the search reached, the one nearest the goal (straight line) and how
   /// far it is from it; infinity when it reached none.
   geometry::Point nearest_reached = geometry::Point::Zero();

@@ -144,7 +144,8 @@ int main(int argc, char** argv)
   const auto policy =
       unknown_blocked ? ifar::grid_map::UnknownPolicy::AsBlocked : ifar::grid_map::UnknownPolicy::AsFree;
   const ifar::graph::PriorMap prior = ifar::graph::buildPriorMap(map_result.map, inflate, policy, progress);
-  const ifar::graph::SearchGraph search_graph = ifar::graph::SearchGraph::fromDvGraph(prior.graph);
+  const ifar::graph::SearchGraph search_graph =
+      ifar::graph::SearchGraph::fromCompleteGraph(prior.graph, prior.obstacles);
   const double build_seconds = std::chrono::duration<double>(Clock::now() - build_start).count();
   if (!json) {
     std::cout << "graph: " << prior.graph.vertexCount() << " vertices, " << prior.graph.visibilityEdgeCount()

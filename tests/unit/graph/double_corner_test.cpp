@@ -24,24 +24,27 @@ struct Expected {
   double length;
 };
 
-/// Every query from `pinch` to each target and back: exact length, not snapped.
+/// Every query from `pinch` to each target and back: exact length, not snapped; with the planner's search
+/// snapshot and with the one of a complete graph (taut bends only).
 void expectLengths(const std::vector<std::string>& rows, const Point& pinch,
                    const std::vector<Expected>& expected)
 {
   const PriorMap prior = buildPriorMap(mapFromRows(rows), 0.0);
-  const SearchGraph graph = SearchGraph::fromDvGraph(prior.graph);
-  SearchScratch scratch;
-  for (const Expected& query : expected) {
-    for (const bool from_pinch : {true, false}) {
-      const Point& start = from_pinch ? pinch : query.target;
-      const Point& goal = from_pinch ? query.target : pinch;
-      const SearchResult result =
-          findPath(graph, prior.obstacles, start, goal, scratch, {}, {}, InsideObstacle::Refuse);
-      ASSERT_EQ(result.status, SearchStatus::Found)
-          << "(" << start.x() << ", " << start.y() << ") -> (" << goal.x() << ", " << goal.y() << ")";
-      EXPECT_FALSE(result.start_snapped || result.goal_snapped);
-      EXPECT_NEAR(result.length, query.length, 1e-12)
-          << "(" << start.x() << ", " << start.y() << ") -> (" << goal.x() << ", " << goal.y() << ")";
+  for (const SearchGraph& graph : {SearchGraph::fromDvGraph(prior.graph),
+                                   SearchGraph::fromCompleteGraph(prior.graph, prior.obstacles)}) {
+    SearchScratch scratch;
+    for (const Expected& query : expected) {
+      for (const bool from_pinch : {true, false}) {
+        const Point& start = from_pinch ? pinch : query.target;
+        const Point& goal = from_pinch ? query.target : pinch;
+        const SearchResult result =
+            findPath(graph, prior.obstacles, start, goal, scratch, {}, {}, InsideObstacle::Refuse);
+        ASSERT_EQ(result.status, SearchStatus::Found)
+            << "(" << start.x() << ", " << start.y() << ") -> (" << goal.x() << ", " << goal.y() << ")";
+        EXPECT_FALSE(result.start_snapped || result.goal_snapped);
+        EXPECT_NEAR(result.length, query.length, 1e-12)
+            << "(" << start.x() << ", " << start.y() << ") -> (" << goal.x() << ", " << goal.y() << ")";
+      }
     }
   }
 }

@@ -1,6 +1,7 @@
 // The GPPC any-angle maps in ../shared/data: every query of each .scen file, exact to a relative 1e-9
 // (the files give 9 decimals). AcrosstheCape's lengths are GPPC's own, the gppc-extra ones Polyanya's on
-// the same rules. Skipped with a message when the data is absent.
+// the same rules, with both search snapshots: the planner's (every bend) and the one of a complete graph
+// (only bends that wrap a corner). Skipped with a message when the data is absent.
 
 #include <cmath>
 #include <fstream>
@@ -31,21 +32,26 @@ void expectEveryQueryExact(const std::string& relative_path, std::size_t query_c
   ASSERT_TRUE(scenarios.ok()) << scenarios.error;
   ASSERT_EQ(scenarios.scenarios.size(), query_count);
   const PriorMap prior = buildPriorMap(map.map, 0.0);
-  const SearchGraph graph = SearchGraph::fromDvGraph(prior.graph);
-  SearchScratch scratch;
-  std::size_t exact = 0;
-  for (std::size_t index = 0; index < scenarios.scenarios.size(); ++index) {
-    const auto& scenario = scenarios.scenarios[index];
-    const auto result = findPath(graph, prior.obstacles, scenario.start, scenario.goal, scratch, {}, {},
-                                 InsideObstacle::Refuse);
-    ASSERT_EQ(result.status, SearchStatus::Found)
-        << "query " << index << " from (" << scenario.start.x() << ", " << scenario.start.y() << ") to ("
-        << scenario.goal.x() << ", " << scenario.goal.y() << ")";
-    const double tolerance = kRelativeTolerance * scenario.optimal_length;
-    EXPECT_NEAR(result.length, scenario.optimal_length, tolerance) << "query " << index;
-    exact += std::abs(result.length - scenario.optimal_length) <= tolerance ? 1 : 0;
+  for (const bool complete : {false, true}) {
+    const SearchGraph graph = complete ? SearchGraph::fromCompleteGraph(prior.graph, prior.obstacles)
+                                       : SearchGraph::fromDvGraph(prior.graph);
+    SearchScratch scratch;
+    std::size_t exact = 0;
+    for (std::size_t index = 0; index < scenarios.scenarios.size(); ++index) {
+      const auto& scenario = scenarios.scenarios[index];
+      const auto result = findPath(graph, prior.obstacles, scenario.start, scenario.goal, scratch, {}, {},
+                                   InsideObstacle::Refuse);
+      ASSERT_EQ(result.status, SearchStatus::Found)
+          << (complete ? "complete" : "planner") << " snapshot, query " << index << " from ("
+          << scenario.start.x() << ", " << scenario.start.y() << ") to (" << scenario.goal.x() << ", "
+          << scenario.goal.y() << ")";
+      const double tolerance = kRelativeTolerance * scenario.optimal_length;
+      EXPECT_NEAR(result.length, scenario.optimal_length, tolerance)
+          << (complete ? "complete" : "planner") << " snapshot, query " << index;
+      exact += std::abs(result.length - scenario.optimal_length) <= tolerance ? 1 : 0;
+    }
+    EXPECT_EQ(exact, query_count) << (complete ? "complete" : "planner") << " snapshot";
   }
-  EXPECT_EQ(exact, query_count);
 }
 
 TEST(Gppc, AcrossTheCapeOptimalLengths)
