@@ -57,43 +57,48 @@ struct LoopCorner {
 bool pointsIntoWedge(const LoopCorner& corner, const geometry::Vector& direction);
 /// True when the blocked wedge is narrower than a half-plane: a corner shortest paths may bend around.
 bool isConvexCorner(const LoopCorner& corner);
-/// True when the line through the corner along `direction` keeps both loop neighbours on one side
-/// (touching counts): the reduced visibility graph only keeps edges tangent at both ends. Inline: it
-/// runs for every vertex pair of a build and every vertex of an attachment.
-inline bool isTangent(const LoopCorner& corner, const geometry::Vector& direction)
+/// -1, 0 or +1: the sign of `value`, 0 within `tolerance` of zero.
+inline int signBeyond(double value, double tolerance)
+{
+  return value > tolerance ? 1 : (value < -tolerance ? -1 : 0);
+}
+
+/// The sides of the line through the corner along `direction` that its two loop neighbours lie on:
+/// +1 left, -1 right, 0 on the line (1e-9 of the operands' sizes, as the other orientation tests).
+struct NeighbourSides {
+  int previous = 0;
+  int next = 0;
+};
+
+inline NeighbourSides neighbourSides(const LoopCorner& corner, const geometry::Vector& direction)
 {
   const geometry::Vector to_previous = corner.previous - corner.position;
   const geometry::Vector to_next = corner.next - corner.position;
   const double previous_cross = direction.x() * to_previous.y() - direction.y() * to_previous.x();
   const double next_cross = direction.x() * to_next.y() - direction.y() * to_next.x();
-  // Same relative tolerance as the other orientation tests (1e-9 of the operands' sizes).
   const double scale = 1e-9 * (std::abs(direction.x()) + std::abs(direction.y()));
-  const double previous_tolerance = scale * (std::abs(to_previous.x()) + std::abs(to_previous.y()));
-  const double next_tolerance = scale * (std::abs(to_next.x()) + std::abs(to_next.y()));
-  const int previous_side =
-      previous_cross > previous_tolerance ? 1 : (previous_cross < -previous_tolerance ? -1 : 0);
-  const int next_side = next_cross > next_tolerance ? 1 : (next_cross < -next_tolerance ? -1 : 0);
-  return previous_side * next_side >= 0;
+  return {signBeyond(previous_cross, scale * (std::abs(to_previous.x()) + std::abs(to_previous.y()))),
+          signBeyond(next_cross, scale * (std::abs(to_next.x()) + std::abs(to_next.y())))};
+}
+
+/// True when the line through the corner along `direction` keeps both loop neighbours on one side
+/// (touching counts): the reduced visibility graph only keeps edges tangent at both ends. Inline: it
+/// runs for every vertex pair of a build and every vertex of an attachment.
+inline bool isTangent(const LoopCorner& corner, const geometry::Vector& direction)
+{
+  const NeighbourSides sides = neighbourSides(corner, direction);
+  return sides.previous * sides.next >= 0;
 }
 
 /// The side of the line through the corner along `direction` that the blocked wedge lies on: +1 left,
 /// -1 right; 0 when the wedge reaches both sides or lies along the line (same tolerance as isTangent).
 inline int wedgeSide(const LoopCorner& corner, const geometry::Vector& direction)
 {
-  const geometry::Vector to_previous = corner.previous - corner.position;
-  const geometry::Vector to_next = corner.next - corner.position;
-  const double previous_cross = direction.x() * to_previous.y() - direction.y() * to_previous.x();
-  const double next_cross = direction.x() * to_next.y() - direction.y() * to_next.x();
-  const double scale = 1e-9 * (std::abs(direction.x()) + std::abs(direction.y()));
-  const double previous_tolerance = scale * (std::abs(to_previous.x()) + std::abs(to_previous.y()));
-  const double next_tolerance = scale * (std::abs(to_next.x()) + std::abs(to_next.y()));
-  const int previous_side =
-      previous_cross > previous_tolerance ? 1 : (previous_cross < -previous_tolerance ? -1 : 0);
-  const int next_side = next_cross > next_tolerance ? 1 : (next_cross < -next_tolerance ? -1 : 0);
-  if (previous_side * next_side < 0) {
+  const NeighbourSides sides = neighbourSides(corner, direction);
+  if (sides.previous * sides.next < 0) {
     return 0;
   }
-  return previous_side != 0 ? previous_side : next_side;
+  return sides.previous != 0 ? sides.previous : sides.next;
 }
 
 /// The turn from `incoming` to `outgoing`: +1 left (counter-clockwise), -1 right, 0 straight on or
@@ -103,7 +108,7 @@ inline int turnSide(const geometry::Vector& incoming, const geometry::Vector& ou
   const double value = incoming.x() * outgoing.y() - incoming.y() * outgoing.x();
   const double tolerance = 1e-9 * (std::abs(incoming.x()) + std::abs(incoming.y())) *
                            (std::abs(outgoing.x()) + std::abs(outgoing.y()));
-  return value > tolerance ? 1 : (value < -tolerance ? -1 : 0);
+  return signBeyond(value, tolerance);
 }
 
 /// False when a path that arrives at a convex corner along `incoming` and leaves along `outgoing`
