@@ -7,11 +7,13 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <spdlog/spdlog.h>
 #include <lcm/lcm-cpp.hpp>
 
+#include "common/span.hpp"
 #include "lcmtypes/checked_decode.hpp"
 
 namespace ifar::bus {
@@ -51,10 +53,23 @@ class RunLoop {
         return;
       }
       const std::int64_t receive_utime = manual_clock_ ? manual_clock_() : buffer->recv_utime;
-      guard(channel, [&] { handler(message, receive_utime); });
+      guard(channel, [&] {
+        if (input_observer_) {
+          input_observer_(channel,
+                          common::ByteView(static_cast<const std::uint8_t*>(buffer->data), buffer->data_size),
+                          receive_utime);
+        }
+        handler(message, receive_utime);
+      });
     };
     subscribeRaw(channel, std::move(callback));
   }
+
+  /// Called with every message a typed subscription decoded, just before its handler (a daemon's journal,
+  /// bus/node_journal_publisher.hpp); empty: none. One at a time.
+  using InputObserver =
+      std::function<void(const std::string& channel, common::ByteView bytes, std::int64_t receive_utime)>;
+  void observeInputs(InputObserver observer) { input_observer_ = std::move(observer); }
 
   /// Calls handler(bytes, size, receive_utime) for raw messages on `channel` (a regex, as LCM takes).
   void subscribeRaw(const std::string& channel,
@@ -111,6 +126,7 @@ class RunLoop {
   lcm::LCM lcm_;
   std::shared_ptr<spdlog::logger> logger_;
   ManualClock manual_clock_;
+  InputObserver input_observer_;
   std::unique_ptr<Subscribers> subscribers_;  // owns the objects LCM calls back into
   int signal_fd_ = -1;
   bool stopping_ = false;

@@ -7,7 +7,9 @@ namespace ifar::executive {
 ExecutiveDaemon::ExecutiveDaemon(bus::RunLoop& loop, const ExecutiveSettings& settings,
                                  const ObstacleSettings& obstacles, const common::VehicleSettings& vehicle,
                                  std::shared_ptr<spdlog::logger> logger)
-    : loop_(loop), node_(settings, obstacles, vehicle, std::move(logger))
+    : loop_(loop),
+      node_(settings, obstacles, vehicle, std::move(logger)),
+      journal_(loop, kJournalChannel, "executive", loop.now(), inputChannels(obstacles.packet_channel))
 {
   loop_.subscribe<ifar::pose_t>(kPoseChannel,
                                 [this](const ifar::pose_t& message, std::int64_t receive_utime) {
@@ -37,7 +39,11 @@ ExecutiveDaemon::ExecutiveDaemon(bus::RunLoop& loop, const ExecutiveSettings& se
                                   [this](const ifar::e_stop_t& message, std::int64_t receive_utime) {
                                     node_.onEStop(message, receive_utime);
                                   });
-  loop_.every(kControlPeriodS, [this] { publish(node_.cycle(loop_.now())); });
+  loop_.every(kControlPeriodS, [this] {
+    const std::int64_t now = loop_.now();
+    journal_.recorder().timer(kControlCycleTimer, now);
+    publish(node_.cycle(now));
+  });
 }
 
 void ExecutiveDaemon::publish(const ExecutiveOutputs& outputs)
@@ -56,7 +62,9 @@ void ExecutiveDaemon::publish(const ExecutiveOutputs& outputs)
 
 void ExecutiveDaemon::publishStop()
 {
-  publish(node_.stop(loop_.now()));
+  const std::int64_t now = loop_.now();
+  journal_.recorder().stop(now);
+  publish(node_.stop(now));
 }
 
 }  // namespace ifar::executive

@@ -1,12 +1,13 @@
 #pragma once
 // The executive daemon's wiring: ExecutiveNode's inputs subscribed on the run loop and its control cycle
-// on the loop's 50 Hz timer, outputs published. Apart from main() so a test can run it on an in-process
-// bus with a manual clock (tests/replay/node_identity_test.cpp).
+// on the loop's 50 Hz timer, outputs published, and what it handed the node journaled. Apart from main() so a
+// test can run it on an in-process bus with a manual clock (tests/replay/node_identity_test.cpp).
 
 #include <memory>
 
 #include <spdlog/spdlog.h>
 
+#include "bus/node_journal_publisher.hpp"
 #include "bus/run_loop.hpp"
 #include "executive/node/executive_node.hpp"
 
@@ -29,6 +30,7 @@ class ExecutiveDaemon {
 
   bus::RunLoop& loop_;
   ExecutiveNode node_;
+  bus::NodeJournalPublisher journal_;  // what the loop handed the node, for ifar replay-test
 };
 
 }  // namespace ifar::executive

@@ -15,6 +15,12 @@ constexpr std::int64_t kPacketWarningIntervalUs = 5'000'000;
 
 }  // namespace
 
+std::set<std::string> inputChannels(const std::string& packet_channel)
+{
+  return {kPoseChannel,        packet_channel,   kPathChannel, kForceChannel,
+          kMotorStatusChannel, kOdometryChannel, kEStopChannel};
+}
+
 ExecutiveNode::ExecutiveNode(const ExecutiveSettings& settings, const ObstacleSettings& obstacles,
                              const common::VehicleSettings& vehicle, std::shared_ptr<spdlog::logger> logger)
     : logger_(std::move(logger)),

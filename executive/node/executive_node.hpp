@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <set>
 #include <string>
 
 #include <spdlog/spdlog.h>
@@ -46,6 +47,11 @@ inline constexpr const char* kCommandChannel = "VELOCITY_CMD";
 inline constexpr const char* kStatusChannel = "EXEC_STATUS";
 inline constexpr const char* kAffordanceChannel = "AFFORDANCE";
 inline constexpr const char* kBlockedPassageChannel = "BLOCKED_PASSAGE";
+inline constexpr const char* kJournalChannel = "EXECUTIVE_JOURNAL";
+/// The node's inputs, `packet_channel` the lidar's (ObstacleSettings): what the daemon subscribes to for it.
+std::set<std::string> inputChannels(const std::string& packet_channel);
+/// The daemon's one timer as its journal names it (node_journal_t KIND_TIMER code).
+inline constexpr std::int16_t kControlCycleTimer = 0;
 
 /// What one control cycle publishes.
 struct ExecutiveOutputs {

@@ -13,6 +13,7 @@
 #include "ifar/goal_t.hpp"
 #include "ifar/heartbeat_t.hpp"
 #include "ifar/motor_status_t.hpp"
+#include "ifar/node_journal_t.hpp"
 #include "ifar/object_polygons_t.hpp"
 #include "ifar/odometry_t.hpp"
 #include "ifar/path_t.hpp"
@@ -231,6 +232,24 @@ heartbeat_t makeHeartbeat()
   return message;
 }
 
+node_journal_t makeNodeJournal()
+{
+  node_journal_t message;
+  message.utime = kUtime;
+  message.node = "planner";
+  message.start_utime = kUtime - 2'500'000;
+  message.pid = 4243;
+  message.first_event = 17;
+  message.channels = {"POSE", "VELODYNE_PACKET"};
+  message.num_channels = 2;
+  message.kinds = {node_journal_t::KIND_INPUT, node_journal_t::KIND_TIMER, node_journal_t::KIND_JOB_FINISHED};
+  message.codes = {1, 0, 0};
+  message.utimes = {kUtime - 30'000, kUtime - 20'000, kUtime - 10'000};
+  message.hashes = {-123'456'789, 0, 0};
+  message.num_events = 3;
+  return message;
+}
+
 motor_status_t makeMotorStatus()
 {
   motor_status_t message;
@@ -443,6 +462,7 @@ std::vector<SampleMessage> allSampleMessages()
       sample("TEST_GRAPH_VERTEX", vertex),
       sample("HEARTBEAT", makeHeartbeat()),
       sample("MOTOR_STATUS", makeMotorStatus()),
+      sample("PLANNER_JOURNAL", makeNodeJournal()),
       sample("DETECTED_OBJECTS", makeObjectPolygons()),
       sample("TEST_OBJECT_STATE", object),
       sample("ODOMETRY", makeOdometry()),

@@ -14,9 +14,13 @@ PlannerDaemon::PlannerDaemon(bus::RunLoop& loop, const NodeSettings& settings, P
                              std::shared_ptr<spdlog::logger> logger, WorkerThreading threading)
     : loop_(loop),
       settings_(settings),
-      node_(settings, std::move(logger), loop.now()),
+      start_utime_(loop.now()),
+      node_(settings, std::move(logger), start_utime_),
       worker_(
-          std::move(planner), [&loop] { return loop.now(); }, threading)
+          std::move(planner), [&loop] { return loop.now(); }, threading),
+      // Finished jobs are taken before each input, so the node decides on the same worker state in a replay.
+      journal_(loop, settings.channels.journal, "planner", start_utime_, settings.channels.inputs(),
+               [this] { publishFinished(); })
 {
   const PlannerChannels& channels = settings_.channels;
   loop_.subscribe<velodyne_packet_t>(channels.velodyne_packet,
@@ -47,7 +51,10 @@ PlannerDaemon::PlannerDaemon(bus::RunLoop& loop, const NodeSettings& settings, P
                                      });
 
   loop_.every(1.0 / settings_.rate_hz, [this] {
-    PlannerTick tick = node_.tick(loop_.now(), worker_.busy());
+    publishFinished();
+    const std::int64_t now = loop_.now();
+    journal_.recorder().timer(kTickTimer, now);
+    PlannerTick tick = node_.tick(now, worker_.busy());
     if (tick.waiting_status) {
       loop_.publish(settings_.channels.planner_status, *tick.waiting_status);
     }
@@ -57,7 +64,9 @@ PlannerDaemon::PlannerDaemon(bus::RunLoop& loop, const NodeSettings& settings, P
   // The same path again between updates, freshly stamped: the executive treats an old path as a dead
   // planner, while graph updates come at only 2.5 Hz.
   loop_.every(1.0 / settings_.path_resend_hz, [this] {
-    if (const std::optional<path_t> path = node_.resendPath(loop_.now())) {
+    const std::int64_t now = loop_.now();
+    journal_.recorder().timer(kPathResendTimer, now);
+    if (const std::optional<path_t> path = node_.resendPath(now)) {
       loop_.publish(settings_.channels.global_path, *path);
     }
   });
@@ -75,6 +84,7 @@ void PlannerDaemon::submit(std::optional<PlannerJob> job)
 void PlannerDaemon::publishFinished()
 {
   for (PlannerOutputs& outputs : worker_.takeFinished()) {
+    journal_.recorder().jobFinished(outputs.path.utime);
     node_.finish(outputs);
     const PlannerChannels& channels = settings_.channels;
     if (outputs.graph) {

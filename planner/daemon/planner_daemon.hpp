@@ -1,12 +1,15 @@
 #pragma once
 // The planner daemon's wiring: PlannerNode's inputs subscribed on the run loop, its tick, the worker's
-// finished outputs and the path resend on the loop's timers. Apart from main() so a test can run it on an
-// in-process bus with a manual clock (tests/replay/node_identity_test.cpp).
+// finished outputs and the path resend on the loop's timers, and what it handed the node journaled. Apart
+// from main() so a test can run it on an in-process bus with a manual clock
+// (tests/replay/node_identity_test.cpp).
 
+#include <cstdint>
 #include <memory>
 
 #include <spdlog/spdlog.h>
 
+#include "bus/node_journal_publisher.hpp"
 #include "bus/run_loop.hpp"
 #include "planner/core/planner.hpp"
 #include "planner/daemon/planner_worker.hpp"
@@ -31,8 +34,10 @@ class PlannerDaemon {
 
   bus::RunLoop& loop_;
   NodeSettings settings_;
+  std::int64_t start_utime_;  // the node's clock origin, as its journal states it
   PlannerNode node_;
   PlannerWorker worker_;
+  bus::NodeJournalPublisher journal_;  // last: goes first, publishing its rest while the rest still exists
 };
 
 }  // namespace ifar::planner

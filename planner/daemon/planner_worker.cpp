@@ -28,7 +28,7 @@ PlannerWorker::~PlannerWorker()
 bool PlannerWorker::busy() const
 {
   const std::lock_guard<std::mutex> lock(mutex_);
-  return busy_ || job_.has_value();
+  return busy_ || job_.has_value() || !finished_.empty();
 }
 
 void PlannerWorker::submit(PlannerJob job)

@@ -1,8 +1,9 @@
 #pragma once
 // Runs the Planner on its own thread so a slow frame never blocks the LCM loop. The loop hands over at
-// most one job at a time; while the worker is busy the node keeps the next one (PlannerNode counts a
-// revolution it had to hold back as dropped). Finished outputs are picked up by the loop and published.
-// In line (a test replaying a log on a manual clock) each job runs at once on the caller's thread.
+// most one job at a time and takes its outputs before the next; while the worker is busy the node keeps the
+// next one (PlannerNode counts a revolution it had to hold back as dropped). Finished outputs are picked up
+// by the loop and published. In line (a test replaying a log on a manual clock) each job runs at once on the
+// caller's thread.
 
 #include <condition_variable>
 #include <cstdint>
@@ -27,7 +28,8 @@ class PlannerWorker {
   PlannerWorker(const PlannerWorker&) = delete;
   PlannerWorker& operator=(const PlannerWorker&) = delete;
 
-  /// True while a job is running or waiting.
+  /// True from submit() until takeFinished() has returned the job's outputs: whether the loop may hand
+  /// over the next job then depends on the loop's own steps alone, so its journal replays it.
   bool busy() const;
   /// Hands `job` over; the caller checks busy() first (a job given to a busy worker is a bug: it throws).
   void submit(PlannerJob job);

@@ -64,6 +64,8 @@ common::ParameterTable<NodeSettings> makeNodeParameters()
   addChannel(table, "dv_graph", &PlannerChannels::dv_graph, "the published DV-graph");
   addChannel(table, "global_path", &PlannerChannels::global_path, "the published path");
   addChannel(table, "planner_status", &PlannerChannels::planner_status, "the planner's status");
+  addChannel(table, "journal", &PlannerChannels::journal,
+             "what the loop handed the node, for ifar replay-test (node_journal_t)");
   return table;
 }
 

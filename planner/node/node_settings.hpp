@@ -3,6 +3,7 @@
 // ages), read by the daemon and the headless runner alike. The perception and graph sections are read by
 // their own loaders.
 
+#include <set>
 #include <string>
 
 #include "common/config.hpp"
@@ -22,6 +23,13 @@ struct PlannerChannels {
   std::string dv_graph = "DV_GRAPH";
   std::string global_path = "GLOBAL_PATH";
   std::string planner_status = "PLANNER_STATUS";
+  std::string journal = "PLANNER_JOURNAL";
+
+  /// The node's inputs: what the daemon subscribes to for it (and journals).
+  std::set<std::string> inputs() const
+  {
+    return {velodyne_packet, pose, goal, detected_objects, affordance, blocked_passage};
+  }
 };
 
 struct NodeSettings {

@@ -4,11 +4,18 @@
 
 namespace ifar::planner {
 
-push_plan_t toPushPlanMessage(const PathPush& push, std::int64_t now_utime)
+void stampPath(path_t& path, std::int64_t now_utime)
+{
+  path.utime = now_utime;
+  for (push_plan_t& plan : path.push_plans) {
+    plan.utime = now_utime;
+  }
+}
+
+push_plan_t toPushPlanMessage(const PathPush& push)
 {
   const interaction::PushPlan& plan = push.plan;
   push_plan_t message{};
-  message.utime = now_utime;
   message.object_id = push.object_id;
   message.from_vertex =
       push.from_vertex == graph::kNoVertex ? -1 : static_cast<std::int64_t>(push.from_vertex);
@@ -138,15 +145,15 @@ dv_graph_t toGraphMessage(const Planner& planner, const FrameResult& result)
 path_t toPathMessage(const graph::DvGraph& dv_graph, const FrameResult& result, std::int64_t now_utime)
 {
   path_t path{};
-  path.utime = now_utime;
   path.goal_id = result.path.goal_id;
   path.sequence = result.sequence;
   path.valid = result.path.valid;
   path.length_m = result.path.length_m;
   path.cost = result.path.cost;
   for (const PathPush& push : result.path.pushes) {
-    path.push_plans.push_back(toPushPlanMessage(push, now_utime));
+    path.push_plans.push_back(toPushPlanMessage(push));
   }
+  stampPath(path, now_utime);
   path.num_push_plans = static_cast<std::int32_t>(path.push_plans.size());
   for (std::size_t index = 0; index < result.path.waypoints.size(); ++index) {
     const graph::PathPoint& point = result.path.waypoints[index];

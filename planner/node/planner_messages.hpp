@@ -28,8 +28,8 @@ struct PlannerMessages {
 constexpr std::int64_t kBackgroundPolygonIdBase = 1'000'000'000;
 
 /// One push of a path as push_plan_t (controls as push_control_t, object headings relative to the
-/// object's pose at planning time).
-push_plan_t toPushPlanMessage(const PathPush& push, std::int64_t now_utime);
+/// object's pose at planning time), not yet stamped (stampPath).
+push_plan_t toPushPlanMessage(const PathPush& push);
 
 /// The global graph with this frame's polygons. Polygons: obstacle outlines counter-clockwise, free-space
 /// holes inside an obstacle (a room) clockwise.
@@ -38,6 +38,10 @@ dv_graph_t toGraphMessage(const Planner& planner, const FrameResult& result);
 /// The path of one finished update, stamped `now_utime`. Waypoint kinds: KIND_TOPOLOGICAL where a push
 /// starts (a topological vertex of `graph`), KIND_PUSH (object id, index into push_plans) where it ends.
 path_t toPathMessage(const graph::DvGraph& graph, const FrameResult& result, std::int64_t now_utime);
+
+/// Sets the time a path and its push plans carry: when the update was finished, so a path built before
+/// its stamp is known (a replayed job) gets the same bytes as one built at once.
+void stampPath(path_t& path, std::int64_t now_utime);
 
 /// The three messages of one finished update (toGraphMessage, toPathMessage, toStatusMessage).
 PlannerMessages toMessages(const Planner& planner, const FrameResult& result, std::int64_t now_utime);

@@ -34,6 +34,10 @@ namespace ifar::planner {
 /// The farthest a goal's coordinate may lie from the map origin, metres: far beyond any mission.
 inline constexpr double kMaxGoalCoordinateM = 1e6;
 
+/// The daemon's timers as its journal names them (node_journal_t KIND_TIMER codes).
+inline constexpr std::int16_t kTickTimer = 0;
+inline constexpr std::int16_t kPathResendTimer = 1;
+
 /// What a tick asks for: work for the Planner, or (before anything was planned) a "waiting" status.
 struct PlannerTick {
   std::optional<PlannerJob> job;

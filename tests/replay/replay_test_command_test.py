@@ -56,6 +56,13 @@ def main():
                         r"[0-9.]+, replayed [0-9.]+$", changed.stdout, re.M) is not None,
               "planner: the first difference names the message, its log time and the member (the path's cost)")
 
+        budget = replay_test(log, "--node", "planner", "--set", "interaction.reference_force_n=50", "--set",
+                             "interaction.frame_budget_ms=0.001")
+        check(budget.returncode == 1 and re.search(r"^note: the planner's interaction planning took [0-9.]+ ms at log "
+                                                   r"time [0-9.]+ s, past its wall-clock budget \(0\.0 ms\)",
+                                                   budget.stdout, re.M) is not None,
+              "planner: a difference after a status past the wall-clock budget says so")
+
         config = os.path.join(work, "config")
         shutil.copytree(os.path.join(SOURCE, "config"), config)
         planner_yaml = os.path.join(config, "planner.yaml")

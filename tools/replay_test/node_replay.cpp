@@ -2,14 +2,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <optional>
 #include <utility>
 
 #include <spdlog/sinks/null_sink.h>
 
 #include "executive/node/executive_node.hpp"
+#include "ifar/node_journal_t.hpp"
 #include "planner/core/planner.hpp"
 #include "planner/node/planner_job.hpp"
+#include "planner/node/planner_messages.hpp"
 #include "planner/node/planner_node.hpp"
 #include "system/simulated_stack.hpp"
 
@@ -47,8 +50,10 @@ class PeriodicTimer {
 
 class PlannerReplay final : public NodeReplay {
  public:
-  PlannerReplay(const runner::RunRequest& request, std::int64_t start_utime, bool publish_graph)
-      : channels_(request.planner_node.channels),
+  PlannerReplay(const runner::RunRequest& request, std::int64_t start_utime, bool publish_graph,
+                ReplayClock clock)
+      : clock_(clock),
+        channels_(request.planner_node.channels),
         node_(request.planner_node, silentLogger("planner_replay"), start_utime),
         planner_(runner::runnerPlannerSettings(request)),
         publish_graph_(publish_graph),
@@ -57,15 +62,7 @@ class PlannerReplay final : public NodeReplay {
   {
   }
 
-  std::set<std::string> inputChannels() const override
-  {
-    return {channels_.velodyne_packet,
-            channels_.pose,
-            channels_.goal,
-            channels_.affordance,
-            channels_.blocked_passage,
-            channels_.detected_objects};
-  }
+  std::set<std::string> inputChannels() const override { return channels_.inputs(); }
 
   std::set<std::string> outputChannels() const override
   {
@@ -86,7 +83,7 @@ class PlannerReplay final : public NodeReplay {
     } else if (channel == channels_.goal) {
       take<goal_t>(bytes, [&](const auto& message) {
         if (node_.onGoal(message, now)) {
-          run(node_.takeUpdateJob(false), now);
+          run(node_.takeUpdateJob(busy()), now);
         }
       });
     } else if (channel == channels_.detected_objects) {
@@ -94,12 +91,12 @@ class PlannerReplay final : public NodeReplay {
     } else if (channel == channels_.affordance) {
       take<affordance_t>(bytes, [&](const auto& message) {
         node_.onAffordance(message, now);
-        run(node_.takeUpdateJob(false), now);
+        run(node_.takeUpdateJob(busy()), now);
       });
     } else if (channel == channels_.blocked_passage) {
       take<blocked_passage_t>(bytes, [&](const auto& message) {
         node_.onBlockedPassage(message, now);
-        run(node_.takeUpdateJob(false), now);
+        run(node_.takeUpdateJob(busy()), now);
       });
     }
   }
@@ -107,20 +104,48 @@ class PlannerReplay final : public NodeReplay {
   void runTimers(std::int64_t now) override
   {
     if (tick_.due(now)) {
-      planner::PlannerTick tick = node_.tick(now, false);
-      if (tick.waiting_status) {
-        publish(channels_.planner_status, *tick.waiting_status, now);
-      }
-      run(std::move(tick.job), now);
+      runTick(now);
     }
     if (resend_.due(now)) {
-      if (const std::optional<path_t> path = node_.resendPath(now)) {
-        publish(channels_.global_path, *path, now);
-      }
+      resendPath(now);
+    }
+  }
+
+  void journalEvent(std::int8_t kind, std::int16_t code, std::int64_t utime) override
+  {
+    if (kind == node_journal_t::KIND_TIMER && code == planner::kTickTimer) {
+      runTick(utime);
+    } else if (kind == node_journal_t::KIND_TIMER && code == planner::kPathResendTimer) {
+      resendPath(utime);
+    } else if (kind == node_journal_t::KIND_JOB_FINISHED && !running_.empty()) {
+      planner::PlannerOutputs outputs = std::move(running_.front());
+      running_.pop_front();
+      planner::stampPath(outputs.path, utime);
+      publishFinished(outputs, utime);
     }
   }
 
  private:
+  /// The daemon's worker is busy from a job's hand-over until the loop takes its outputs.
+  bool busy() const { return !running_.empty(); }
+
+  void runTick(std::int64_t now)
+  {
+    planner::PlannerTick tick = node_.tick(now, busy());
+    if (tick.waiting_status) {
+      publish(channels_.planner_status, *tick.waiting_status, now);
+    }
+    run(std::move(tick.job), now);
+  }
+
+  void resendPath(std::int64_t now)
+  {
+    if (const std::optional<path_t> path = node_.resendPath(now)) {
+      publish(channels_.global_path, *path, now);
+    }
+  }
+
+  /// Runs `job` at once; its outputs go out now (the runner's way) or where the journal says (kept).
   void run(std::optional<planner::PlannerJob> job, std::int64_t now)
   {
     if (!job) {
@@ -128,6 +153,15 @@ class PlannerReplay final : public NodeReplay {
     }
     const planner::PlannerJobResult finished = planner::runPlannerJob(planner_, *job);
     planner::PlannerOutputs outputs = planner::toOutputs(planner_, finished, now, publish_graph_);
+    if (clock_ == ReplayClock::kJournal) {
+      running_.push_back(std::move(outputs));
+    } else {
+      publishFinished(outputs, now);
+    }
+  }
+
+  void publishFinished(planner::PlannerOutputs& outputs, std::int64_t now)
+  {
     node_.finish(outputs);
     if (outputs.graph) {
       publish(channels_.dv_graph, *outputs.graph, now);
@@ -136,12 +170,14 @@ class PlannerReplay final : public NodeReplay {
     publish(channels_.planner_status, outputs.status, now);
   }
 
+  ReplayClock clock_;
   planner::PlannerChannels channels_;
   planner::PlannerNode node_;
   planner::Planner planner_;
   bool publish_graph_;
   PeriodicTimer tick_;
   PeriodicTimer resend_;
+  std::deque<planner::PlannerOutputs> running_;  // handed to the daemon's worker, not yet taken back
 };
 
 class ExecutiveReplay final : public NodeReplay {
@@ -153,13 +189,7 @@ class ExecutiveReplay final : public NodeReplay {
   {
   }
 
-  std::set<std::string> inputChannels() const override
-  {
-    return {executive::kPoseChannel,        packet_channel_,
-            executive::kPathChannel,        executive::kForceChannel,
-            executive::kMotorStatusChannel, executive::kOdometryChannel,
-            executive::kEStopChannel};
-  }
+  std::set<std::string> inputChannels() const override { return executive::inputChannels(packet_channel_); }
 
   std::set<std::string> outputChannels() const override
   {
@@ -188,10 +218,23 @@ class ExecutiveReplay final : public NodeReplay {
 
   void runTimers(std::int64_t now) override
   {
-    if (!cycle_.due(now)) {
-      return;
+    if (cycle_.due(now)) {
+      publishOutputs(node_.cycle(now), now);
     }
-    const executive::ExecutiveOutputs outputs = node_.cycle(now);
+  }
+
+  void journalEvent(std::int8_t kind, std::int16_t code, std::int64_t utime) override
+  {
+    if (kind == node_journal_t::KIND_TIMER && code == executive::kControlCycleTimer) {
+      publishOutputs(node_.cycle(utime), utime);
+    } else if (kind == node_journal_t::KIND_STOP) {
+      publishOutputs(node_.stop(utime), utime);
+    }
+  }
+
+ private:
+  void publishOutputs(const executive::ExecutiveOutputs& outputs, std::int64_t now)
+  {
     publish(executive::kCommandChannel, outputs.command, now);
     if (outputs.status) {
       publish(executive::kStatusChannel, *outputs.status, now);
@@ -204,7 +247,6 @@ class ExecutiveReplay final : public NodeReplay {
     }
   }
 
- private:
   std::string packet_channel_;
   executive::ExecutiveNode node_;
   PeriodicTimer cycle_;
@@ -220,9 +262,9 @@ std::vector<Published> NodeReplay::takePublished()
 }
 
 std::unique_ptr<NodeReplay> plannerReplay(const runner::RunRequest& request, std::int64_t start_utime,
-                                          bool publish_graph)
+                                          bool publish_graph, ReplayClock clock)
 {
-  return std::make_unique<PlannerReplay>(request, start_utime, publish_graph);
+  return std::make_unique<PlannerReplay>(request, start_utime, publish_graph, clock);
 }
 
 std::unique_ptr<NodeReplay> executiveReplay(const runner::RunRequest& request, std::int64_t start_utime)

@@ -8,6 +8,8 @@
 //              the path resent at daemon.path_resend_hz
 //   executive: POSE, VELODYNE_PACKET, GLOBAL_PATH, FORCE, MOTOR_STATUS, ODOMETRY, E_STOP in; VELOCITY_CMD,
 //              EXEC_STATUS, AFFORDANCE, BLOCKED_PASSAGE out; a control cycle every 20 ms
+// A log of the daemons with their journals is driven by the journal instead (ReplayClock::kJournal): the
+// timers run when and with the clock the daemon's ran, the planner's jobs finish where its worker's did.
 
 #include <cstdint>
 #include <functional>
@@ -36,8 +38,10 @@ class NodeReplay {
   virtual std::set<std::string> outputChannels() const = 0;
   /// An input message received at `receive_utime`; bytes that do not decode are counted and skipped.
   virtual void deliver(const std::string& channel, common::ByteView bytes, std::int64_t receive_utime) = 0;
-  /// The timers due at `now_utime`.
+  /// The timers due at `now_utime` (a log without the node's journal: the runner's schedule).
   virtual void runTimers(std::int64_t now_utime) = 0;
+  /// A journaled event of the daemon's loop (journal_feed.hpp): a timer, a finished job, the stop.
+  virtual void journalEvent(std::int8_t kind, std::int16_t code, std::int64_t utime) = 0;
 
   /// What the node published so far, in order; taken out.
   std::vector<Published> takePublished();
@@ -70,10 +74,16 @@ class NodeReplay {
   std::int64_t undecodable_ = 0;
 };
 
+/// How the node's jobs and timers are driven.
+enum class ReplayClock {
+  kRunner,   // runTimers on the runner's schedule; the planner's jobs finish at once
+  kJournal,  // journalEvent only; the planner's jobs finish where the journal says, with its stamp
+};
+
 /// The planner node of `request` (its planner settings as the runner lifts them: no wall-clock budgets),
 /// started at `start_utime`; `publish_graph`: publish DV_GRAPH as the daemon does (the runner does not).
 std::unique_ptr<NodeReplay> plannerReplay(const runner::RunRequest& request, std::int64_t start_utime,
-                                          bool publish_graph);
+                                          bool publish_graph, ReplayClock clock);
 
 /// The executive node of `request`, started at `start_utime`. Throws std::invalid_argument when the vehicle
 /// does not fit the executive.

@@ -4,6 +4,7 @@
 // channel, message, log time and member), 2 on bad input (command line, config, a corrupt log, a log without
 // the node's inputs or outputs).
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -21,12 +22,16 @@
 #include "common/lcm_log/log_reader.hpp"
 #include "common/lcm_log/strict_event_reader.hpp"
 #include "executive/modes/executive_settings.hpp"
+#include "executive/node/executive_node.hpp"
 #include "executive/obstacles/local_obstacles.hpp"
+#include "ifar/planner_status_t.hpp"
+#include "lcmtypes/checked_decode.hpp"
 #include "lcmtypes/message_schema.hpp"
 #include "planner/interaction/interaction_settings.hpp"
 #include "planner/node/node_settings.hpp"
 #include "system/run_config.hpp"
 #include "tools/echo/message_value.hpp"
+#include "tools/replay_test/journal_feed.hpp"
 #include "tools/replay_test/log_clock_feed.hpp"
 #include "tools/replay_test/message_comparison.hpp"
 #include "tools/replay_test/node_replay.hpp"
@@ -111,8 +116,40 @@ struct ChannelOutcome {
   std::string difference;
 };
 
-ChannelOutcome compareChannel(const ifar::echo::MessageTypes& types, const std::vector<Published>& recorded,
-                              const std::vector<Published>& replayed,
+/// A message with the journal batch whose events made it (journal_feed.hpp).
+struct Tagged {
+  Published message;
+  std::int64_t batch = 0;
+};
+
+/// When a recorded status at or before `until_us` shows the daemon's interaction planning past one of its
+/// wall-clock budgets, why the replay (which has none) may differ from there; else empty.
+std::string budgetNote(const ifar::planner::PlannerSettings& daemon, const std::vector<Tagged>& statuses,
+                       std::int64_t until_us)
+{
+  const double budget_ms =
+      std::min(daemon.interaction.loop.frame_budget_ms, daemon.interaction.search.time_budget_s * 1000.0);
+  for (const Tagged& tagged : statuses) {
+    if (tagged.message.utime > until_us) {
+      break;
+    }
+    ifar::planner_status_t status;
+    const std::vector<std::uint8_t>& bytes = tagged.message.bytes;
+    if (ifar::lcmtypes::decodeLcm(status, bytes.data(), bytes.size()).ok() &&
+        status.interaction_ms >= budget_ms) {
+      char note[256];
+      std::snprintf(note, sizeof note,
+                    "the planner's interaction planning took %.1f ms at log time %s s, past its wall-clock "
+                    "budget (%.1f ms); the replay has none, so from there on the two may differ",
+                    status.interaction_ms, secondsText(tagged.message.utime).c_str(), budget_ms);
+      return note;
+    }
+  }
+  return {};
+}
+
+ChannelOutcome compareChannel(const ifar::echo::MessageTypes& types, const std::vector<Tagged>& recorded,
+                              const std::vector<Tagged>& replayed,
                               const ifar::replay_test::ComparisonSettings& settings)
 {
   ChannelOutcome outcome;
@@ -120,11 +157,13 @@ ChannelOutcome compareChannel(const ifar::echo::MessageTypes& types, const std::
   outcome.replayed = replayed.size();
   for (std::size_t index = 0; index < recorded.size() && index < replayed.size(); ++index) {
     const std::string difference = ifar::replay_test::firstDifference(
-        types, ifar::common::ByteView(recorded[index].bytes.data(), recorded[index].bytes.size()),
-        ifar::common::ByteView(replayed[index].bytes.data(), replayed[index].bytes.size()), settings);
+        types,
+        ifar::common::ByteView(recorded[index].message.bytes.data(), recorded[index].message.bytes.size()),
+        ifar::common::ByteView(replayed[index].message.bytes.data(), replayed[index].message.bytes.size()),
+        settings);
     if (!difference.empty()) {
       outcome.first_difference = index;
-      outcome.log_time_us = recorded[index].utime;
+      outcome.log_time_us = recorded[index].message.utime;
       outcome.difference = difference;
       return outcome;
     }
@@ -133,11 +172,11 @@ ChannelOutcome compareChannel(const ifar::echo::MessageTypes& types, const std::
     const std::size_t index = std::min(recorded.size(), replayed.size());
     outcome.first_difference = index;
     if (index < recorded.size()) {
-      outcome.log_time_us = recorded[index].utime;
+      outcome.log_time_us = recorded[index].message.utime;
       outcome.difference = "recorded, not replayed (" + std::to_string(recorded.size()) + " recorded, " +
                            std::to_string(replayed.size()) + " replayed)";
     } else {
-      outcome.log_time_us = replayed[index].utime;
+      outcome.log_time_us = replayed[index].message.utime;
       outcome.difference = "replayed, not recorded (" + std::to_string(recorded.size()) + " recorded, " +
                            std::to_string(replayed.size()) + " replayed)";
     }
@@ -166,32 +205,54 @@ int run(const Options& options)
                                        (events.problem().empty() ? "" : ": corrupt at " + events.problem()));
   }
   const std::int64_t first_utime = event.timestamp_us;
+  const std::string journal_channel =
+      options.node == "planner" ? request.planner_node.channels.journal : ifar::executive::kJournalChannel;
+  // A log of the daemons holds their journals: the node is driven as its own loop drove it.
+  const std::optional<ifar::node_journal_t> first_batch =
+      options.start_utime ? std::nullopt : ifar::replay_test::firstJournalBatch(options.log, journal_channel);
+  if (first_batch && first_batch->first_event != 0) {
+    return fail(kBadInputExitCode, "'" + options.log + "' begins after the " + options.node +
+                                       " had started: its journal (" + journal_channel +
+                                       ") is logged from event " + std::to_string(first_batch->first_event) +
+                                       " on; record from before the node starts");
+  }
   const std::int64_t origin = request.sim.simulator.epoch_utime;
   std::int64_t start_utime = first_utime;
-  std::string start_reason = "the log's first event (a daemon's log: its timers' phase is not recorded)";
-  if (options.start_utime) {
+  std::string start_reason =
+      "the log's first event (no journal of the node in the log: its timers' phase is "
+      "not recorded)";
+  if (first_batch) {
+    start_utime = first_batch->start_utime;
+    start_reason = "the " + options.node + "'s journal on " + journal_channel + " (pid " +
+                   std::to_string(first_batch->pid) + ")";
+  } else if (options.start_utime) {
     start_utime = *options.start_utime;
     start_reason = "--start-utime";
   } else if (first_utime >= origin && first_utime < origin + kRunnerLogWindowUs) {
     start_utime = origin;
     start_reason = "the runner's clock origin (a log of ifar run)";
   }
+  const ifar::replay_test::ReplayClock clock =
+      first_batch ? ifar::replay_test::ReplayClock::kJournal : ifar::replay_test::ReplayClock::kRunner;
 
   std::unique_ptr<ifar::replay_test::NodeReplay> node;
   try {
-    node = options.node == "planner" ? ifar::replay_test::plannerReplay(request, start_utime, true)
+    node = options.node == "planner" ? ifar::replay_test::plannerReplay(request, start_utime, true, clock)
                                      : ifar::replay_test::executiveReplay(request, start_utime);
   } catch (const std::invalid_argument& error) {
     return fail(kBadInputExitCode,
                 std::string("the ") + options.node + " refuses the configuration: " + error.what());
   }
   const std::set<std::string> outputs = node->outputChannels();
-  std::map<std::string, std::vector<Published>> recorded;
-  std::map<std::string, std::vector<Published>> replayed;
+  // Each output with the journal batch it belongs to (0 without a journal).
+  std::map<std::string, std::vector<Tagged>> recorded;
+  std::map<std::string, std::vector<Tagged>> replayed;
+  std::optional<ifar::replay_test::JournalFeed> journal;
   const auto collect = [&] {
+    const std::int64_t batch = journal ? journal->batch() : 0;
     for (Published& published : node->takePublished()) {
       published.utime -= first_utime;  // log time, for the report
-      replayed[published.channel].push_back(std::move(published));
+      replayed[published.channel].push_back({std::move(published), batch});
     }
   };
   ifar::replay_test::LogClockFeed feed(
@@ -205,18 +266,67 @@ int run(const Options& options)
                                 node->runTimers(now_utime);
                                 collect();
                               }});
+  if (first_batch) {
+    journal.emplace(
+        journal_channel, *first_batch, node->inputChannels(),
+        ifar::replay_test::JournalHooks{
+            [&node, &collect](const std::string& channel, ifar::common::ByteView bytes, std::int64_t utime) {
+              node->deliver(channel, bytes, utime);
+              collect();
+            },
+            [&node, &collect](std::int8_t kind, std::int16_t code, std::int64_t utime) {
+              node->journalEvent(kind, code, utime);
+              collect();
+            }});
+  }
   do {
     if (outputs.count(event.channel) > 0) {
-      recorded[event.channel].push_back({event.channel, event.data, event.timestamp_us - first_utime});
+      recorded[event.channel].push_back({{event.channel, event.data, event.timestamp_us - first_utime},
+                                         journal ? journal->batchesLogged() : 0});
     }
-    feed.add(event);
+    if (journal) {
+      journal->add(event);
+    } else {
+      feed.add(event);
+    }
   } while (events.next(event));
   if (!events.problem().empty()) {
     return fail(kBadInputExitCode, "'" + options.log + "' is corrupt at " + events.problem());
   }
-  feed.finish();
-  collect();
-  if (feed.inputsDelivered() == 0) {
+  std::string replayed_part;
+  std::int64_t inputs_delivered = 0;
+  if (journal) {
+    journal->finish();
+    inputs_delivered = journal->inputsDelivered();
+    // Only what came of whole batches on both sides: the rest of the log has no journal to replay it by.
+    const std::int64_t complete = journal->completeBatches();
+    if (complete == 0) {
+      return fail(kBadInputExitCode, "no batch of the " + options.node + "'s journal in '" + options.log +
+                                         "' could be replayed: " +
+                                         (journal->endReason().empty() ? "no events" : journal->endReason()));
+    }
+    for (auto* side : {&recorded, &replayed}) {
+      for (auto& channel : *side) {
+        auto& messages = channel.second;
+        messages.erase(std::remove_if(messages.begin(), messages.end(),
+                                      [complete](const Tagged& tagged) { return tagged.batch >= complete; }),
+                       messages.end());
+      }
+    }
+    replayed_part = ", " + std::to_string(journal->events()) + " journal events in " +
+                    std::to_string(complete) + " batches, " + std::to_string(journal->inputsNotTaken()) +
+                    " logged inputs the node did not take";
+    if (!journal->endReason().empty()) {
+      replayed_part += "; compared up to log time " +
+                       secondsText(journal->completeUntilUtime() - first_utime) +
+                       " s: " + journal->endReason();
+    }
+  } else {
+    feed.finish();
+    collect();
+    inputs_delivered = feed.inputsDelivered();
+  }
+  if (inputs_delivered == 0) {
     return fail(kBadInputExitCode, "'" + options.log + "' holds none of the " + options.node + "'s inputs (" +
                                        channelList(node->inputChannels()) + ")");
   }
@@ -225,9 +335,9 @@ int run(const Options& options)
                                        "'s outputs (" + channelList(outputs) + ") to compare with");
   }
 
-  std::printf("ifar replay-test: %s on %s: %lld inputs replayed from %s s, timers from %s\n",
-              options.node.c_str(), options.log.c_str(), static_cast<long long>(feed.inputsDelivered()),
-              secondsText(start_utime - first_utime).c_str(), start_reason.c_str());
+  std::printf("ifar replay-test: %s on %s: %lld inputs replayed from %s s, timers from %s%s\n",
+              options.node.c_str(), options.log.c_str(), static_cast<long long>(inputs_delivered),
+              secondsText(start_utime - first_utime).c_str(), start_reason.c_str(), replayed_part.c_str());
   ifar::replay_test::ComparisonSettings settings;
   settings.tolerance = options.tolerance;
   settings.ignored = kWallClockMembers;
@@ -261,6 +371,13 @@ int run(const Options& options)
   std::printf("different: %s message %zu of %zu (log time %s s): %s\n", first->first.c_str(),
               *outcome.first_difference, outcome.recorded, secondsText(outcome.log_time_us).c_str(),
               outcome.difference.c_str());
+  if (options.node == "planner") {
+    const std::string note = budgetNote(
+        request.planner, recorded[request.planner_node.channels.planner_status], outcome.log_time_us);
+    if (!note.empty()) {
+      std::printf("note: %s\n", note.c_str());
+    }
+  }
   return 1;
 }
 

@@ -117,18 +117,18 @@ TEST_F(ReplayProcess, DeliversExactlyTheNonCommandMessagesByteForByteAndSaysWhat
 {
   std::vector<Received> commands;
   const std::vector<Received> events = mixedLog(commands);
-  ASSERT_EQ(events.size(), 36U);
+  ASSERT_EQ(events.size(), 37U);
   ASSERT_EQ(commands.size(), 8U);
   ASSERT_TRUE(writeLog(path("mixed.lcmlog"), events));
   const std::string url = privateUrl(7841);
   BusListener listener(url, ".*");
   ASSERT_TRUE(listener.good());
   EXPECT_EQ(replay(listener, path("mixed.lcmlog"), url, {}), 0) << output();
-  EXPECT_EQ(listener.received().size(), 28U);
+  EXPECT_EQ(listener.received().size(), 29U);
   EXPECT_EQ(listener.received(), without(events, commands));
   const std::string text = output();
   EXPECT_TRUE(contains(text, "leaving out commands: the channels VELOCITY_CMD, E_STOP and GOAL")) << text;
-  EXPECT_TRUE(contains(text, "end of log: 28 messages published, 8 commands left out, 0 not selected"))
+  EXPECT_TRUE(contains(text, "end of log: 29 messages published, 8 commands left out, 0 not selected"))
       << text;
   EXPECT_TRUE(contains(text, "  left out on CAN_VEHICLE: 4\n")) << text;
   EXPECT_TRUE(contains(text, "  left out on SIM_VELOCITY: 1\n")) << text;
@@ -313,7 +313,7 @@ TEST_F(ReplayProcess, GuiStartsLogPlayerOnJava17WithTheCommandChannelsSwitchedOf
       expected.push_back(event);
     }
   }
-  ASSERT_EQ(expected.size(), 23U);
+  ASSERT_EQ(expected.size(), 24U);
   listener.spin(14.0, [&] { return listener.received().size() >= expected.size(); });
   listener.spin(0.5);
   // The player stopped, xvfb-run stops its X server, removes its files and ends.

@@ -1,10 +1,10 @@
 // The whole stack as real processes over UDP multicast (issue #7 checks): `ifar launch
 // config/launch/sim_demo.yaml` starts ifar-sim, the Velodyne, force and motor drivers, the planner, the
 // executive, lcm-logger and a goal sender that ends the launch when the executive reports the goal
-// reached. Each test runs on its own LCM port, lidar UDP port (IFAR_LIDAR_PORT: 237NN next to LCM port
-// 77NN) and log folder, so no stack hears another's; the tests still run one at a time (RUN_SERIAL): each
-// stack runs in real time with about ten processes, and two at once on a two-core machine would stretch
-// the stop latencies they measure.
+// reached; the demo's log replays the planner and the executive exactly (ifar replay-test). Each test runs on
+// its own LCM port, lidar UDP port (IFAR_LIDAR_PORT: 237NN next to LCM port 77NN) and log folder, so no stack
+// hears another's; the tests still run one at a time (RUN_SERIAL): each stack runs in real time with about
+// ten processes, and two at once on a two-core machine would stretch the stop latencies they measure.
 
 #include <dirent.h>
 #include <signal.h>
@@ -260,6 +260,45 @@ class SystemTest : public ::testing::Test {
     }
   }
 
+  struct ReplayTestRun {
+    int exit_code = -1;
+    std::string output;
+  };
+  /// ifar-replay-test on `log` with the repository's configuration.
+  ReplayTestRun replayTest(const std::string& log, std::vector<std::string> arguments) const
+  {
+    std::vector<std::string> command = {std::string(IFAR_BINARY_DIR) + "/bin/ifar-replay-test", log,
+                                        "--config-dir", std::string(IFAR_SOURCE_DIR) + "/config"};
+    command.insert(command.end(), arguments.begin(), arguments.end());
+    const std::string output = folder_ + "/replay-test.out";
+    ReplayTestRun run;
+    run.exit_code =
+        ifar::test_support::runToEnd(command, ifar::test_support::ChildOptions{output, "", {}}, 120.0);
+    run.output = readText(output);
+    return run;
+  }
+  /// True when the report's line for `channel` has as many replayed as recorded, at least `at_least`, and
+  /// says they are the same.
+  static bool sameCountAndSame(const std::string& output, const std::string& channel, int at_least)
+  {
+    std::istringstream lines(output);
+    std::string line;
+    while (std::getline(lines, line)) {
+      std::istringstream fields(line);
+      std::string name;
+      int recorded = -1;
+      std::string recorded_word;
+      int replayed = -2;
+      std::string replayed_word;
+      std::string verdict;
+      if (fields >> name >> recorded >> recorded_word >> replayed >> replayed_word >> verdict &&
+          name == channel) {
+        return recorded == replayed && recorded >= at_least && verdict == "same";
+      }
+    }
+    return false;
+  }
+
   std::unique_ptr<ifar::test_support::TemporaryDirectory> directory_;
   std::string folder_;  // directory_'s path
 };
@@ -271,11 +310,28 @@ TEST_F(SystemTest, DemoArrivesAfterPushingTheBox)
   ASSERT_TRUE(stack.started());
   ASSERT_TRUE(stack.waitFor(185.0)) << "the launch did not end";
   EXPECT_EQ(stack.exitCode(), 0) << "goal not reached:\n" << stack.launchOutput();
-  const LoggedRun run = readLog(recordedLog());
+  const std::string log = recordedLog();
+  const LoggedRun run = readLog(log);
   expectArrived(run, 8.0, 26.0);
   ASSERT_TRUE(run.last_status.has_value());
   EXPECT_GE(run.last_status->pushes, 1) << "the vehicle arrived without pushing the box";
   EXPECT_GE(run.max_push_plans, 1) << "no GLOBAL_PATH carried a push plan";
+
+  // The demo's own log as a regression test: each node replayed by its journal gives what it published.
+  const std::string port = "daemon.data_port=23781";  // the planner ran with the test's lidar port
+  const ReplayTestRun planner = replayTest(log, {"--node", "planner", "--set", port});
+  EXPECT_EQ(planner.exit_code, 0) << planner.output;
+  EXPECT_TRUE(sameCountAndSame(planner.output, "GLOBAL_PATH", 500)) << planner.output;
+  EXPECT_TRUE(sameCountAndSame(planner.output, "DV_GRAPH", 50)) << planner.output;
+  EXPECT_NE(planner.output.find("timers from the planner's journal on PLANNER_JOURNAL"), std::string::npos)
+      << planner.output;
+  const ReplayTestRun executive = replayTest(log, {"--node", "executive"});
+  EXPECT_EQ(executive.exit_code, 0) << executive.output;
+  EXPECT_TRUE(sameCountAndSame(executive.output, "VELOCITY_CMD", 1000)) << executive.output;
+  const ReplayTestRun changed =
+      replayTest(log, {"--node", "planner", "--set", port, "--set", "interaction.reference_force_n=50"});
+  EXPECT_EQ(changed.exit_code, 1) << changed.output;
+  EXPECT_NE(changed.output.find("\ndifferent: "), std::string::npos) << changed.output;
 }
 
 TEST_F(SystemTest, HeavyBoxIsMarkedUnpushableAndTheVehicleGoesAround)
