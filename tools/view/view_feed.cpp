@@ -218,6 +218,17 @@ std::vector<Publication> ViewFeed::latest() const
   return publications;
 }
 
+std::vector<Publication> ViewFeed::latestOf(const std::string& channel) const
+{
+  std::vector<Publication> publications;
+  if (const auto found = channels_.find(channel); found != channels_.end()) {
+    for (const auto& [key, publication] : found->second.latest) {
+      publications.push_back(publication);
+    }
+  }
+  return publications;
+}
+
 std::vector<ChannelStatistics> ViewFeed::statistics(std::int64_t now_utime) const
 {
   std::vector<ChannelStatistics> all;
