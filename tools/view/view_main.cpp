@@ -75,7 +75,8 @@ int main(int argc, char** argv)
       "for "
       "the page (docs/view.md)."};
   ViewOptions options;
-  app.add_option("--port", options.port, "HTTP port (0: any free port, printed at start)")
+  app.add_option("--port", options.port,
+                 "HTTP port: the page, its /ws and Foxglove's /foxglove (0: any free port, printed at start)")
       ->check(CLI::Range(0, 65535))
       ->capture_default_str();
   app.add_option("--address", options.address,
