@@ -16,6 +16,8 @@ namespace {
 constexpr std::uint8_t kMessageDataOpcode = 0x01;
 constexpr int kStatusWarning = 1;
 constexpr int kStatusError = 2;
+// A subscription to every channel is a few kilobytes; anything far larger is not a request to read.
+constexpr std::size_t kMaxRequestBytes = 1U << 20U;
 
 // Client ops the spec has but this server offers no capability for: refused with a status naming them.
 const std::set<std::string> kNotOfferedOps = {"advertise",
@@ -28,11 +30,6 @@ const std::set<std::string> kNotOfferedOps = {"advertise",
                                               "unsubscribeConnectionGraph",
                                               "fetchAsset"};
 
-WebFrame text(std::string line)
-{
-  return WebFrame{false, std::move(line)};
-}
-
 void appendLittleEndian(std::string& bytes, std::uint64_t value, std::size_t width)
 {
   for (std::size_t index = 0; index < width; ++index) {
@@ -44,6 +41,9 @@ void appendLittleEndian(std::string& bytes, std::uint64_t value, std::size_t wid
 /// A message that does not parse, or is not an object with a string "op", is a std::string: why.
 std::variant<YAML::Node, std::string> parseRequest(const std::string& text)
 {
+  if (text.size() > kMaxRequestBytes) {
+    return "longer than " + std::to_string(kMaxRequestBytes) + " bytes";
+  }
   YAML::Node node;
   try {
     node = YAML::Load(text);
@@ -96,7 +96,7 @@ void FoxgloveProtocol::onJoined(ClientId client)
   for (const auto& [name, channel] : channels_) {
     channels.push_back(&channel);
   }
-  send_(client, {text(std::move(server_info)), text(advertiseLine(channels))});
+  send_(client, {textFrame(std::move(server_info)), textFrame(advertiseLine(channels))});
 }
 
 void FoxgloveProtocol::onLeft(ClientId client)
@@ -124,15 +124,21 @@ void FoxgloveProtocol::onText(ClientId client, const std::string& text)
   }
   const YAML::Node& request = std::get<YAML::Node>(parsed);
   const std::string op = request["op"].as<std::string>();
-  if (op == "subscribe") {
-    subscribe(client, found->second, request);
-  } else if (op == "unsubscribe") {
-    unsubscribe(client, found->second, request);
-  } else if (kNotOfferedOps.count(op) > 0) {
-    refuse(client, kStatusError,
-           "op \"" + op + "\" refused: this server offers only subscribe and unsubscribe");
-  } else {
-    refuse(client, kStatusError, "unknown op \"" + op + "\"");
+  try {
+    if (op == "subscribe") {
+      subscribe(client, found->second, request);
+    } else if (op == "unsubscribe") {
+      unsubscribe(client, found->second, request);
+    } else if (kNotOfferedOps.count(op) > 0) {
+      refuse(client, kStatusError,
+             "op \"" + op + "\" refused: this server offers only subscribe and unsubscribe");
+    } else {
+      refuse(client, kStatusError, "unknown op \"" + op + "\"");
+    }
+  } catch (const YAML::Exception& error) {
+    // The handlers read only what they checked the shape of; should one get past them anyway, the request is
+    // still only refused.
+    refuse(client, kStatusError, "op \"" + op + "\" refused: " + error.msg);
   }
 }
 
@@ -214,8 +220,8 @@ void FoxgloveProtocol::unsubscribe(ClientId client, Client& state, const YAML::N
 void FoxgloveProtocol::refuse(ClientId client, int level, const std::string& message)
 {
   ++counts_.bad_requests;
-  send_(client, {text(R"({"op":"status","level":)" + std::to_string(level) +
-                      ",\"message\":" + common::jsonString(message) + "}")});
+  send_(client, {textFrame(R"({"op":"status","level":)" + std::to_string(level) +
+                           ",\"message\":" + common::jsonString(message) + "}")});
 }
 
 WebFrame FoxgloveProtocol::messageFrame(std::uint32_t subscription, const Publication& publication)
@@ -257,7 +263,7 @@ const FoxgloveProtocol::Channel& FoxgloveProtocol::channelFor(const Publication&
         state.channel_of_subscription.erase(subscribed->second);
         state.subscription_of_channel.erase(subscribed);
       }
-      send_(client, {text(R"({"op":"unadvertise","channelIds":[)" + std::to_string(old_id) + "]}")});
+      send_(client, {textFrame(R"({"op":"unadvertise","channelIds":[)" + std::to_string(old_id) + "]}")});
     }
   }
   Channel& channel = channels_[publication.channel];
@@ -268,7 +274,7 @@ const FoxgloveProtocol::Channel& FoxgloveProtocol::channelFor(const Publication&
   channel.schema = type != nullptr ? echo::jsonSchemaOf(schema_, *type) : std::string(R"({"type":"object"})");
   const std::string advertise = advertiseLine({&channel});
   for (const auto& [client, state] : clients_) {
-    send_(client, {text(advertise)});
+    send_(client, {textFrame(advertise)});
   }
   return channel;
 }

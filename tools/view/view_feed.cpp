@@ -211,9 +211,8 @@ std::vector<Publication> ViewFeed::latest() const
 {
   std::vector<Publication> publications;
   for (const auto& [name, channel] : channels_) {
-    for (const auto& [key, publication] : channel.latest) {
-      publications.push_back(publication);
-    }
+    std::vector<Publication> newest = latestOf(name);
+    publications.insert(publications.end(), newest.begin(), newest.end());
   }
   return publications;
 }

@@ -9,11 +9,6 @@ namespace {
 
 constexpr std::int64_t kStatisticsPeriodUs = 1'000'000;
 
-WebFrame text(std::string line)
-{
-  return WebFrame{false, std::move(line)};
-}
-
 }  // namespace
 
 ViewHub::ViewHub(const lcm_wire::Schema& schema, FeedSettings settings, std::string hello_line, Send send,
@@ -31,10 +26,10 @@ void ViewHub::onMessage(const std::string& channel, common::ByteView bytes, std:
   std::vector<WebFrame> frames;
   std::vector<Publication> publications;
   if (update.reset) {
-    frames.push_back(text("{\"view\":\"reset\",\"reason\":" + common::jsonString(*update.reset) + "}"));
+    frames.push_back(textFrame("{\"view\":\"reset\",\"reason\":" + common::jsonString(*update.reset) + "}"));
   }
   if (update.publication) {
-    frames.push_back(text(update.publication->page_line));
+    frames.push_back(textFrame(update.publication->page_line));
     publications.push_back(std::move(*update.publication));
   }
   forward(frames, publications);
@@ -61,11 +56,11 @@ void ViewHub::onClientEvent(const ClientEvent& event)
   }
   switch (event.kind) {
     case ClientEvent::Kind::kJoined: {
-      std::vector<WebFrame> frames{text(hello_line_)};
+      std::vector<WebFrame> frames{textFrame(hello_line_)};
       for (Publication& publication : feed_.latest()) {
-        frames.push_back(text(std::move(publication.page_line)));
+        frames.push_back(textFrame(std::move(publication.page_line)));
       }
-      frames.push_back(text(feed_.trajectoryLine()));
+      frames.push_back(textFrame(feed_.trajectoryLine()));
       send_(event.client, frames);
       pages_.insert(event.client);
       break;
@@ -85,11 +80,11 @@ void ViewHub::tick(std::int64_t now_utime)
   std::vector<WebFrame> frames;
   frames.reserve(publications.size() + 1);
   for (const Publication& publication : publications) {
-    frames.push_back(text(publication.page_line));
+    frames.push_back(textFrame(publication.page_line));
   }
   if (now_utime - last_statistics_utime_ >= kStatisticsPeriodUs) {
     last_statistics_utime_ = now_utime;
-    frames.push_back(text(feed_.statisticsLine(now_utime)));
+    frames.push_back(textFrame(feed_.statisticsLine(now_utime)));
   }
   forward(frames, publications);
 }

@@ -13,6 +13,7 @@
 #include <mutex>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 struct mg_context;
@@ -57,6 +58,11 @@ struct WebFrame {
   bool binary = false;
   std::string bytes;
 };
+
+inline WebFrame textFrame(std::string text)
+{
+  return WebFrame{false, std::move(text)};
+}
 
 /// What to send whom: the web server's send in ifar view, a recorder in tests.
 using Send = std::function<void(ClientId client, const std::vector<WebFrame>& frames)>;

@@ -6,7 +6,8 @@ serverInfo comes first, GOAL is advertised with encoding json, schemaName goal_t
 JSON) naming goal_t's fields; after subscribing, the goal published before arrives at once and one published
 later as it comes, each a Message Data frame (opcode 1, the subscription id, a receive time near now) whose
 payload is the goal's JSON with the values sent; after unsubscribing nothing more comes; a request for an
-unknown channel is answered with an error status; and a client without the subprotocol is refused.
+unknown channel is answered with an error status; a client offering ours among others gets ours; and a
+client without the subprotocol is refused.
     foxglove_client_test.py            (PATH with build/bin first; IFAR_SOURCE_DIR set by ctest)"""
 import asyncio
 import json
@@ -146,6 +147,15 @@ async def session(url):
             log("after unsubscribing: nothing")
 
 
+async def chosen_among_others(url):
+    """A client offering a newer subprotocol first and ours second gets ours."""
+    async with websockets.connect(url, subprotocols=["foxglove.example.v9", SUBPROTOCOL]) as socket:
+        check(socket.subprotocol == SUBPROTOCOL, f"the server chose {socket.subprotocol!r} of two")
+        info = await next_text(socket)
+        check(info.get("op") == "serverInfo", f"serverInfo must come first, got {info}")
+        log(f"offered two subprotocols: {socket.subprotocol} chosen")
+
+
 async def refused_without_subprotocol(url):
     try:
         async with websockets.connect(url) as socket:
@@ -174,6 +184,7 @@ def main():
         check(url is not None, "ifar view did not print its Foxglove URL")
         log(f"ifar view: {url}")
         asyncio.run(session(url))
+        asyncio.run(chosen_among_others(url))
         asyncio.run(refused_without_subprotocol(url))
         check(view.poll() is None, f"ifar view ended (exit {view.returncode})")
     except (Failure, subprocess.SubprocessError, OSError, KeyError, ValueError,

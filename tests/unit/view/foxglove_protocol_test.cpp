@@ -357,7 +357,12 @@ TEST_F(FoxgloveProtocolTest, BadRequestsAreCountedAndAnsweredWithAStatusNeverMor
   expectRefused(5, 2, "no \"subscriptionIds\" array");
   hub.onClientEvent({ClientEvent::Kind::kBinary, 5, std::string("\x01\x00\x00\x00\x00{}", 7), kFoxglove});
   expectRefused(5, 2, "binary messages refused");
-  EXPECT_EQ(hub.foxglove().counts().bad_requests, 15);
+  say(5, R"({"op":"subscribe","subscriptions":[{"id":3,"channelId":1,"pad":")" + std::string(2U << 20U, 'x') +
+             "\"}]}");
+  expectRefused(5, 2, "longer than 1048576 bytes");
+  say(5, std::string(50000, '[') + std::string(50000, ']'));  // deeper than the parser goes
+  expectRefused(5, 2, "not JSON");
+  EXPECT_EQ(hub.foxglove().counts().bad_requests, 17);
   // Still subscribed, still served.
   publish("GOAL", goalAt(2.0), kStart + 1);
   EXPECT_EQ(take(5).size(), 1U);
