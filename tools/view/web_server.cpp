@@ -139,8 +139,9 @@ WebServer::WebServer(WebServerSettings settings) : settings_(std::move(settings)
     endpoint->subprotocols.nb_subprotocols = endpoint->subprotocol.empty() ? 0 : 1;
     endpoint->subprotocols.subprotocols = endpoint->subprotocol_names;
     mg_set_websocket_handler_with_subprotocols(
-        context_, endpoint->path.c_str(), &endpoint->subprotocols, &WebServer::acceptSocket,
-        &WebServer::socketReady, &WebServer::socketData, &WebServer::socketClosed, endpoint.get());
+        context_, endpoint->path.c_str(), endpoint->subprotocol.empty() ? nullptr : &endpoint->subprotocols,
+        &WebServer::acceptSocket, &WebServer::socketReady, &WebServer::socketData, &WebServer::socketClosed,
+        endpoint.get());
     endpoints_.push_back(std::move(endpoint));
   }
 }

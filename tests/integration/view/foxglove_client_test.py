@@ -156,15 +156,15 @@ async def chosen_among_others(url):
         log(f"offered two subprotocols: {socket.subprotocol} chosen")
 
 
-async def refused_without_subprotocol(url):
+async def refused_without_subprotocol(url, offered):
     try:
-        async with websockets.connect(url) as socket:
+        async with websockets.connect(url, subprotocols=offered) as socket:
             await asyncio.wait_for(socket.recv(), 3.0)
     except (websockets.exceptions.InvalidHandshake, websockets.exceptions.ConnectionClosed,
             ConnectionError, asyncio.TimeoutError) as error:
-        log(f"without the subprotocol: refused ({type(error).__name__})")
+        log(f"offering {offered}: refused ({type(error).__name__})")
         return
-    raise Failure("a client without the subprotocol was served")
+    raise Failure(f"a client offering {offered} was served")
 
 
 def main():
@@ -185,7 +185,8 @@ def main():
         log(f"ifar view: {url}")
         asyncio.run(session(url))
         asyncio.run(chosen_among_others(url))
-        asyncio.run(refused_without_subprotocol(url))
+        asyncio.run(refused_without_subprotocol(url, None))
+        asyncio.run(refused_without_subprotocol(url, ["foxglove.example.v9"]))
         check(view.poll() is None, f"ifar view ended (exit {view.returncode})")
     except (Failure, subprocess.SubprocessError, OSError, KeyError, ValueError,
             websockets.exceptions.WebSocketException) as error:
