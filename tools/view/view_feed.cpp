@@ -211,7 +211,17 @@ std::vector<Publication> ViewFeed::latest() const
 {
   std::vector<Publication> publications;
   for (const auto& [name, channel] : channels_) {
-    for (const auto& [key, publication] : channel.latest) {
+    std::vector<Publication> newest = latestOf(name);
+    publications.insert(publications.end(), newest.begin(), newest.end());
+  }
+  return publications;
+}
+
+std::vector<Publication> ViewFeed::latestOf(const std::string& channel) const
+{
+  std::vector<Publication> publications;
+  if (const auto found = channels_.find(channel); found != channels_.end()) {
+    for (const auto& [key, publication] : found->second.latest) {
       publications.push_back(publication);
     }
   }

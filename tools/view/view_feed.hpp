@@ -73,6 +73,8 @@ class ViewFeed {
   /// For a page that joins: the newest message of every forwarded channel (held ones included), one per
   /// process on heartbeat channels, in channel order.
   std::vector<Publication> latest() const;
+  /// The newest message of one channel (one per process on a heartbeat channel); none when it has none.
+  std::vector<Publication> latestOf(const std::string& channel) const;
   const std::vector<TrajectoryPoint>& trajectory() const { return trajectory_; }
   std::vector<ChannelStatistics> statistics(std::int64_t now_utime) const;
 

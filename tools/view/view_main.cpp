@@ -2,7 +2,8 @@
 // channel, decodes each project type by its schema (as ifar echo does) and serves the page (built in) with a
 // WebSocket that streams the messages as JSON; the page draws the DV-graph, path, push plans, vehicle,
 // trajectory, goals, the executive's mode and findings, the force and every daemon's health. The same on
-// `ifar sim` or the whole stack, and on `ifar replay` of a log.
+// `ifar sim` or the whole stack, and on `ifar replay` of a log. Foxglove and Lichtblick connect at
+// ws://HOST:PORT/foxglove (the Foxglove WebSocket protocol, foxglove_protocol.hpp).
 
 #include <cstdio>
 #include <filesystem>
@@ -68,9 +69,14 @@ int main(int argc, char** argv)
       "A live view in the browser: serves a page (built in, no network needed) and streams every LCM message "
       "of a project type to it over a WebSocket; it draws the DV-graph, path, push plans, vehicle, "
       "trajectory, "
-      "goal, the executive's mode, affordances, force and every daemon's heartbeat. Open the printed URL."};
+      "goal, the executive's mode, affordances, force and every daemon's heartbeat. Open the printed URL. "
+      "Foxglove or Lichtblick: open a Foxglove WebSocket connection to ws://HOST:PORT/foxglove (subprotocol "
+      "foxglove.websocket.v1): every forwarded channel is advertised, JSON with a JSON Schema, thinned as "
+      "for "
+      "the page (docs/view.md)."};
   ViewOptions options;
-  app.add_option("--port", options.port, "HTTP port (0: any free port, printed at start)")
+  app.add_option("--port", options.port,
+                 "HTTP port: the page, its /ws and Foxglove's /foxglove (0: any free port, printed at start)")
       ->check(CLI::Range(0, 65535))
       ->capture_default_str();
   app.add_option("--address", options.address,
@@ -83,8 +89,8 @@ int main(int argc, char** argv)
           ->capture_default_str();
   app.add_option(
          "--max-rate-hz", options.max_rate_hz,
-         "channels faster than this are thinned to it for the page (the last message of a burst always "
-         "goes); heartbeats, graphs, goals and the executive's reports are never thinned")
+         "channels faster than this are thinned to it for the page and Foxglove clients (the last message of "
+         "a burst always goes); heartbeats, graphs, goals and the executive's reports are never thinned")
       ->check(ifar::common::atLeast(0.1))
       ->capture_default_str();
   app.add_option("--web-root", options.web_root,
@@ -117,18 +123,23 @@ int main(int argc, char** argv)
     server_settings.port = options.port;
     server_settings.assets = ifar::view::webAssets();
     server_settings.asset_directory = options.web_root;
+    server_settings.sockets = {
+        {"/ws", ""}, {std::string(ifar::view::kFoxglovePath), std::string(ifar::view::kFoxgloveSubprotocol)}};
     ifar::view::WebServer server(server_settings);
 
     ifar::view::FeedSettings feed_settings;
     feed_settings.max_rate_hz = options.max_rate_hz;
     const std::string lcm_url = ifar::bus::resolveLcmUrl(options.lcm_url);
+    const std::string shown_lcm_url = lcm_url.empty() ? "udpm://239.255.76.67:7667?ttl=0" : lcm_url;
+    ifar::view::FoxgloveServerInfo foxglove_info;
+    foxglove_info.metadata = {{"lcm_url", shown_lcm_url}, {"max_rate_hz", number(options.max_rate_hz)}};
     ifar::view::ViewHub hub(
         ifar::lcmtypes::messageSchema(), feed_settings,
-        helloLine(vehicle, lcm_url.empty() ? "udpm://239.255.76.67:7667?ttl=0" : lcm_url,
-                  options.max_rate_hz),
+        helloLine(vehicle, shown_lcm_url, options.max_rate_hz),
         [&server](ifar::view::ClientId client, const std::vector<ifar::view::WebFrame>& frames) {
           server.send(client, frames);
-        });
+        },
+        foxglove_info);
     loop.subscribeRaw(".*", [&hub](const lcm::ReceiveBuffer* buffer, const std::string& channel) {
       hub.onMessage(channel,
                     ifar::common::ByteView(static_cast<const std::uint8_t*>(buffer->data), buffer->data_size),
@@ -137,7 +148,10 @@ int main(int argc, char** argv)
     loop.every(kTickPeriodS, [&loop, &hub, &server] {
       for (const ifar::view::ClientEvent& event : server.takeEvents()) {
         if (event.kind == ifar::view::ClientEvent::Kind::kJoined) {
-          spdlog::get("view")->info("page opened from {}", event.text);
+          spdlog::get("view")->info(
+              "{} from {}",
+              event.endpoint == ifar::view::kFoxglovePath ? "Foxglove client connected" : "page opened",
+              event.text);
         }
         hub.onClientEvent(event);
       }
@@ -147,6 +161,8 @@ int main(int argc, char** argv)
     std::printf(
         "ifar view: open http://%s:%d/ in a browser%s\n", shown_address.c_str(), server.port(),
         options.address == "0.0.0.0" ? " (or this host's name or address from the vehicle's network)" : "");
+    std::printf("ifar view: Foxglove: ws://%s:%d%s\n", shown_address.c_str(), server.port(),
+                std::string(ifar::view::kFoxglovePath).c_str());
     std::printf("ifar view: listening on %s:%d, LCM %s\n", options.address.c_str(), server.port(),
                 lcm_url.empty() ? "default URL" : lcm_url.c_str());
     std::fflush(stdout);

@@ -54,8 +54,17 @@ void reply(mg_connection* connection, int status, const std::string& content_typ
 
 }  // namespace
 
+struct WebServer::Endpoint {
+  WebServer* server = nullptr;
+  std::string path;
+  std::string subprotocol;
+  const char* subprotocol_names[1] = {nullptr};
+  mg_websocket_subprotocols subprotocols{};
+};
+
 struct WebServer::Client {
   ClientId id = 0;
+  std::string endpoint;
   mg_connection* connection = nullptr;
   std::size_t max_queued_bytes = 0;
   std::mutex mutex;
@@ -121,8 +130,20 @@ WebServer::WebServer(WebServerSettings settings) : settings_(std::move(settings)
   const int count = mg_get_server_ports(context_, 4, ports);
   port_ = count > 0 ? ports[0].port : settings_.port;
   mg_set_request_handler(context_, "/", &WebServer::serveFile, this);
-  mg_set_websocket_handler(context_, "/ws", &WebServer::acceptSocket, &WebServer::socketReady,
-                           &WebServer::socketData, &WebServer::socketClosed, this);
+  for (const SocketEndpoint& socket : settings_.sockets) {
+    auto endpoint = std::make_unique<Endpoint>();
+    endpoint->server = this;
+    endpoint->path = socket.path;
+    endpoint->subprotocol = socket.subprotocol;
+    endpoint->subprotocol_names[0] = endpoint->subprotocol.c_str();
+    endpoint->subprotocols.nb_subprotocols = endpoint->subprotocol.empty() ? 0 : 1;
+    endpoint->subprotocols.subprotocols = endpoint->subprotocol_names;
+    mg_set_websocket_handler_with_subprotocols(
+        context_, endpoint->path.c_str(), endpoint->subprotocol.empty() ? nullptr : &endpoint->subprotocols,
+        &WebServer::acceptSocket, &WebServer::socketReady, &WebServer::socketData, &WebServer::socketClosed,
+        endpoint.get());
+    endpoints_.push_back(std::move(endpoint));
+  }
 }
 
 WebServer::~WebServer()
@@ -173,15 +194,24 @@ int WebServer::serveFile(mg_connection* connection, void* server)
   return 404;
 }
 
-int WebServer::acceptSocket(const mg_connection* /*connection*/, void* /*server*/)
+int WebServer::acceptSocket(const mg_connection* connection, void* endpoint)
 {
-  return 0;  // every client is welcome
+  const auto& socket = *static_cast<const Endpoint*>(endpoint);
+  if (socket.subprotocol.empty()) {
+    return 0;  // every client is welcome
+  }
+  // civetweb picks the subprotocol before this call: ours when the client listed it among others, whatever
+  // it asked for when it asked for one only, none when it asked for none.
+  const char* accepted = mg_get_request_info(connection)->acceptedWebSocketSubprotocol;
+  return accepted != nullptr && socket.subprotocol == accepted ? 0 : 1;
 }
 
-void WebServer::socketReady(mg_connection* connection, void* server)
+void WebServer::socketReady(mg_connection* connection, void* endpoint)
 {
-  auto& self = *static_cast<WebServer*>(server);
+  const auto& socket = *static_cast<const Endpoint*>(endpoint);
+  WebServer& self = *socket.server;
   auto client = std::make_shared<Client>();
+  client->endpoint = socket.path;
   client->connection = connection;
   client->max_queued_bytes = self.settings_.max_queued_bytes;
   {
@@ -192,26 +222,28 @@ void WebServer::socketReady(mg_connection* connection, void* server)
   mg_set_user_connection_data(connection, client.get());
   client->writer = std::thread([raw = client.get()] { raw->write(); });
   const mg_request_info* request = mg_get_request_info(connection);
-  self.pushEvent({ClientEvent::Kind::kJoined, client->id, request->remote_addr});
+  self.pushEvent({ClientEvent::Kind::kJoined, client->id, request->remote_addr, socket.path});
 }
 
-int WebServer::socketData(mg_connection* connection, int bits, char* data, std::size_t length, void* server)
+int WebServer::socketData(mg_connection* connection, int bits, char* data, std::size_t length, void* endpoint)
 {
-  auto& self = *static_cast<WebServer*>(server);
+  WebServer& self = *static_cast<const Endpoint*>(endpoint)->server;
   const int opcode = bits & 0x0F;
   if (opcode == MG_WEBSOCKET_OPCODE_CONNECTION_CLOSE) {
     return 0;
   }
   const auto* client = static_cast<const Client*>(mg_get_user_connection_data(connection));
-  if (opcode == MG_WEBSOCKET_OPCODE_TEXT && client != nullptr) {
-    self.pushEvent({ClientEvent::Kind::kText, client->id, std::string(data, length)});
+  if (client != nullptr && (opcode == MG_WEBSOCKET_OPCODE_TEXT || opcode == MG_WEBSOCKET_OPCODE_BINARY)) {
+    self.pushEvent(
+        {opcode == MG_WEBSOCKET_OPCODE_TEXT ? ClientEvent::Kind::kText : ClientEvent::Kind::kBinary,
+         client->id, std::string(data, length), client->endpoint});
   }
   return 1;
 }
 
-void WebServer::socketClosed(const mg_connection* connection, void* server)
+void WebServer::socketClosed(const mg_connection* connection, void* endpoint)
 {
-  auto& self = *static_cast<WebServer*>(server);
+  WebServer& self = *static_cast<const Endpoint*>(endpoint)->server;
   auto* raw = static_cast<Client*>(mg_get_user_connection_data(connection));
   if (raw == nullptr) {
     return;
@@ -232,7 +264,7 @@ void WebServer::socketClosed(const mg_connection* connection, void* server)
   }
   client->wake.notify_all();
   client->writer.join();
-  self.pushEvent({ClientEvent::Kind::kLeft, client->id, {}});
+  self.pushEvent({ClientEvent::Kind::kLeft, client->id, {}, client->endpoint});
 }
 
 void WebServer::pushEvent(ClientEvent event)

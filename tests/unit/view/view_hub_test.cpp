@@ -64,7 +64,7 @@ TEST_F(ViewHubTest, APageThatJoinsGetsHelloTheNewestOfEachChannelAndTheTrajector
   goal(3.0, kStart);
   goal(4.0, kStart + 1);
   EXPECT_TRUE(sent.empty());  // no page yet
-  hub.onClientEvent({ClientEvent::Kind::kJoined, 7, "127.0.0.1"});
+  hub.onClientEvent({ClientEvent::Kind::kJoined, 7, "127.0.0.1", "/ws"});
   ASSERT_EQ(sent[7].size(), 3U);
   EXPECT_EQ(sent[7][0], "{\"view\":\"hello\"}");
   EXPECT_NE(sent[7][1].find("\"x\":4,"), std::string::npos) << sent[7][1];
@@ -77,10 +77,10 @@ TEST_F(ViewHubTest, APageThatJoinsGetsHelloTheNewestOfEachChannelAndTheTrajector
 
 TEST_F(ViewHubTest, EveryPageGetsTheSameFramesUntilItLeaves)
 {
-  hub.onClientEvent({ClientEvent::Kind::kJoined, 1, "a"});
-  hub.onClientEvent({ClientEvent::Kind::kJoined, 2, "b"});
+  hub.onClientEvent({ClientEvent::Kind::kJoined, 1, "a", "/ws"});
+  hub.onClientEvent({ClientEvent::Kind::kJoined, 2, "b", "/ws"});
   goal(1.0, kStart);
-  hub.onClientEvent({ClientEvent::Kind::kLeft, 1, ""});
+  hub.onClientEvent({ClientEvent::Kind::kLeft, 1, "", "/ws"});
   goal(2.0, kStart + 1);
   EXPECT_EQ(sent[1].size(), 3U);  // hello, trajectory, one goal
   EXPECT_EQ(sent[2].size(), 4U);
@@ -89,7 +89,7 @@ TEST_F(ViewHubTest, EveryPageGetsTheSameFramesUntilItLeaves)
 
 TEST_F(ViewHubTest, ATimeJumpSendsAResetBeforeThePose)
 {
-  hub.onClientEvent({ClientEvent::Kind::kJoined, 1, "a"});
+  hub.onClientEvent({ClientEvent::Kind::kJoined, 1, "a", "/ws"});
   pose(kStart + 10'000'000, kStart);
   pose(kStart, kStart + 200'000);
   ASSERT_EQ(sent[1].size(), 5U);
@@ -100,7 +100,7 @@ TEST_F(ViewHubTest, ATimeJumpSendsAResetBeforeThePose)
 
 TEST_F(ViewHubTest, TickSendsTheChannelCountsOnceASecond)
 {
-  hub.onClientEvent({ClientEvent::Kind::kJoined, 1, "a"});
+  hub.onClientEvent({ClientEvent::Kind::kJoined, 1, "a", "/ws"});
   goal(1.0, kStart);
   hub.tick(kStart);
   hub.tick(kStart + 500'000);
