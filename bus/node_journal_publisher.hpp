@@ -9,7 +9,7 @@
 #include <string>
 
 #include "bus/run_loop.hpp"
-#include "common/node_journal/journal_recorder.hpp"
+#include "bus/node_journal/journal_recorder.hpp"
 
 namespace ifar::bus {
 

@@ -4,7 +4,7 @@
 #include <utility>
 
 #include "common/lcm_log/strict_event_reader.hpp"
-#include "common/node_journal/input_hash.hpp"
+#include "bus/node_journal/input_hash.hpp"
 #include "lcmtypes/checked_decode.hpp"
 
 namespace ifar::replay_test {

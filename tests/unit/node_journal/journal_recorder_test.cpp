@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "common/node_journal/input_hash.hpp"
-#include "common/node_journal/journal_recorder.hpp"
+#include "bus/node_journal/input_hash.hpp"
+#include "bus/node_journal/journal_recorder.hpp"
 
 namespace {
 

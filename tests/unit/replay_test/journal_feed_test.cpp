@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "common/node_journal/journal_recorder.hpp"
+#include "bus/node_journal/journal_recorder.hpp"
 
 namespace ifar::replay_test {
 namespace {

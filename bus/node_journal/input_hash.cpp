@@ -1,4 +1,4 @@
-#include "common/node_journal/input_hash.hpp"
+#include "bus/node_journal/input_hash.hpp"
 
 #include <cstring>
 

@@ -1,10 +1,10 @@
-#include "common/node_journal/journal_recorder.hpp"
+#include "bus/node_journal/journal_recorder.hpp"
 
 #include <limits>
 #include <stdexcept>
 #include <utility>
 
-#include "common/node_journal/input_hash.hpp"
+#include "bus/node_journal/input_hash.hpp"
 
 namespace ifar::node_journal {
 
