@@ -8,8 +8,8 @@
 #include <set>
 #include <string>
 
-#include "bus/run_loop.hpp"
 #include "bus/node_journal/journal_recorder.hpp"
+#include "bus/run_loop.hpp"
 
 namespace ifar::bus {
 

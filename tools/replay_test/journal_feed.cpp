@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <utility>
 
-#include "common/lcm_log/strict_event_reader.hpp"
 #include "bus/node_journal/input_hash.hpp"
+#include "common/lcm_log/strict_event_reader.hpp"
 #include "lcmtypes/checked_decode.hpp"
 
 namespace ifar::replay_test {

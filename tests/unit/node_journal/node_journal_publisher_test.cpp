@@ -9,8 +9,8 @@
 
 #include <spdlog/sinks/null_sink.h>
 
-#include "bus/node_journal_publisher.hpp"
 #include "bus/node_journal/input_hash.hpp"
+#include "bus/node_journal_publisher.hpp"
 #include "ifar/goal_t.hpp"
 #include "ifar/heartbeat_t.hpp"
 #include "ifar/node_journal_t.hpp"
