@@ -30,6 +30,10 @@ LaunchSpec loadLaunchSpec(const common::ConfigNode& root, const VariableLookup& 
   if (!(spec.readiness_after_s >= 0.0 && spec.readiness_after_s <= 3600.0)) {
     root.fail("readiness_after_s", "must be between 0 (no summary) and 3600 seconds");
   }
+  spec.start_wait_s = root.optional<double>("start_wait_s", spec.start_wait_s);
+  if (!(spec.start_wait_s >= 0.0 && spec.start_wait_s <= 3600.0)) {
+    root.fail("start_wait_s", "must be between 0 and 3600 seconds");
+  }
   std::set<std::string> names;
   const auto processes = root.sequence("processes");
   if (processes.empty()) {
@@ -56,6 +60,15 @@ LaunchSpec loadLaunchSpec(const common::ConfigNode& root, const VariableLookup& 
       const auto environment = node.child("environment");
       for (const auto& key : environment.keys()) {
         process.environment[key] = expanded(environment, key, environment.required<std::string>(key), lookup);
+      }
+    }
+    if (node.has("after")) {
+      process.after = node.required<std::vector<std::string>>("after");
+      for (const std::string& earlier : process.after) {
+        // Only earlier ones: the file's order is the start order, and no two can wait on each other.
+        if (earlier == process.name || names.count(earlier) == 0) {
+          node.fail("after", "'" + earlier + "' is not a process listed before " + process.name);
+        }
       }
     }
     spec.processes.push_back(std::move(process));

@@ -6,6 +6,7 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <memory>
@@ -28,10 +29,11 @@ namespace {
 /// Heartbeats from LCM into `readiness`; the summary announced through `supervisor` when one is due.
 class ReadinessWatch {
  public:
-  ReadinessWatch(double first_report_s, ifar::launch::Supervisor& supervisor)
+  /// Joins LCM when there is a summary to print or a process to start when others are ready.
+  ReadinessWatch(double first_report_s, bool starts_wait, ifar::launch::Supervisor& supervisor)
       : readiness_({first_report_s, 3.0}, ifar::common::monotonicMicroseconds()), supervisor_(supervisor)
   {
-    if (first_report_s <= 0.0) {
+    if (first_report_s <= 0.0 && !starts_wait) {
       return;
     }
     const std::string url = ifar::bus::resolveLcmUrl("");
@@ -42,6 +44,13 @@ class ReadinessWatch {
       return;
     }
     lcm_->subscribe(ifar::bus::kHeartbeatChannel, &ReadinessWatch::onMessage, this);
+  }
+
+  /// Whether `process` is ready by its heartbeat; without LCM nothing can be, so waiting ones start after
+  /// the launch file's start wait.
+  bool ready(const ifar::launch::ProcessState& process) const
+  {
+    return readiness_.ready(process, ifar::common::monotonicMicroseconds());
   }
 
   /// Each turn of the supervisor's loop: what has arrived, then the summary if it is due.
@@ -114,9 +123,13 @@ int main(int argc, char** argv)
   // still stopped in order.
   signal(SIGPIPE, SIG_IGN);
   const double readiness_after_s = spec.readiness_after_s;
+  const bool starts_wait = std::any_of(spec.processes.begin(), spec.processes.end(),
+                                       [](const auto& process) { return !process.after.empty(); });
   ifar::launch::Supervisor supervisor(std::move(spec), program_directory, std::cout,
                                       !no_colour && isatty(STDOUT_FILENO) != 0);
-  ReadinessWatch readiness(readiness_after_s, supervisor);
-  const auto result = supervisor.run(duration_s, [&readiness] { readiness.turn(); });
+  ReadinessWatch readiness(readiness_after_s, starts_wait, supervisor);
+  const auto result = supervisor.run(
+      duration_s, [&readiness] { readiness.turn(); },
+      [&readiness](const ifar::launch::ProcessState& process) { return readiness.ready(process); });
   return result.exit_code;
 }

@@ -63,7 +63,10 @@ std::string Readiness::stateOf(const ProcessState& process, std::int64_t now_us,
     if (process.restart_pending) {
       return "restarting: " + why;
     }
-    return process.done ? "ended: " + why : "not started";
+    if (process.done) {
+      return "ended: " + why;
+    }
+    return process.waiting_for.empty() ? "not started" : "waiting for " + process.waiting_for;
   }
   const std::int64_t timeout_us = common::secondsToMicroseconds(settings_.heartbeat_timeout_s);
   const auto found = beats_.find(static_cast<std::int32_t>(process.pid));
@@ -84,6 +87,13 @@ std::string Readiness::stateOf(const ProcessState& process, std::int64_t now_us,
   }
   return std::string(beat.heartbeat.health == kHealthError ? "error: " : "not ready: ") +
          beat.heartbeat.message;
+}
+
+bool Readiness::ready(const ProcessState& process, std::int64_t now_us) const
+{
+  bool ready = false;
+  stateOf(process, now_us, ready);
+  return ready;
 }
 
 std::vector<std::string> Readiness::summary(const std::vector<ProcessState>& processes,

@@ -26,6 +26,7 @@ struct ProcessState {
   bool done = false;             // it exited and will not be
   std::string last_exit;         // "exited with code 1", "" before the first exit
   std::string exit_output;       // its last line of output before that exit, for why it exited
+  std::string waiting_for;       // not started yet: the processes it waits for, "recorder, sim"
 };
 
 /// The parts of a heartbeat_t the summary uses.
@@ -51,6 +52,9 @@ class Readiness {
   /// The summary lines when one is due (the first after first_report_s, then on any change), else nullopt.
   std::optional<std::vector<std::string>> report(const std::vector<ProcessState>& processes,
                                                  std::int64_t now_us);
+
+  /// Whether `process` runs and its latest heartbeat since its start, a recent one, says OK.
+  bool ready(const ProcessState& process, std::int64_t now_us) const;
 
   /// The summary as it stands: a header "readiness after 5 s: 4 of 6 ready", then one line per process.
   std::vector<std::string> summary(const std::vector<ProcessState>& processes, std::int64_t now_us) const;

@@ -46,7 +46,8 @@ Supervisor::Supervisor(LaunchSpec spec, std::string program_directory, std::ostr
     : program_directory_(std::move(program_directory)),
       out_(out),
       colour_(colour),
-      stop_timeout_s_(spec.stop_timeout_s)
+      stop_timeout_s_(spec.stop_timeout_s),
+      start_wait_s_(spec.start_wait_s)
 {
   for (auto& process : spec.processes) {
     name_width_ = std::max(name_width_, process.name.size());
@@ -271,30 +272,84 @@ void Supervisor::stopAll(double timeout_s)
   }
 }
 
+ProcessState Supervisor::stateOf(const Child& child) const
+{
+  ProcessState state;
+  state.name = child.spec.name;
+  state.pid = child.pid;
+  state.started_us = child.started_us;
+  state.restarts = child.restarts;
+  state.restart_pending = child.pid < 0 && !child.done && child.restart_due_us >= 0;
+  state.done = child.done;
+  state.last_exit = child.last_exit;
+  state.exit_output = child.exit_output;
+  if (child.waiting) {
+    for (const std::string& name : child.spec.after) {
+      state.waiting_for += (state.waiting_for.empty() ? "" : ", ") + name;
+    }
+  }
+  return state;
+}
+
 std::vector<ProcessState> Supervisor::processStates() const
 {
   std::vector<ProcessState> states;
   states.reserve(children_.size());
   for (const Child& child : children_) {
-    ProcessState state;
-    state.name = child.spec.name;
-    state.pid = child.pid;
-    state.started_us = child.started_us;
-    state.restarts = child.restarts;
-    state.restart_pending = child.pid < 0 && !child.done && child.restart_due_us >= 0;
-    state.done = child.done;
-    state.last_exit = child.last_exit;
-    state.exit_output = child.exit_output;
-    states.push_back(std::move(state));
+    states.push_back(stateOf(child));
   }
   return states;
 }
 
-SupervisorResult Supervisor::run(double duration_s, const std::function<void()>& each_turn)
+void Supervisor::startWaiting(const ReadyCheck& is_ready, std::int64_t run_started_us)
+{
+  const std::int64_t now = common::monotonicMicroseconds();
+  const bool waited_too_long = now - run_started_us >= common::secondsToMicroseconds(start_wait_s_);
+  for (Child& child : children_) {
+    if (!child.waiting) {
+      continue;
+    }
+    std::string not_ready;
+    bool ended = false;
+    for (const std::string& name : child.spec.after) {
+      const auto found = std::find_if(children_.begin(), children_.end(),
+                                      [&name](const Child& other) { return other.spec.name == name; });
+      if (found == children_.end()) {
+        continue;  // the launch file's loader refuses that; nothing to wait for
+      }
+      ended = ended || found->done;
+      if (!found->done && !(is_ready && is_ready(stateOf(*found)))) {
+        not_ready += (not_ready.empty() ? "" : ", ") + name;
+      }
+    }
+    if (!not_ready.empty() && !waited_too_long) {
+      continue;
+    }
+    child.waiting = false;
+    if (!not_ready.empty()) {
+      say("launch", "starting " + child.spec.name + " after waiting " +
+                        std::to_string(start_wait_s_).substr(0, 4) + " s; not ready: " + not_ready);
+    } else if (ended) {
+      say("launch", "starting " + child.spec.name + ": a process it waited for has ended");
+    }
+    start(child);
+  }
+}
+
+SupervisorResult Supervisor::run(double duration_s, const std::function<void()>& each_turn,
+                                 const ReadyCheck& is_ready)
 {
   SupervisorResult result;
+  const std::int64_t run_started_us = common::monotonicMicroseconds();
   for (auto& child : children_) {
-    start(child);
+    if (child.spec.after.empty() || !is_ready) {
+      start(child);
+      continue;
+    }
+    // What starts before the recorder is recording is lost from the log (the first pose, the first
+    // scan), and a log missing a node's first inputs cannot be replayed to the same outputs.
+    child.waiting = true;
+    say("launch", child.spec.name + " starts when ready: " + stateOf(child).waiting_for);
   }
   const std::int64_t end_us =
       duration_s > 0.0 ? common::monotonicMicroseconds() + common::secondsToMicroseconds(duration_s) : -1;
@@ -326,6 +381,9 @@ SupervisorResult Supervisor::run(double duration_s, const std::function<void()>&
     }
     if (each_turn && result.reason.empty()) {
       each_turn();
+    }
+    if (result.reason.empty()) {
+      startWaiting(is_ready, run_started_us);
     }
     if (end_us >= 0 && now >= end_us && result.reason.empty()) {
       result.reason = "ran for the requested " + std::to_string(duration_s).substr(0, 5) + " s";

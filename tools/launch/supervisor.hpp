@@ -1,7 +1,8 @@
 #pragma once
 // Runs the processes of a launch file: starts each in its own process group with its output prefixed by
-// its name, restarts the ones marked respawn when they die (with back-off), and on SIGINT/SIGTERM, when a
-// required process ends, or after a set duration, stops them all: SIGINT first, SIGKILL after the timeout.
+// its name (one with an `after` list once those are ready, or after the start wait), restarts the ones marked
+// respawn when they die (with back-off), and on SIGINT/SIGTERM, when a required process ends, or after a set
+// duration, stops them all: SIGINT first, SIGKILL after the timeout.
 
 #include <sys/types.h>
 
@@ -30,9 +31,14 @@ class Supervisor {
   Supervisor(const Supervisor&) = delete;
   Supervisor& operator=(const Supervisor&) = delete;
 
+  /// Whether a running process is ready (from its heartbeat: readiness.hpp).
+  using ReadyCheck = std::function<bool(const ProcessState&)>;
+
   /// Runs until a signal, a required process ending, or `duration_s` (<= 0: no limit). `each_turn` (may be
-  /// empty) is called on every turn of the loop, at least every 50 ms, while the processes run.
-  SupervisorResult run(double duration_s, const std::function<void()>& each_turn = {});
+  /// empty) is called on every turn of the loop, at least every 50 ms, while the processes run. A process
+  /// with an `after` list starts when `is_ready` says each of those is (empty: at once).
+  SupervisorResult run(double duration_s, const std::function<void()>& each_turn = {},
+                       const ReadyCheck& is_ready = {});
 
   /// Every process of the launch file, in its order, as it is now.
   std::vector<ProcessState> processStates() const;
@@ -54,9 +60,13 @@ class Supervisor {
     std::string last_output;           // its last line of output
     std::string last_exit;             // how it ended last, "" before it has
     std::string exit_output;           // last_output when it did
+    bool waiting = false;              // not started yet: waits for its `after` list
   };
 
   void start(Child& child);
+  /// Starts each waiting process whose `after` list is ready, has ended, or has been waited on too long.
+  void startWaiting(const ReadyCheck& is_ready, std::int64_t run_started_us);
+  ProcessState stateOf(const Child& child) const;
   void reapChildren(bool stopping, SupervisorResult& result);
   void drainOutput(Child& child, bool flush_partial);
   void say(const std::string& name, const std::string& line);
@@ -67,6 +77,7 @@ class Supervisor {
   std::ostream& out_;
   bool colour_;
   double stop_timeout_s_;
+  double start_wait_s_;
   int signal_fd_ = -1;
   std::size_t name_width_ = 0;
 };

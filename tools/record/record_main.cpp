@@ -1,7 +1,8 @@
 // ifar record: lcm-logger into logs/ with a timestamped name, split every 512 MB, recording the channels of
 // --channels only; and a heartbeat for the recorder. `ifar record` runs lcm-logger as its child, subscribes
-// to the same channels itself, and publishes heartbeat_t "recorder" on HEARTBEAT once a second: health OK
-// while lcm-logger runs and its file grows as messages arrive, ERROR (at once, with the reason) when it has
+// to the same channels itself, and publishes heartbeat_t "recorder" on HEARTBEAT once a second: DEGRADED
+// until lcm-logger has written its first message (ifar launch starts the rest then), OK while lcm-logger
+// runs and its file grows as messages arrive, ERROR (at once, with the reason) when it has
 // died or its file has not grown for --stall-seconds while messages arrived. When lcm-logger dies
 // `ifar record` exits 1, so `ifar launch` restarts both.
 
@@ -101,8 +102,10 @@ class Recorder {
       loop_.stop();
       return;
     }
-    // A change of health is reported at once, not at the next beat.
-    if (watch_.health(now).level != beat_.health) {
+    // A change of health is reported at once, not at the next beat; until lcm-logger records, each look
+    // sends a beat, the message whose appearance in the file shows it does.
+    const std::int8_t level = watch_.health(now).level;
+    if (level != beat_.health || level == ifar::heartbeat_t::HEALTH_DEGRADED) {
       beat();
     }
   }

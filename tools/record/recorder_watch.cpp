@@ -15,8 +15,16 @@ void RecorderWatch::onMessage(std::int64_t now_us)
   }
 }
 
-void RecorderWatch::onLogFile(const std::string& path, std::int64_t /*now_us*/)
+namespace {
+/// With nothing recorded arriving this long after the file opened there is nothing to wait for.
+constexpr std::int64_t kQuietOpenUs = 1'000'000;
+}  // namespace
+
+void RecorderWatch::onLogFile(const std::string& path, std::int64_t now_us)
 {
+  if (!opened_us_) {
+    opened_us_ = now_us;
+  }
   path_ = path;
   size_.reset();
   size_unreadable_ = false;
@@ -27,6 +35,9 @@ void RecorderWatch::onFileSize(std::optional<std::uint64_t> size, std::int64_t /
   size_unreadable_ = !size.has_value();
   if (!size) {
     return;
+  }
+  if (*size > 0) {
+    recording_ = true;
   }
   if (!size_ || *size > *size_) {
     // Whatever arrived before this growth counts as written: the logger writes in arrival order.
@@ -62,6 +73,18 @@ RecorderHealth RecorderWatch::health(std::int64_t now_us) const
     health.message +=
         " while " + std::to_string(unwritten_messages_) + " messages arrived (disk full? logger stuck?)";
     return health;
+  }
+  if (!recording_) {
+    if (path_.empty()) {
+      health.level = heartbeat_t::HEALTH_DEGRADED;
+      health.message = "waiting for lcm-logger to open its log file";
+      return health;
+    }
+    if (unwritten_messages_ > 0 || now_us - *opened_us_ < kQuietOpenUs) {
+      health.level = heartbeat_t::HEALTH_DEGRADED;
+      health.message = "waiting for lcm-logger to write its first message to " + path_;
+      return health;
+    }
   }
   health.level = heartbeat_t::HEALTH_OK;
   return health;

@@ -3,6 +3,11 @@
 // while messages it should record arrive. A logger that is killed, or that is alive but writes nothing (a
 // full disk, a stalled file system, a stopped process), would otherwise go unnoticed until someone needs the
 // log. No clock or process of its own: `ifar record` tells it what it sees, with the time.
+//
+// It is ready (OK) only once lcm-logger is known to record: its file has grown after a message arrived,
+// the recorder's own heartbeat as the first. Until then it is DEGRADED, so `ifar launch` holds back the
+// processes that start after it, and their first messages are in the log. When nothing that is recorded
+// arrives (the channels leave out HEARTBEAT) it is OK a second after the file opened: nothing is lost.
 
 #include <cstdint>
 #include <optional>
@@ -11,7 +16,7 @@
 namespace ifar::record {
 
 struct RecorderHealth {
-  std::int8_t level = 0;  // heartbeat_t::HEALTH_OK or HEALTH_ERROR
+  std::int8_t level = 0;  // heartbeat_t::HEALTH_OK, HEALTH_DEGRADED (not yet recording) or HEALTH_ERROR
   std::string message;    // empty when OK, else what is wrong
 };
 
@@ -35,6 +40,8 @@ class RecorderWatch {
  private:
   std::int64_t stall_after_us_;
   std::string path_;
+  std::optional<std::int64_t> opened_us_;  // when the first file opened
+  bool recording_ = false;
   std::optional<std::uint64_t> size_;
   bool size_unreadable_ = false;
   std::optional<std::string> exit_;

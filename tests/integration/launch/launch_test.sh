@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # ifar launch as a real process: prefixed output, respawn with back-off, SIGINT then SIGKILL on stop in
 # the reverse of the file's order, a required process that fails ends the launch with exit code 1, a
-# readiness summary after start and on change, a bad launch file exits 2.
+# readiness summary after start and on change, a process listed `after` the recorder starts once it records
+# (its first message is in the log) or after the start wait, a bad launch file exits 2.
 set -euo pipefail
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -76,9 +77,51 @@ grep -q '^launch  *|   crasher  restarting: exited with code 3: cannot open the 
   fail "readiness does not say why crasher restarts"
 [ "$(grep -c 'readiness after' "$work/out")" = 1 ] || fail "readiness summary repeated without a change"
 
+# `after`: the goal is sent once, at once, when it starts; it is in the log only if lcm-logger was
+# already subscribed (it prints its file name before it subscribes). On a port of its own.
+export LCM_DEFAULT_URL="udpm://239.255.76.67:$((7700 + RANDOM % 200))?ttl=0"
+cat > "$work/after.yaml" <<YAML
+processes:
+  - name: recorder
+    command: [ifar, record, --dir, "$work/logs"]
+  - name: goal
+    command: [ifar-goal, '1,2', --id, '7', --repeats, '1']
+    after: [recorder]
+YAML
+ifar launch "$work/after.yaml" --duration 3 --no-colour > "$work/out" 2>&1 || fail "after launch failed"
+grep -q '^launch  *| goal starts when ready: recorder$' "$work/out" || fail "goal does not say what it waits for"
+recording=$(grep -n '^recorder *| ifar record: recording$' "$work/out" | head -1 | cut -d: -f1)
+started=$(grep -n '^launch *| started goal' "$work/out" | head -1 | cut -d: -f1)
+[ -n "$recording" ] && [ -n "$started" ] && [ "$started" -gt "$recording" ] ||
+  fail "goal was not started after the recorder reported recording"
+log=$(ls "$work"/logs/ifar-*.lcmlog* | head -1)
+ifar log-info "$log" > "$work/info" || fail "log-info on $log"
+grep -qE '^GOAL +goal_t +1 ' "$work/info" || { cat "$work/info"; fail "the goal sent at start is not in the log"; }
+
+# A process waited on that never reports ready: the waiting one starts after start_wait_s anyway.
+cat > "$work/wait.yaml" <<'YAML'
+start_wait_s: 1
+processes:
+  - name: quiet
+    command: [sleep, '30']
+  - name: follower
+    command: [bash, -c, 'echo started; sleep 30']
+    after: [quiet]
+YAML
+ifar launch "$work/wait.yaml" --duration 2.5 --no-colour > "$work/out" 2>&1 || fail "wait launch failed"
+grep -q '^launch  *| starting follower after waiting 1.00 s; not ready: quiet$' "$work/out" ||
+  fail "no start after the start wait"
+grep -q '^follower *| started$' "$work/out" || fail "the waiting process did not start"
+unset LCM_DEFAULT_URL
+
 printf 'processes:\n  - name: x\n    comand: [true]\n' > "$work/bad.yaml"
 status=0
 ifar launch "$work/bad.yaml" > "$work/out" 2>&1 || status=$?
 [ $status = 2 ] || fail "bad launch file gave exit code $status, expected 2"
 grep -qF "key 'processes[0].command': missing required key" "$work/out" || fail "bad launch file message"
+printf 'processes:\n  - name: x\n    command: [true]\n    after: [y]\n' > "$work/bad.yaml"
+status=0
+ifar launch "$work/bad.yaml" > "$work/out" 2>&1 || status=$?
+[ $status = 2 ] || fail "an unknown after gave exit code $status, expected 2"
+grep -qF "'y' is not a process listed before x" "$work/out" || fail "unknown after message"
 echo "PASS: ifar launch supervises, respawns, stops, says what is ready and rejects bad files"

@@ -80,3 +80,39 @@ TEST(LaunchConfig, UnsetVariableNamesTheKey)
 }
 
 }  // namespace
+
+TEST(LaunchConfig, AfterNamesEarlierProcessesOnly)
+{
+  const auto root = ifar::common::ConfigNode::loadString(
+      "start_wait_s: 4\n"
+      "processes:\n"
+      "  - name: recorder\n"
+      "    command: [ifar, record]\n"
+      "  - name: planner\n"
+      "    command: [ifar-planner]\n"
+      "    after: [recorder]\n",
+      "test.yaml");
+  const auto spec = ifar::launch::loadLaunchSpec(root, lookupIn({}));
+  EXPECT_EQ(spec.start_wait_s, 4.0);
+  EXPECT_TRUE(spec.processes[0].after.empty());
+  EXPECT_EQ(spec.processes[1].after, (std::vector<std::string>{"recorder"}));
+  for (const char* after : {"[planner]", "[executive]"}) {
+    const auto later = ifar::common::ConfigNode::loadString(std::string("processes:\n"
+                                                                        "  - name: planner\n"
+                                                                        "    command: [ifar-planner]\n"
+                                                                        "    after: ") +
+                                                                after +
+                                                                "\n"
+                                                                "  - name: executive\n"
+                                                                "    command: [ifar-executive]\n",
+                                                            "test.yaml");
+    try {
+      ifar::launch::loadLaunchSpec(later, lookupIn({}));
+      FAIL() << "after " << after << " must be refused";
+    } catch (const ifar::common::ConfigError& error) {
+      const std::string message = error.what();
+      EXPECT_NE(message.find("is not a process listed before planner"), std::string::npos) << message;
+      EXPECT_NE(message.find("after"), std::string::npos) << message;
+    }
+  }
+}

@@ -86,6 +86,25 @@ TEST(Readiness, ABeatFromBeforeARestartDoesNotCount)
   EXPECT_EQ(readiness.summary({ended}, 3 * kSecond).back(), "  planner  ended: exited with code 0");
 }
 
+TEST(Readiness, ReadyOnlyOnARecentOkBeatAndWaitingOnesSayForWhat)
+{
+  Readiness readiness({1.0, 3.0}, 0);
+  const ProcessState recorder = running("recorder", 100, kSecond);
+  EXPECT_FALSE(readiness.ready(recorder, kSecond));
+  readiness.onHeartbeat({100, "recorder", 1, "waiting for lcm-logger to open its log file"}, kSecond);
+  EXPECT_FALSE(readiness.ready(recorder, kSecond));
+  readiness.onHeartbeat({100, "recorder", 0, ""}, 2 * kSecond);
+  EXPECT_TRUE(readiness.ready(recorder, 2 * kSecond));
+  EXPECT_FALSE(readiness.ready(recorder, 6 * kSecond));  // its beats stopped
+  ProcessState planner;
+  planner.name = "planner";
+  planner.waiting_for = "recorder";
+  EXPECT_FALSE(readiness.ready(planner, 2 * kSecond));
+  const std::vector<std::string> lines = readiness.summary({recorder, planner}, 2 * kSecond);
+  ASSERT_EQ(lines.size(), 3U);
+  EXPECT_EQ(lines[2], "  planner   waiting for recorder");
+}
+
 TEST(Readiness, NoSummaryWhenTurnedOff)
 {
   Readiness readiness({0.0, 3.0}, 0);

@@ -110,9 +110,40 @@ TEST(RecorderWatchTest, MessagesBeforeAnyFileOpenedAreAnErrorAfterTheStallTime)
   RecorderWatch watch(kStallUs);
   watch.onMessage(0);
   watch.onMessage(500'000);
-  EXPECT_EQ(watch.health(2'999'999).level, heartbeat_t::HEALTH_OK);
+  EXPECT_EQ(watch.health(2'999'999).level, heartbeat_t::HEALTH_DEGRADED);
+  EXPECT_EQ(watch.health(2'999'999).message, "waiting for lcm-logger to open its log file");
   EXPECT_EQ(watch.health(3'000'000).message,
             "lcm-logger has opened no log file while 2 messages arrived (disk full? logger stuck?)");
+}
+
+TEST(RecorderWatchTest, ReadyOnlyOnceTheFileGrowsAfterAMessageArrived)
+{
+  RecorderWatch watch(kStallUs);
+  EXPECT_EQ(watch.health(0).level, heartbeat_t::HEALTH_DEGRADED);
+  watch.onMessage(50'000);  // the recorder's own first beat, before lcm-logger subscribed
+  watch.onLogFile("logs/a.lcmlog.00", 100'000);
+  watch.onFileSize(0, 100'000);
+  watch.onMessage(200'000);
+  watch.onFileSize(0, 200'000);
+  // Long after the file opened, still not ready while what arrived is not in it.
+  const RecorderHealth waiting = watch.health(2'000'000);
+  EXPECT_EQ(waiting.level, heartbeat_t::HEALTH_DEGRADED);
+  EXPECT_EQ(waiting.message, "waiting for lcm-logger to write its first message to logs/a.lcmlog.00");
+  watch.onFileSize(96, 2'000'000);
+  EXPECT_EQ(watch.health(2'000'000).level, heartbeat_t::HEALTH_OK);
+  // A split's new empty file does not make it wait again.
+  watch.onLogFile("logs/a.lcmlog.01", 3'000'000);
+  watch.onFileSize(0, 3'000'000);
+  EXPECT_EQ(watch.health(3'000'000).level, heartbeat_t::HEALTH_OK);
+}
+
+TEST(RecorderWatchTest, NothingRecordedArrivingIsReadyASecondAfterTheFileOpened)
+{
+  RecorderWatch watch(kStallUs);
+  watch.onLogFile("logs/a.lcmlog.00", 100'000);
+  watch.onFileSize(0, 100'000);
+  EXPECT_EQ(watch.health(1'099'999).level, heartbeat_t::HEALTH_DEGRADED);
+  EXPECT_EQ(watch.health(1'100'000).level, heartbeat_t::HEALTH_OK);
 }
 
 TEST(RecorderWatchTest, AFileThatCannotBeReadIsAnError)
