@@ -179,7 +179,7 @@ double AStarSearch::Query::startArcCost(std::uint32_t from, std::uint32_t arc) c
   // where the robot is: the way back to the waypoint and the approach from it are not paid. Without this a
   // push under way cost about twice the waypoint offset more than every other way at each replan.
   const double cost = arcCost(from, arc);
-  const std::uint32_t interaction = graph_.interaction_[arc];
+  const std::uint32_t interaction = graph_.interactionOf(arc);
   if (interaction == kNoInteraction) {
     return cost;
   }
@@ -338,7 +338,7 @@ inline void AStarSearch::Query::expand(std::uint32_t vertex, SearchResult& resul
   // it was for every other vertex.
   if (scratch_.parent_[vertex] == start_index_) {
     for (std::uint32_t arc = graph_.offsets_[vertex]; arc < graph_.offsets_[vertex + 1]; ++arc) {
-      if (graph_.interaction_[arc] != kNoInteraction) {
+      if (graph_.interactionOf(arc) != kNoInteraction) {
         relax(vertex, graph_.targets_[arc], startArcCost(vertex, arc));
       }
     }
@@ -428,8 +428,8 @@ void AStarSearch::Query::readPath(SearchResult& result) const
     if (index > 0 && chain[index - 1] < count_ && vertex < count_) {
       const std::uint32_t from = chain[index - 1];
       const std::optional<std::uint32_t> taken = arcTaken(from, vertex);
-      if (taken && graph_.interaction_[*taken] != kNoInteraction) {
-        point.interaction = graph_.interaction_[*taken];
+      if (taken && graph_.interactionOf(*taken) != kNoInteraction) {
+        point.interaction = graph_.interactionOf(*taken);
         point.object_id = graph_.interaction_objects_[point.interaction];
         point.push_plan = graph_.interaction_plans_[point.interaction];
       }
@@ -459,7 +459,7 @@ std::optional<std::uint32_t> AStarSearch::Query::arcTaken(std::uint32_t from, st
     const double cost = linked_to_robot ? startArcCost(from, arc) : arcCost(from, arc);
     if (std::abs(scratch_.states_[from].cost + cost - scratch_.states_[vertex].cost) < 1e-9 &&
         (!taken ||
-         (graph_.interaction_[*taken] == kNoInteraction && graph_.interaction_[arc] != kNoInteraction))) {
+         (graph_.interactionOf(*taken) == kNoInteraction && graph_.interactionOf(arc) != kNoInteraction))) {
       taken = arc;  // the first interaction arc that gives the cost, else the first arc that does
     }
   }

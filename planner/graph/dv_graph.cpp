@@ -171,6 +171,16 @@ std::size_t DvGraph::interactionEdgeCount() const
                                                 [](const InteractionEdge& edge) { return edge.alive; }));
 }
 
+void DvGraph::shrinkToFit()
+{
+  vertices_.shrink_to_fit();
+  links_.shrink_to_fit();
+  for (auto& links : links_) {
+    links.shrink_to_fit();
+  }
+  interaction_edges_.shrink_to_fit();
+}
+
 std::size_t DvGraph::memoryBytes() const
 {
   std::size_t bytes = vertices_.capacity() * sizeof(Vertex) +

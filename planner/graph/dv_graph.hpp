@@ -95,6 +95,8 @@ class DvGraph {
   std::size_t interactionEdgeCount() const;
   /// Heap bytes held (vertex slots, adjacency lists, interaction edges), by capacity.
   std::size_t memoryBytes() const;
+  /// Gives back what the arrays hold beyond their contents (a map built once and planned on for long).
+  void shrinkToFit();
 
  private:
   std::vector<Vertex> vertices_;

@@ -136,6 +136,11 @@ ObstacleSet::ObstacleSet(std::vector<ObstacleLoop> loops, std::optional<Bounds> 
     }
     loops_.push_back(std::move(loop));
   }
+  std::size_t corner_count = 0;
+  for (const auto& loop : loops_) {
+    corner_count += loop.vertices.size();
+  }
+  edges_.reserve(corner_count);
   for (const auto& loop : loops_) {
     const std::size_t count = loop.vertices.size();
     for (std::size_t index = 0; index < count; ++index) {

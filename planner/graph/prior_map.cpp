@@ -19,6 +19,7 @@ PriorMap buildPriorMap(const grid_map::GridMap& map, double inflate_radius,
   PriorMap prior{ObstacleSet(std::move(loops), bounds), DvGraph(), BuildStats()};
   prior.stats = addReducedVisibilityGraph(prior.obstacles, prior.graph, nullptr, progress,
                                           std::max(1U, std::thread::hardware_concurrency()));
+  prior.graph.shrinkToFit();
   return prior;
 }
 

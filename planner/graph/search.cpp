@@ -82,6 +82,31 @@ SearchGraph SearchGraph::fromDvGraph(const DvGraph& graph)
 {
   SearchGraph result;
   const auto& slots = graph.vertexSlots();
+  // Sized exactly: a prior map's snapshot holds hundreds of thousands of arcs, and growth by doubling
+  // would leave up to half of each array unused for as long as the map is planned on.
+  std::size_t alive = 0;
+  std::size_t arcs = 0;
+  for (const auto& vertex : slots) {
+    if (vertex.alive) {
+      ++alive;
+      arcs += graph.visibilityLinks(vertex.id).size();
+    }
+  }
+  std::size_t interaction_arcs = 0;
+  for (const auto& edge : graph.interactionEdges()) {
+    interaction_arcs += edge.alive && graph.contains(edge.from) && graph.contains(edge.to) ? 1 : 0;
+  }
+  arcs += interaction_arcs;
+  result.ids_.reserve(alive);
+  result.positions_.reserve(alive);
+  result.previous_.reserve(alive);
+  result.next_.reserve(alive);
+  result.kinds_.reserve(alive);
+  result.targets_.reserve(arcs);
+  result.costs_.reserve(arcs);
+  if (interaction_arcs > 0) {
+    result.interaction_.reserve(arcs);
+  }
   std::vector<std::uint32_t> dense(slots.size(), kNone);
   for (const auto& vertex : slots) {
     if (!vertex.alive) {
@@ -110,7 +135,9 @@ SearchGraph SearchGraph::fromDvGraph(const DvGraph& graph)
     for (const auto& link : graph.visibilityLinks(result.ids_[local])) {
       result.targets_.push_back(dense[link.other]);
       result.costs_.push_back(link.length);
-      result.interaction_.push_back(kNoInteraction);
+      if (interaction_arcs > 0) {
+        result.interaction_.push_back(kNoInteraction);
+      }
     }
     for (const std::uint32_t index : outgoing[local]) {
       const auto& edge = interactions[index];
@@ -135,8 +162,7 @@ SearchGraph SearchGraph::fromDvGraph(const DvGraph& graph)
 SearchGraph SearchGraph::fromCompleteGraph(const DvGraph& graph, const ObstacleSet& obstacles)
 {
   SearchGraph result = fromDvGraph(graph);
-  if (std::any_of(result.interaction_.begin(), result.interaction_.end(),
-                  [](std::uint32_t interaction) { return interaction != kNoInteraction; })) {
+  if (!result.interaction_.empty()) {
     return result;
   }
   // Positions where two or more obstacle vertices meet (outlines that touch, a loop through one point

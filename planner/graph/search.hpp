@@ -48,6 +48,10 @@ class SearchGraph {
  private:
   friend class AStarSearch;
   void buildVertexGrid();
+  std::uint32_t interactionOf(std::uint32_t arc) const
+  {
+    return interaction_.empty() ? kNoInteraction : interaction_[arc];
+  }
   void sortArcsAroundCorners();
 
   std::vector<VertexId> ids_;
@@ -67,7 +71,8 @@ class SearchGraph {
   std::vector<std::uint32_t> offsets_;  // arcs of vertex v: [offsets_[v], offsets_[v + 1])
   std::vector<std::uint32_t> targets_;
   std::vector<double> costs_;
-  std::vector<std::uint32_t> interaction_;  // interaction edge index or kNoInteraction
+  // Per arc, its interaction edge index or kNoInteraction; empty when no arc is a push.
+  std::vector<std::uint32_t> interaction_;
   std::vector<std::int64_t> interaction_objects_;
   std::vector<std::uint32_t> interaction_plans_;
   std::vector<geometry::Point> interaction_contacts_;  // InteractionEdge::contact
