@@ -27,8 +27,8 @@ std::string logLevelProblem(const std::string& level)
   return {};
 }
 
-/// --print-config: the common keys and the daemon's own, as YAML on stdout.
-int printConfig(const DaemonDescription& description, const ConfigNode& config)
+/// The common keys and the daemon's own, as YAML that loads as the daemon's config.
+std::string effectiveConfig(const DaemonDescription& description, const ConfigNode& config)
 {
   const DaemonKeys keys = readDaemonKeys(config);
   std::string text =
@@ -37,6 +37,13 @@ int printConfig(const DaemonDescription& description, const ConfigNode& config)
   if (description.print_config) {
     text += description.print_config(config);
   }
+  return text;
+}
+
+/// --print-config: the effective configuration on stdout.
+int printConfig(const DaemonDescription& description, const ConfigNode& config)
+{
+  const std::string text = effectiveConfig(description, config);
   config.rejectUnknownKeys();
   std::cout << text << std::flush;
   return 0;
@@ -153,7 +160,8 @@ int runDaemon(int argc, char** argv, const DaemonDescription& description,
     if (found) {
       logger->info("configuration {} ({})", found->path, found->origin);
     }
-    DaemonContext context{config, logger, lcm_url.empty() ? keys.lcm_url : lcm_url};
+    DaemonContext context{config, logger, lcm_url.empty() ? keys.lcm_url : lcm_url,
+                          [&description, &config] { return effectiveConfig(description, config); }};
     return body(context);
   } catch (const ConfigError& error) {
     std::cerr << "ifar-" << description.name << ": error: " << error.what() << '\n';

@@ -44,6 +44,8 @@ struct DaemonContext {
   ConfigNode config;
   std::shared_ptr<spdlog::logger> logger;
   std::string lcm_url;  // from --lcm-url, else the config's lcm_url, else "" (LCM_DEFAULT_URL / default)
+  /// What --print-config prints: YAML that loads as this configuration (for the daemon's journal).
+  std::function<std::string()> effective_config;
 };
 
 /// The settings every daemon's config may hold at its top level; "" when not set.

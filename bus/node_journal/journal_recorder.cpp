@@ -62,6 +62,7 @@ std::optional<node_journal_t> JournalRecorder::takeBatch(std::int64_t now_utime)
   batch.first_event = first_event_;
   batch.num_channels = static_cast<std::int16_t>(batch.channels.size());
   batch.num_events = static_cast<std::int32_t>(batch.kinds.size());
+  batch.settings = first_event_ == 0 ? settings_ : std::string();
   first_event_ += batch.num_events;
   batch_.kinds.clear();
   batch_.codes.clear();

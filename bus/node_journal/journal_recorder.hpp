@@ -9,6 +9,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "common/span.hpp"
@@ -29,6 +30,8 @@ class JournalRecorder {
   void jobFinished(std::int64_t stamp);
   /// The node's stop outputs at `utime`.
   void stop(std::int64_t utime);
+  /// The node's own configuration as it runs (YAML), sent with the first batch.
+  void setSettings(std::string yaml) { settings_ = std::move(yaml); }
 
   /// The events since the last batch as one message stamped `now_utime`; nothing when there are none.
   std::optional<node_journal_t> takeBatch(std::int64_t now_utime);
@@ -41,6 +44,7 @@ class JournalRecorder {
   node_journal_t batch_{};  // the header fields and the events not yet taken
   std::map<std::string, std::int16_t> channel_codes_;
   std::int64_t first_event_ = 0;
+  std::string settings_;
 };
 
 }  // namespace ifar::node_journal

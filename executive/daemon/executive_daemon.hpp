@@ -4,6 +4,8 @@
 // test can run it on an in-process bus with a manual clock (tests/replay/node_identity_test.cpp).
 
 #include <memory>
+#include <string>
+#include <utility>
 
 #include <spdlog/spdlog.h>
 
@@ -24,6 +26,8 @@ class ExecutiveDaemon {
   /// Publishes the node's stop outputs (a zero command, the last status again).
   void publishStop();
   const ExecutiveNode& node() const { return node_; }
+  /// The configuration the node runs with (YAML), for the journal's first batch (PlannerDaemon's).
+  void setJournalSettings(std::string yaml) { journal_.recorder().setSettings(std::move(yaml)); }
 
  private:
   void publish(const ExecutiveOutputs& outputs);

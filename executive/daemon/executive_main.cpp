@@ -53,6 +53,7 @@ int runExecutive(ifar::common::DaemonContext& context, const std::string& vehicl
 
   ifar::bus::RunLoop loop(context.lcm_url, context.logger);
   ifar::executive::ExecutiveDaemon daemon(loop, settings, obstacles, vehicle, context.logger);
+  daemon.setJournalSettings(context.effective_config());
   ifar::bus::publishHeartbeats(loop, context.logger->name(), 1.0,
                                [&daemon] { return daemon.node().healthProblem(); });
 

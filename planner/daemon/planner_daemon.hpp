@@ -6,6 +6,8 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
+#include <utility>
 
 #include <spdlog/spdlog.h>
 
@@ -27,6 +29,9 @@ class PlannerDaemon {
   PlannerDaemon& operator=(const PlannerDaemon&) = delete;
 
   const PlannerNode& node() const { return node_; }
+  /// The configuration the node runs with (YAML), for the journal's first batch: a replay-test of the
+  /// log then needs no config of its own for the node.
+  void setJournalSettings(std::string yaml) { journal_.recorder().setSettings(std::move(yaml)); }
 
  private:
   void submit(std::optional<PlannerJob> job);

@@ -42,7 +42,8 @@ int runPlanner(common::DaemonContext& context)
   }
 
   bus::RunLoop loop(context.lcm_url, logger);
-  const PlannerDaemon daemon(loop, node_settings, std::move(planner), logger, WorkerThreading::OwnThread);
+  PlannerDaemon daemon(loop, node_settings, std::move(planner), logger, WorkerThreading::OwnThread);
+  daemon.setJournalSettings(context.effective_config());
   bus::publishHeartbeats(loop, logger->name(), 1.0,
                          [&daemon, &loop] { return daemon.node().healthProblem(loop.now()); });
 

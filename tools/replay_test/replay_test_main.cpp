@@ -55,6 +55,7 @@ struct Options {
   std::vector<std::string> sets;
   double tolerance = 0.0;
   std::optional<std::int64_t> start_utime;
+  bool node_config_from_dir = false;
 };
 
 int fail(int exit_code, const std::string& message)
@@ -63,13 +64,17 @@ int fail(int exit_code, const std::string& message)
   return exit_code;
 }
 
-/// The node's own file from the config directory with the --set overrides, read by the node's loaders into
-/// `request` (the other files as loadRunSettings read them). Throws common::ConfigError.
-void applyNodeFile(const Options& options, ifar::runner::RunRequest& request)
+/// The node's own configuration with the --set overrides, read by the node's loaders into `request` (the
+/// other files as loadRunSettings read them): `journal_settings` when given (what the daemon ran with), else
+/// its file in the config directory. Throws common::ConfigError.
+void applyNodeFile(const Options& options, ifar::runner::RunRequest& request,
+                   const std::string& journal_settings = {}, const std::string& journal_name = {})
 {
   const std::string file = options.node == "planner" ? "planner.yaml" : "executive.yaml";
   ifar::common::ConfigNode root =
-      ifar::common::ConfigNode::loadFile((std::filesystem::path(options.config_dir) / file).string());
+      journal_settings.empty()
+          ? ifar::common::ConfigNode::loadFile((std::filesystem::path(options.config_dir) / file).string())
+          : ifar::common::ConfigNode::loadString(journal_settings, journal_name);
   for (const std::string& assignment : options.sets) {
     const std::size_t equals = assignment.find('=');
     if (equals == std::string::npos || equals == 0) {
@@ -216,6 +221,22 @@ int run(const Options& options)
                                        ") is logged from event " + std::to_string(first_batch->first_event) +
                                        " on; record from before the node starts");
   }
+  // The daemon's own configuration, as its journal states it, unless asked for the directory's.
+  std::string settings_origin = (std::filesystem::path(options.config_dir) /
+                                 (options.node == "planner" ? "planner.yaml" : "executive.yaml"))
+                                    .string();
+  if (first_batch && !first_batch->settings.empty() && !options.node_config_from_dir) {
+    settings_origin = "the " + options.node + "'s journal";
+    try {
+      applyNodeFile(options, request, first_batch->settings, settings_origin + " in " + options.log);
+    } catch (const ifar::common::ConfigError& error) {
+      return fail(kBadInputExitCode,
+                  std::string(error.what()) + " (--node-config-from-dir reads " + options.config_dir + "'s)");
+    }
+  }
+  if (!options.sets.empty()) {
+    settings_origin += " with --set";
+  }
   const std::int64_t origin = request.sim.simulator.epoch_utime;
   std::int64_t start_utime = first_utime;
   std::string start_reason =
@@ -335,9 +356,11 @@ int run(const Options& options)
                                        "'s outputs (" + channelList(outputs) + ") to compare with");
   }
 
-  std::printf("ifar replay-test: %s on %s: %lld inputs replayed from %s s, timers from %s%s\n",
-              options.node.c_str(), options.log.c_str(), static_cast<long long>(inputs_delivered),
-              secondsText(start_utime - first_utime).c_str(), start_reason.c_str(), replayed_part.c_str());
+  std::printf(
+      "ifar replay-test: %s on %s: %lld inputs replayed from %s s, timers from %s%s; settings from %s\n",
+      options.node.c_str(), options.log.c_str(), static_cast<long long>(inputs_delivered),
+      secondsText(start_utime - first_utime).c_str(), start_reason.c_str(), replayed_part.c_str(),
+      settings_origin.c_str());
   ifar::replay_test::ComparisonSettings settings;
   settings.tolerance = options.tolerance;
   settings.ignored = kWallClockMembers;
@@ -401,8 +424,12 @@ int main(int argc, char** argv)
       ->capture_default_str();
   app.add_option(
       "--set", options.sets,
-      "KEY=VALUE: a key of the node's file (planner.yaml or executive.yaml) replaced, checked like the "
-      "file's own (repeatable); e.g. --set interaction.enabled=false for a log of ifar run --no-interaction");
+      "KEY=VALUE: a key of the node's configuration replaced, checked like the file's own (repeatable); e.g. "
+      "--set interaction.enabled=false for a log of ifar run --no-interaction");
+  app.add_flag(
+      "--node-config-from-dir", options.node_config_from_dir,
+      "the node's own file (planner.yaml or executive.yaml) from --config-dir even when the log holds "
+      "the daemon's journal, whose first batch states the configuration it ran with");
   app.add_option("--tolerance", options.tolerance,
                  "largest difference of a real member that counts as the same")
       ->check(ifar::common::atLeast(0.0))

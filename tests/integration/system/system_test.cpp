@@ -317,10 +317,12 @@ TEST_F(SystemTest, DemoArrivesAfterPushingTheBox)
   EXPECT_GE(run.last_status->pushes, 1) << "the vehicle arrived without pushing the box";
   EXPECT_GE(run.max_push_plans, 1) << "no GLOBAL_PATH carried a push plan";
 
-  // The demo's own log as a regression test: each node replayed by its journal gives what it published.
-  const std::string port = "daemon.data_port=23781";  // the planner ran with the test's lidar port
-  const ReplayTestRun planner = replayTest(log, {"--node", "planner", "--set", port});
+  // The demo's own log as a regression test: each node replayed by its journal gives what it published,
+  // with the configuration the journal states (the planner ran on the test's lidar port, 23781).
+  const ReplayTestRun planner = replayTest(log, {"--node", "planner"});
   EXPECT_EQ(planner.exit_code, 0) << planner.output;
+  EXPECT_NE(planner.output.find("settings from the planner's journal\n"), std::string::npos)
+      << planner.output;
   EXPECT_TRUE(sameCountAndSame(planner.output, "GLOBAL_PATH", 500)) << planner.output;
   EXPECT_TRUE(sameCountAndSame(planner.output, "DV_GRAPH", 50)) << planner.output;
   EXPECT_NE(planner.output.find("timers from the planner's journal on PLANNER_JOURNAL"), std::string::npos)
@@ -329,9 +331,12 @@ TEST_F(SystemTest, DemoArrivesAfterPushingTheBox)
   EXPECT_EQ(executive.exit_code, 0) << executive.output;
   EXPECT_TRUE(sameCountAndSame(executive.output, "VELOCITY_CMD", 1000)) << executive.output;
   const ReplayTestRun changed =
-      replayTest(log, {"--node", "planner", "--set", port, "--set", "interaction.reference_force_n=50"});
+      replayTest(log, {"--node", "planner", "--set", "interaction.reference_force_n=50"});
   EXPECT_EQ(changed.exit_code, 1) << changed.output;
   EXPECT_NE(changed.output.find("\ndifferent: "), std::string::npos) << changed.output;
+  // The repository's planner.yaml listens on the default lidar port: the replay cannot find its packets.
+  const ReplayTestRun from_directory = replayTest(log, {"--node", "planner", "--node-config-from-dir"});
+  EXPECT_NE(from_directory.exit_code, 0) << from_directory.output;
 }
 
 TEST_F(SystemTest, HeavyBoxIsMarkedUnpushableAndTheVehicleGoesAround)

@@ -79,3 +79,20 @@ TEST(JournalRecorder, BatchesHoldTheEventsInOrderNumberedFromTheStart)
 }
 
 }  // namespace
+
+TEST(JournalRecorder, TheFirstBatchAloneCarriesTheSettings)
+{
+  ifar::node_journal::JournalRecorder recorder("executive", 5'000'000, 12);
+  recorder.setSettings("log_level: \"\"\nrate_hz: 20\n");
+  EXPECT_FALSE(recorder.takeBatch(5'000'001).has_value()) << "settings alone make no batch";
+  recorder.timer(0, 5'050'000);
+  const auto first = recorder.takeBatch(5'250'000);
+  ASSERT_TRUE(first.has_value());
+  EXPECT_EQ(first->first_event, 0);
+  EXPECT_EQ(first->settings, "log_level: \"\"\nrate_hz: 20\n");
+  recorder.timer(0, 5'300'000);
+  const auto second = recorder.takeBatch(5'500'000);
+  ASSERT_TRUE(second.has_value());
+  EXPECT_EQ(second->first_event, 1);
+  EXPECT_EQ(second->settings, "");
+}
