@@ -29,18 +29,6 @@ std::vector<const ResultRow*> drivenRows(const std::vector<ResultRow>& rows, con
   return selected;
 }
 
-std::vector<std::string> profiles(const std::vector<ResultRow>& rows)
-{
-  std::vector<std::string> names;
-  for (const ResultRow& row : rows) {
-    if (driven(row) && std::find(names.begin(), names.end(), row.sensing) == names.end()) {
-      names.push_back(row.sensing);
-    }
-  }
-  std::stable_partition(names.begin(), names.end(), [](const std::string& name) { return name == "ideal"; });
-  return names;
-}
-
 bool reachable(const ResultRow& row)
 {
   return std::isfinite(row.achievable);
@@ -145,7 +133,7 @@ std::string verdict(bool measured, bool met)
 
 std::string tableGeneralization(const std::vector<ResultRow>& rows)
 {
-  const std::vector<std::string> sensing = profiles(rows);
+  const std::vector<std::string> sensing = sensingProfiles(rows);
   std::string text;
   for (const std::string kind : kKinds) {
     for (const std::string& profile : sensing) {
@@ -277,7 +265,7 @@ std::string generalizationTargets(const std::vector<ResultRow>& rows)
   int runs = 0;
   for (const std::string kind : kKinds) {
     for (const std::string planner : {"far", "ours"}) {
-      for (const std::string& profile : profiles(rows)) {
+      for (const std::string& profile : sensingProfiles(rows)) {
         const Summary summary = summarize(drivenRows(rows, kind, planner, profile));
         time_limit += summary.time_limit;
         runs += summary.runs;

@@ -31,6 +31,19 @@ double successWeightedByPathLength(bool success, double optimal, double length)
   return optimal / std::max(length, optimal);
 }
 
+std::vector<std::string> sensingProfiles(const std::vector<ResultRow>& rows)
+{
+  std::vector<std::string> profiles;
+  for (const ResultRow& row : rows) {
+    if (row.table == "system" && std::find(profiles.begin(), profiles.end(), row.sensing) == profiles.end()) {
+      profiles.push_back(row.sensing);
+    }
+  }
+  std::stable_partition(profiles.begin(), profiles.end(),
+                        [](const std::string& name) { return name == "ideal"; });
+  return profiles;
+}
+
 std::string toJsonLine(const ResultRow& row)
 {
   std::string line = "{";

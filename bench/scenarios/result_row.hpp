@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "system/loss_accounting.hpp"
 
@@ -48,6 +49,9 @@ struct ResultRow {
 /// Success weighted by path length for one episode: success x optimal / max(length, optimal); 0 for a
 /// failure, an unknown length or a non-positive optimum.
 double successWeightedByPathLength(bool success, double optimal, double length);
+
+/// The sensing profiles of the system rows, "ideal" first, then in the order they appear (empty: none).
+std::vector<std::string> sensingProfiles(const std::vector<ResultRow>& rows);
 
 /// The row as one JSON object on one line (no trailing newline). Keys in a fixed order; non-finite
 /// numbers are written as null; strings escaped per RFC 8259.

@@ -54,17 +54,10 @@ std::vector<const ResultRow*> select(const std::vector<ResultRow>& rows, const s
   return selected;
 }
 
-/// The sensing profiles of the system rows, "ideal" first, then in the order they appear.
-std::vector<std::string> sensingProfiles(const std::vector<ResultRow>& rows)
+/// The sensing profiles of the system rows (sensingProfiles), "ideal" alone when there are none.
+std::vector<std::string> tableProfiles(const std::vector<ResultRow>& rows)
 {
-  std::vector<std::string> profiles;
-  for (const ResultRow& row : rows) {
-    if (row.table == "system" && std::find(profiles.begin(), profiles.end(), row.sensing) == profiles.end()) {
-      profiles.push_back(row.sensing);
-    }
-  }
-  std::stable_partition(profiles.begin(), profiles.end(),
-                        [](const std::string& name) { return name == "ideal"; });
+  std::vector<std::string> profiles = sensingProfiles(rows);
   if (profiles.empty()) {
     profiles.emplace_back("ideal");
   }
@@ -252,7 +245,7 @@ std::string sensingTargets(const std::vector<ResultRow>& rows)
   text += "| no push held at maximum force past the tactile window + 2 s undecided (" +
           std::to_string(driven) + " driven runs) | " + std::to_string(undecided) + " | " +
           (undecided == 0 ? "met" : "missed") + " |\n";
-  const std::vector<std::string> profiles = sensingProfiles(rows);
+  const std::vector<std::string> profiles = tableProfiles(rows);
   if (std::find(profiles.begin(), profiles.end(), "field") == profiles.end()) {
     return text;
   }
@@ -346,7 +339,7 @@ std::string tableTwoSpl(const std::vector<ResultRow>& rows, const std::optional<
   if (stricter && runner) {
     variants.push_back({" (driven, arrived within " + stricter->describe() + ")", false, stricter});
   }
-  for (const std::string& sensing : sensingProfiles(rows)) {
+  for (const std::string& sensing : tableProfiles(rows)) {
     for (const DrivenVariant& variant : variants) {
       for (const std::string planner : {"far", "ours"}) {
         std::string label = "| " + planner + variant.label;
@@ -398,7 +391,7 @@ std::string tableThreeSystem(const std::vector<ResultRow>& rows)
   }
   text += "\n" + rule + "\n";
   const bool runner = anyRunnerRows(rows);
-  for (const std::string& sensing : sensingProfiles(rows)) {
+  for (const std::string& sensing : tableProfiles(rows)) {
     for (const std::string planner : {"far", "ours"}) {
       text += "| " + planner + (sensing == "ideal" ? std::string() : " (" + sensing + ")") + " |";
       for (const std::string& kind : kinds) {
@@ -432,7 +425,7 @@ std::string tableLosses(const std::vector<ResultRow>& rows)
   int accounted = 0;
   for (const ScenarioKind kind : allKinds()) {
     std::string body;
-    for (const std::string& sensing : sensingProfiles(rows)) {
+    for (const std::string& sensing : tableProfiles(rows)) {
       for (const std::string planner : {"far", "ours"}) {
         std::vector<const ResultRow*> selected;
         for (const ResultRow* row : select(rows, "system", planner, kindName(kind), sensing)) {
@@ -491,7 +484,7 @@ std::string tablePlannerFrames(const std::vector<ResultRow>& rows, int parallel_
                      " on the machine's cores): median of the runs' medians / worst run's p99 / longest "
                      "frame; in brackets the longest interaction stage (no frame budget in the runner).\n\n";
   text += header("planner");
-  for (const std::string& sensing : sensingProfiles(rows)) {
+  for (const std::string& sensing : tableProfiles(rows)) {
     for (const std::string planner : {"far", "ours"}) {
       text += "| " + planner + (sensing == "ideal" ? std::string() : " (" + sensing + ")") + " |";
       for (const ScenarioKind kind : allKinds()) {
