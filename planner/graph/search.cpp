@@ -92,21 +92,11 @@ SearchGraph SearchGraph::fromDvGraph(const DvGraph& graph)
       arcs += graph.visibilityLinks(vertex.id).size();
     }
   }
-  std::size_t interaction_arcs = 0;
-  for (const auto& edge : graph.interactionEdges()) {
-    interaction_arcs += edge.alive && graph.contains(edge.from) && graph.contains(edge.to) ? 1 : 0;
-  }
-  arcs += interaction_arcs;
   result.ids_.reserve(alive);
   result.positions_.reserve(alive);
   result.previous_.reserve(alive);
   result.next_.reserve(alive);
   result.kinds_.reserve(alive);
-  result.targets_.reserve(arcs);
-  result.costs_.reserve(arcs);
-  if (interaction_arcs > 0) {
-    result.interaction_.reserve(arcs);
-  }
   std::vector<std::uint32_t> dense(slots.size(), kNone);
   for (const auto& vertex : slots) {
     if (!vertex.alive) {
@@ -123,11 +113,19 @@ SearchGraph SearchGraph::fromDvGraph(const DvGraph& graph)
   // Interaction edges grouped by their tail vertex.
   std::vector<std::vector<std::uint32_t>> outgoing(result.ids_.size());
   const auto& interactions = graph.interactionEdges();
+  std::size_t interaction_arcs = 0;
   for (std::uint32_t index = 0; index < interactions.size(); ++index) {
     const auto& edge = interactions[index];
     if (edge.alive && graph.contains(edge.from) && graph.contains(edge.to)) {
       outgoing[dense[edge.from]].push_back(index);
+      ++interaction_arcs;
     }
+  }
+  arcs += interaction_arcs;
+  result.targets_.reserve(arcs);
+  result.costs_.reserve(arcs);
+  if (interaction_arcs > 0) {
+    result.interaction_.reserve(arcs);
   }
   result.offsets_.reserve(result.ids_.size() + 1);
   result.offsets_.push_back(0);

@@ -64,17 +64,23 @@ int fail(int exit_code, const std::string& message)
   return exit_code;
 }
 
+/// The node's own file in the config directory.
+std::string nodeFile(const Options& options)
+{
+  return (std::filesystem::path(options.config_dir) /
+          (options.node == "planner" ? "planner.yaml" : "executive.yaml"))
+      .string();
+}
+
 /// The node's own configuration with the --set overrides, read by the node's loaders into `request` (the
 /// other files as loadRunSettings read them): `journal_settings` when given (what the daemon ran with), else
 /// its file in the config directory. Throws common::ConfigError.
 void applyNodeFile(const Options& options, ifar::runner::RunRequest& request,
                    const std::string& journal_settings = {}, const std::string& journal_name = {})
 {
-  const std::string file = options.node == "planner" ? "planner.yaml" : "executive.yaml";
-  ifar::common::ConfigNode root =
-      journal_settings.empty()
-          ? ifar::common::ConfigNode::loadFile((std::filesystem::path(options.config_dir) / file).string())
-          : ifar::common::ConfigNode::loadString(journal_settings, journal_name);
+  ifar::common::ConfigNode root = journal_settings.empty()
+                                      ? ifar::common::ConfigNode::loadFile(nodeFile(options))
+                                      : ifar::common::ConfigNode::loadString(journal_settings, journal_name);
   for (const std::string& assignment : options.sets) {
     const std::size_t equals = assignment.find('=');
     if (equals == std::string::npos || equals == 0) {
@@ -222,9 +228,7 @@ int run(const Options& options)
                                        " on; record from before the node starts");
   }
   // The daemon's own configuration, as its journal states it, unless asked for the directory's.
-  std::string settings_origin = (std::filesystem::path(options.config_dir) /
-                                 (options.node == "planner" ? "planner.yaml" : "executive.yaml"))
-                                    .string();
+  std::string settings_origin = nodeFile(options);
   if (first_batch && !first_batch->settings.empty() && !options.node_config_from_dir) {
     settings_origin = "the " + options.node + "'s journal";
     try {
