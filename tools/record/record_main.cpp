@@ -8,6 +8,7 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -43,6 +44,9 @@ struct RecordOptions {
   std::string channels = ".*";
   std::string lcm_url;
   double stall_seconds = 3.0;
+  // Several seconds of the whole bus (about 1.1 MB/s with a VLP-16): a logger held up by a busy CPU or disk
+  // catches up instead of losing what the daemons took.
+  double receive_buffer_mb = 4.0;
 };
 
 int fail(const std::string& message)
@@ -138,16 +142,16 @@ int record(const RecordOptions& options)
   if (error) {
     return fail("cannot create the log folder '" + options.directory + "': " + error.message());
   }
-  if (!options.lcm_url.empty()) {
-    setenv("LCM_DEFAULT_URL", options.lcm_url.c_str(), 1);  // lcm-logger's URL too
-  }
+  const std::string url = ifar::record::loggerUrl(ifar::bus::resolveLcmUrl(options.lcm_url),
+                                                  std::lround(options.receive_buffer_mb * 1024.0 * 1024.0));
+  setenv("LCM_DEFAULT_URL", url.c_str(), 1);  // lcm-logger's URL
   ifar::record::LoggerRequest request;
   request.file_pattern = (std::filesystem::path(options.directory) / options.name_pattern).string();
   request.channels = options.channels;
   request.split_mb = options.split_mb;
   request.rotate = options.rotate;
   // The run loop first: it blocks SIGINT/SIGTERM before LCM's threads start; lcm-logger unblocks them.
-  ifar::bus::RunLoop loop(options.lcm_url, spdlog::stderr_logger_mt("record"));
+  ifar::bus::RunLoop loop(url, spdlog::stderr_logger_mt("record"));
   ifar::record::LoggerProcess logger(ifar::record::loggerArguments(request));
   if (!logger.startError().empty()) {
     return fail(logger.startError() + " (install liblcm-bin; scripts/setup does)");
@@ -155,8 +159,9 @@ int record(const RecordOptions& options)
   Recorder recorder(loop, logger, options);
   std::fprintf(
       stderr,
-      "ifar record: logging channels '%s' to %s (%s); heartbeat \"%s\" on HEARTBEAT; stop with Ctrl-C\n",
-      options.channels.c_str(), request.file_pattern.c_str(),
+      "ifar record: logging channels '%s' on %s to %s (%s); heartbeat \"%s\" on HEARTBEAT; stop with "
+      "Ctrl-C\n",
+      options.channels.c_str(), url.c_str(), request.file_pattern.c_str(),
       options.rotate > 0 ? ("rotating " + std::to_string(options.rotate) + " files").c_str() : "numbered",
       kProcessName);
   loop.run();
@@ -193,6 +198,11 @@ int main(int argc, char** argv)
       ->check(ifar::common::atLeast(0.2))
       ->capture_default_str();
   app.add_option("--lcm-url", options.lcm_url, "LCM URL (default: LCM_DEFAULT_URL or LCM's default)");
+  app.add_option("--receive-buffer-mb", options.receive_buffer_mb,
+                 "kernel receive buffer lcm-logger asks for on a udpm:// URL without recv_buf_size (0 = the "
+                 "system's default; net.core.rmem_max caps it, and LCM says so)")
+      ->check(ifar::common::atLeast(0.0))
+      ->capture_default_str();
   if (const auto exit_code = ifar::common::parseCommandLine(app, argc, argv)) {
     return *exit_code;
   }
