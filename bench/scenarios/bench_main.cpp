@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <ctime>
 #include <filesystem>
@@ -107,7 +108,8 @@ std::string utcNow()
 
 scenarios::ResultRow systemRow(scenarios::ScenarioKind kind, const std::string& world,
                                const scenarios::Task& task, const std::string& planner,
-                               const std::string& sensing, const scenarios::SystemRun& run)
+                               const std::string& sensing, std::uint64_t sensing_seed,
+                               const scenarios::SystemRun& run)
 {
   scenarios::ResultRow row;
   row.table = "system";
@@ -128,6 +130,7 @@ scenarios::ResultRow systemRow(scenarios::ScenarioKind kind, const std::string& 
   row.frame_max_ms = run.frame_max_ms;
   row.interaction_max_ms = run.interaction_max_ms;
   row.sensing = sensing;
+  row.sensing_seed = static_cast<int>(sensing_seed);
   row.undecided_saturated_pushes = run.undecided_saturated_pushes;
   row.escalations = run.escalations;
   row.excess_m = run.excess_m;
@@ -150,12 +153,13 @@ scenarios::ResultRow systemRow(scenarios::ScenarioKind kind, const std::string& 
 
 scenarios::ResultRow skippedRow(scenarios::ScenarioKind kind, const std::string& world,
                                 const scenarios::Task& task, const std::string& planner,
-                                const std::string& sensing)
+                                const std::string& sensing, std::uint64_t sensing_seed)
 {
   scenarios::ResultRow row;
   row.table = "system";
   row.planner = planner;
   row.sensing = sensing;
+  row.sensing_seed = static_cast<int>(sensing_seed);
   row.kind = scenarios::kindName(kind);
   row.world = world;
   row.task = task.id;
@@ -181,7 +185,9 @@ struct SystemJob {
 struct SystemSlot {
   std::size_t job;  // index into the jobs
   std::string sensing;
-  bool ours;  // false: FAR mode
+  std::uint64_t sensing_seed;
+  bool first_draw;  // the first of the profile's sensing seeds (the one the plots show)
+  bool ours;        // false: FAR mode
   scenarios::SystemRun run;
   bool skipped;  // the --system-budget was spent before it started
 };
@@ -220,6 +226,8 @@ int main(int argc, char** argv)
   std::string system_kind_list =
       "office,tunnel,room_objects,willow,room,blocked_office,blocked_tunnel,namosim,willow_pairs";
   std::string sensing_list = "ideal,field";
+  std::string sensing_seed_list;
+  std::string system_planner_list = "far,ours";
   int system_tasks = 3;
   scenarios::SimTimeBudget budget;  // the runner's stop: 60 s + 4 s/m, at most 1,800 s
   double strict_per_metre_s = 2.0;
@@ -281,6 +289,13 @@ int main(int argc, char** argv)
          "--sensing", sensing_list,
          "comma-separated sensing profiles every driven task is run under (sim.yaml sensing:): ideal, "
          "field")
+      ->capture_default_str();
+  app.add_option("--sensing-seeds", sensing_seed_list,
+                 "comma-separated seeds the sensor models draw from; every driven task is run once per seed "
+                 "under each profile that draws random numbers (field), once under one that draws none "
+                 "(ideal). Empty: sim.yaml's seed. The worlds and tasks stay those of --seed")
+      ->capture_default_str();
+  app.add_option("--system-planners", system_planner_list, "comma-separated modes driven: far, ours")
       ->capture_default_str();
   app.add_option("--system-tasks", system_tasks, "the first N tasks of each kind are driven")
       ->check(CLI::NonNegativeNumber)
@@ -389,6 +404,26 @@ int main(int argc, char** argv)
   if (sensing_profiles.empty()) {
     std::cerr << "ifar bench: --sensing: name at least one profile\n";
     return 1;
+  }
+  const std::vector<std::string> system_planners = splitList(system_planner_list);
+  for (const std::string& planner : system_planners) {
+    if (planner != "far" && planner != "ours") {
+      std::cerr << "ifar bench: --system-planners: unknown mode '" << planner << "' (far, ours)\n";
+      return 1;
+    }
+  }
+  const auto drives = [&system_planners](const char* planner) {
+    return std::find(system_planners.begin(), system_planners.end(), planner) != system_planners.end();
+  };
+  std::vector<std::uint64_t> sensing_seeds;
+  for (const std::string& text : splitList(sensing_seed_list)) {
+    char* end = nullptr;
+    const unsigned long long value = std::strtoull(text.c_str(), &end, 10);
+    if (text.empty() || *end != '\0' || value == 0 || value > 2147483647ULL || text.front() == '-') {
+      std::cerr << "ifar bench: --sensing-seeds: '" << text << "' is not a seed from 1 to 2147483647\n";
+      return 1;
+    }
+    sensing_seeds.push_back(value);
   }
 
   ifar::common::VehicleSettings vehicle;
@@ -581,10 +616,21 @@ int main(int argc, char** argv)
   // Every (task, mode) run is independent and deterministic in simulated time: they start in order, and
   // the rows keep that order whatever finishes first.
   std::vector<SystemSlot> slots;
-  for (const std::string& sensing : sensing_profiles) {
-    for (std::size_t job = 0; job < jobs.size(); ++job) {
-      for (const bool ours : {false, true}) {
-        slots.push_back({job, sensing, ours, {}, false});
+  for (const std::string& sensing : runner ? sensing_profiles : std::vector<std::string>{}) {
+    std::vector<std::uint64_t> draws = sensing_seeds;
+    if (draws.empty()) {
+      draws.push_back(runner->configuredSensingSeed());
+    }
+    if (!runner->drawsFromSeed(sensing)) {
+      draws.resize(1);  // exact sensors: every seed drives the same run
+    }
+    for (std::size_t draw = 0; draw < draws.size(); ++draw) {
+      for (std::size_t job = 0; job < jobs.size(); ++job) {
+        for (const bool ours : {false, true}) {
+          if (drives(ours ? "ours" : "far")) {
+            slots.push_back({job, sensing, draws[draw], draw == 0, ours, {}, false});
+          }
+        }
       }
     }
   }
@@ -597,7 +643,7 @@ int main(int argc, char** argv)
     const SystemSlot& slot = slots[index];
     const SystemJob& job = jobs[slot.job];
     return scenarios::toAnswer(runner->run(kept[job.world].world, job.task, slot.ours, slot.sensing,
-                                           budget.seconds(job.task.budgetLength())));
+                                           slot.sensing_seed, budget.seconds(job.task.budgetLength())));
   };
   // Wall time: on a quiet machine the runner runs several times faster than simulated time, but on cores
   // shared with other work it runs up to about twice slower; three times the simulated cap leaves only a
@@ -627,12 +673,13 @@ int main(int argc, char** argv)
       slot.run.failure_status = outcome.answered ? "error" : outcome.status;
       slot.run.reason = "runner " + (outcome.answered ? "answer could not be read" : outcome.reason);
     }
-    const scenarios::ResultRow row = systemRow(job.kind, kept[job.world].name, job.task,
-                                               slot.ours ? "ours" : "far", slot.sensing, slot.run);
+    const scenarios::ResultRow row =
+        systemRow(job.kind, kept[job.world].name, job.task, slot.ours ? "ours" : "far", slot.sensing,
+                  slot.sensing_seed, slot.run);
     std::cerr << scenarios::kindName(job.kind) << " " << kept[job.world].name << " " << job.task.id << " "
-              << row.planner << " (" << slot.sensing << "): " << row.status << " " << row.reason << " ("
-              << slot.run.distance_m << " m, " << slot.run.sim_time_s << " s simulated, "
-              << slot.run.wall_time_s << " s wall)\n";
+              << row.planner << " (" << slot.sensing << ", sensing seed " << slot.sensing_seed
+              << "): " << row.status << " " << row.reason << " (" << slot.run.distance_m << " m, "
+              << slot.run.sim_time_s << " s simulated, " << slot.run.wall_time_s << " s wall)\n";
   };
   scenarios::runForked(runs);
   std::map<std::size_t, std::vector<scenarios::PathPair>> driven_pairs;  // kept world -> trajectories
@@ -646,13 +693,15 @@ int main(int argc, char** argv)
       }
       const std::string planner = slot.ours ? "ours" : "far";
       if (slot.skipped) {
-        rows.push_back(skippedRow(job.kind, kept[job.world].name, job.task, planner, slot.sensing));
+        rows.push_back(
+            skippedRow(job.kind, kept[job.world].name, job.task, planner, slot.sensing, slot.sensing_seed));
         ++skipped;
         continue;
       }
-      rows.push_back(systemRow(job.kind, kept[job.world].name, job.task, planner, slot.sensing, slot.run));
-      if (slot.sensing != sensing_profiles.front()) {
-        continue;  // the plots show the trajectories of the first profile
+      rows.push_back(systemRow(job.kind, kept[job.world].name, job.task, planner, slot.sensing,
+                               slot.sensing_seed, slot.run));
+      if (slot.sensing != sensing_profiles.front() || !slot.first_draw) {
+        continue;  // the plots show the trajectories of the first profile's first draw
       }
       std::vector<ifar::geometry::Point>& line = slot.ours ? pair.ours : pair.far;
       for (const ifar::geometry::Pose2& pose : slot.run.trajectory) {

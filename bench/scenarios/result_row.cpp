@@ -69,6 +69,7 @@ std::string toJsonLine(const ResultRow& row)
     line += ", \"frame_max_ms\": " + number(row.frame_max_ms);
     line += ", \"interaction_max_ms\": " + number(row.interaction_max_ms);
     line += ", \"sensing\": " + common::jsonString(row.sensing);
+    line += ", \"sensing_seed\": " + std::to_string(row.sensing_seed);
     line += ", \"undecided_saturated_pushes\": " + std::to_string(row.undecided_saturated_pushes);
     line += ", \"escalations\": " + std::to_string(row.escalations);
     line += ", \"excess_m\": " + number(row.excess_m);
@@ -108,6 +109,7 @@ void rowFields(Fields& fields, Row& row)
   fields.field(row.frame_max_ms);
   fields.field(row.interaction_max_ms);
   fields.field(row.sensing);
+  fields.field(row.sensing_seed);
   fields.field(row.undecided_saturated_pushes);
   fields.field(row.escalations);
   fields.field(row.excess_m);

@@ -38,6 +38,7 @@ struct ResultRow {
   // System rows: the simulator's sensing profile (sim.yaml sensing:, "ideal" or "field"), and the pushes
   // held at maximum force past the tactile monitor's window without a decision (runner::RunSummary).
   std::string sensing = "ideal";
+  int sensing_seed = 1;  // the seed the sensor models drew from (sim.yaml's, or the bench's --sensing-seeds)
   int undecided_saturated_pushes = 0;
   int escalations = 0;  // system rows: the progress monitor's escalations (runner::RunSummary)
   // System rows: the distance driven beyond the achievable way (travelled - (achievable - left at the

@@ -5,6 +5,7 @@
 // (system_runs_unavailable.cpp), so Tables II and III always come out of the same command.
 
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -68,10 +69,17 @@ class SystemRunner {
 
   /// Drives from task.start to task.goal in `world` (its start and goals replaced by the task's) for at
   /// most `max_sim_time_s` simulated seconds under the sensing profile `sensing` (one of the
-  /// constructor's). `interaction_enabled` false is FAR mode. Safe to call from several threads at
-  /// once.
+  /// constructor's), its sensor models drawing from `sensing_seed` (nullopt: sim.yaml's seed).
+  /// `interaction_enabled` false is FAR mode. Safe to call from several threads at once.
   SystemRun run(const sim::World& world, const Task& task, bool interaction_enabled,
-                const std::string& sensing, double max_sim_time_s) const;
+                const std::string& sensing, std::optional<std::uint64_t> sensing_seed,
+                double max_sim_time_s) const;
+
+  /// The seed sim.yaml gives the sensor models.
+  std::uint64_t configuredSensingSeed() const;
+  /// False when the profile's sensor models draw nothing from the seed (every seed drives the same run),
+  /// or when `sensing` is not one of the constructor's.
+  bool drawsFromSeed(const std::string& sensing) const;
 
  private:
   struct Settings;

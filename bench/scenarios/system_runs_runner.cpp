@@ -41,8 +41,20 @@ SystemRunner::SystemRunner(const std::string& config_dir, const std::vector<std:
 
 SystemRunner::~SystemRunner() = default;
 
+std::uint64_t SystemRunner::configuredSensingSeed() const
+{
+  return settings_->requests.empty() ? 1 : settings_->requests.begin()->second.sim.simulator.seed;
+}
+
+bool SystemRunner::drawsFromSeed(const std::string& sensing) const
+{
+  const auto settings = settings_->requests.find(sensing);
+  return settings != settings_->requests.end() && settings->second.sim.simulator.sensing.drawsRandomNumbers();
+}
+
 SystemRun SystemRunner::run(const sim::World& world, const Task& task, bool interaction_enabled,
-                            const std::string& sensing, double max_sim_time_s) const
+                            const std::string& sensing, std::optional<std::uint64_t> sensing_seed,
+                            double max_sim_time_s) const
 {
   SystemRun run;
   const auto settings = settings_->requests.find(sensing);
@@ -55,6 +67,9 @@ SystemRun SystemRunner::run(const sim::World& world, const Task& task, bool inte
   request.goal = task.goal;
   request.planner.interaction_enabled = interaction_enabled;
   request.max_sim_time_s = max_sim_time_s;
+  if (sensing_seed) {
+    request.sim.simulator.seed = *sensing_seed;
+  }
   run.ran = true;
   try {
     const runner::RunSummary summary = runner::runScenario(request, {});

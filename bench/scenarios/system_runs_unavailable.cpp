@@ -22,8 +22,19 @@ SystemRunner::SystemRunner(const std::string& /*config_dir*/,
 
 SystemRunner::~SystemRunner() = default;
 
+std::uint64_t SystemRunner::configuredSensingSeed() const
+{
+  return 1;
+}
+
+bool SystemRunner::drawsFromSeed(const std::string& /*sensing*/) const
+{
+  return false;
+}
+
 SystemRun SystemRunner::run(const sim::World& /*world*/, const Task& /*task*/, bool /*interaction_enabled*/,
-                            const std::string& /*sensing*/, double /*max_sim_time_s*/) const
+                            const std::string& /*sensing*/, std::optional<std::uint64_t> /*sensing_seed*/,
+                            double /*max_sim_time_s*/) const
 {
   SystemRun run;
   run.reason = "runner unavailable: this build has no system/ (target ifar_runner)";

@@ -226,7 +226,7 @@ std::string interactionGainTargets(const std::vector<ResultRow>& rows, bool runn
   return text;
 }
 
-/// The targets of driving under field sensing: SPL at least 0.95 of ideal sensing's with as many arrivals,
+/// The targets of driving under field sensing: SPL at least 0.95 of ideal sensing's at the same arrival rate,
 /// planner frame p99 within 20 ms, and no push left at maximum force without a decision under any profile.
 std::string sensingTargets(const std::vector<ResultRow>& rows)
 {
@@ -258,9 +258,22 @@ std::string sensingTargets(const std::vector<ResultRow>& rows)
     }
     const double field_spl = meanSpl(field);
     const double ideal_spl = meanSpl(ideal);
-    const bool spl_met = std::isfinite(field_spl) && std::isfinite(ideal_spl) &&
-                         field_spl >= 0.95 * ideal_spl && successes(field) == successes(ideal);
-    text += "| ours driven SPL under field >= 0.95 x ideal, as many arrivals (" + name + ") | " +
+    // Each task is driven once under ideal (exact) and once per sensing seed under field: the arrival
+    // rates are what compare.
+    const bool same_rate = successes(field) * ideal.size() == successes(ideal) * field.size();
+    const bool spl_met =
+        std::isfinite(field_spl) && std::isfinite(ideal_spl) && field_spl >= 0.95 * ideal_spl && same_rate;
+    std::vector<int> seeds;
+    for (const ResultRow* row : field) {
+      if (std::find(seeds.begin(), seeds.end(), row->sensing_seed) == seeds.end()) {
+        seeds.push_back(row->sensing_seed);
+      }
+    }
+    std::string where = name;
+    if (seeds.size() > 1) {
+      where += ", " + std::to_string(seeds.size()) + " sensing seeds";
+    }
+    text += "| ours driven SPL under field >= 0.95 x ideal, the same arrival rate (" + where + ") | " +
             fixed(field_spl, 3) + " (" + std::to_string(successes(field)) + "/" +
             std::to_string(field.size()) + ") vs " + fixed(ideal_spl, 3) + " (" +
             std::to_string(successes(ideal)) + "/" + std::to_string(ideal.size()) + ") | " +

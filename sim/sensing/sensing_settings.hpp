@@ -85,6 +85,14 @@ struct SensingSettings {
   LidarModelSettings lidar;
   WheelModelSettings wheels;
   ForceModelSettings force;
+
+  /// False when no model draws from the seed (the ideal profile): every seed then gives the same run.
+  bool drawsRandomNumbers() const
+  {
+    return pose.jitter_position_m > 0.0 || pose.jitter_heading_rad > 0.0 || pose.drifts() ||
+           pose.correction_interval_s > 0.0 || lidar.active() || force.noise_n > 0.0 ||
+           force.bias_sigma_n > 0.0 || force.stuck_interval_s > 0.0 || force.drop_rate > 0.0;
+  }
 };
 
 /// The profile's values.

@@ -87,6 +87,7 @@ TEST(AnswerText, ARowComesBackFieldForField)
   row.sim_time_s = 254.927;
   row.pushes = 3;
   row.frame_p99_ms = 22.713;
+  row.sensing_seed = 7;
   const std::optional<ResultRow> back = rowFromAnswer(toAnswer(row));
   ASSERT_TRUE(back.has_value());
   EXPECT_EQ(toJsonLine(*back), toJsonLine(row));

@@ -92,16 +92,18 @@ TEST(JsonLine, SystemRowAddsSimulatedTimeAndPushes)
   row.frame_max_ms = 30.0;
   row.interaction_max_ms = 21.0;
   row.sensing = "field";
+  row.sensing_seed = 4;
   row.undecided_saturated_pushes = 3;
   row.escalations = 1;
   const std::string line = toJsonLine(row);
   EXPECT_NE(
-      line.find(", \"sim_time_s\": 120.5, \"pushes\": 2, \"frame_median_ms\": 4.5, \"frame_p99_ms\": "
-                "12.25, \"frame_max_ms\": 30, \"interaction_max_ms\": 21, \"sensing\": \"field\", "
-                "\"undecided_saturated_pushes\": 3, \"escalations\": 1, \"excess_m\": null, "
-                "\"loss_exploring_m\": null, "
-                "\"loss_attempts_m\": null, \"loss_route_switches_m\": null, \"loss_route_choice_m\": null, "
-                "\"loss_execution_m\": null, \"loss_push_overhead_m\": null}"),
+      line.find(
+          ", \"sim_time_s\": 120.5, \"pushes\": 2, \"frame_median_ms\": 4.5, \"frame_p99_ms\": "
+          "12.25, \"frame_max_ms\": 30, \"interaction_max_ms\": 21, \"sensing\": \"field\", "
+          "\"sensing_seed\": 4, \"undecided_saturated_pushes\": 3, \"escalations\": 1, \"excess_m\": null, "
+          "\"loss_exploring_m\": null, "
+          "\"loss_attempts_m\": null, \"loss_route_switches_m\": null, \"loss_route_choice_m\": null, "
+          "\"loss_execution_m\": null, \"loss_push_overhead_m\": null}"),
       std::string::npos)
       << line;
   // An accounted run: the excess and its buckets.

@@ -26,6 +26,21 @@ TEST(SensingProfile, FieldHasEveryModelOn)
   EXPECT_EQ(sensingProfileNames(), (std::vector<std::string>{"ideal", "field"}));
 }
 
+TEST(SensingProfile, OnlyARandomModelMakesTheSeedMatter)
+{
+  EXPECT_FALSE(sensingProfile("ideal").drawsRandomNumbers());
+  EXPECT_TRUE(sensingProfile("field").drawsRandomNumbers());
+  SensingSettings settings = sensingProfile("ideal");
+  settings.wheels.encoder_counts_per_rev = 1024;  // quantisation draws nothing
+  settings.wheels.slip_ratio_scale = 0.1;
+  EXPECT_FALSE(settings.drawsRandomNumbers());
+  settings.force.drop_rate = 0.01;
+  EXPECT_TRUE(settings.drawsRandomNumbers());
+  settings = sensingProfile("ideal");
+  settings.pose.correction_interval_s = 5.0;
+  EXPECT_TRUE(settings.drawsRandomNumbers());
+}
+
 TEST(SensingProfile, AnUnknownNameIsRefusedNamingTheKnownOnes)
 {
   try {
