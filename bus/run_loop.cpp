@@ -1,5 +1,7 @@
 #include "bus/run_loop.hpp"
 
+#include "bus/lcm_url.hpp"
+
 #include <poll.h>
 #include <signal.h>
 #include <sys/signalfd.h>
@@ -63,7 +65,7 @@ struct RunLoop::Subscribers {
 };
 
 RunLoop::RunLoop(const std::string& url, std::shared_ptr<spdlog::logger> logger, ManualClock manual_clock)
-    : lcm_(resolveLcmUrl(url)),
+    : lcm_(withReceiveBuffer(resolveLcmUrl(url), kReceiveBufferBytes)),
       logger_(std::move(logger)),
       manual_clock_(std::move(manual_clock)),
       subscribers_(std::make_unique<Subscribers>())

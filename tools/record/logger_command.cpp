@@ -1,6 +1,5 @@
 #include "tools/record/logger_command.hpp"
 
-#include <cstddef>
 #include <sstream>
 
 namespace ifar::record {
@@ -22,25 +21,6 @@ std::vector<std::string> loggerArguments(const LoggerRequest& request)
   arguments.push_back("--");
   arguments.push_back(request.file_pattern);
   return arguments;
-}
-
-std::string loggerUrl(const std::string& url, long bytes)
-{
-  std::string base = url.empty() ? std::string(kLcmDefaultUrl) : url;
-  if (base.rfind("udpm://", 0) != 0 || bytes <= 0) {
-    return base;
-  }
-  const std::size_t query = base.find('?');
-  if (query != std::string::npos && (base.find("?recv_buf_size=", query) != std::string::npos ||
-                                     base.find("&recv_buf_size=", query) != std::string::npos)) {
-    return base;
-  }
-  if (query == std::string::npos) {
-    base += '?';
-  } else if (base.back() != '?' && base.back() != '&') {
-    base += '&';
-  }
-  return base + "recv_buf_size=" + std::to_string(bytes);
 }
 
 }  // namespace ifar::record

@@ -21,14 +21,4 @@ struct LoggerRequest {
 /// lcm-logger's argv, program name first.
 std::vector<std::string> loggerArguments(const LoggerRequest& request);
 
-/// LCM's URL when none is configured.
-inline constexpr const char* kLcmDefaultUrl = "udpm://239.255.76.67:7667?ttl=0";
-
-/// The URL lcm-logger listens on: `url` ("" = LCM's default) with a kernel receive buffer of `bytes` when
-/// it is a udpm:// URL that does not set recv_buf_size itself. The default buffer holds about a tenth of a
-/// second of the bus (a VLP-16 alone sends 754 datagrams a second), so a logger that waits that long for
-/// the CPU or the disk loses messages the daemons took, and the log no longer replays them. Other providers
-/// and a URL's own recv_buf_size are left as they are.
-std::string loggerUrl(const std::string& url, long bytes);
-
 }  // namespace ifar::record

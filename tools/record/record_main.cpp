@@ -21,6 +21,7 @@
 #include <CLI/CLI.hpp>
 
 #include "bus/heartbeat.hpp"
+#include "bus/lcm_url.hpp"
 #include "bus/run_loop.hpp"
 #include "common/command_line.hpp"
 #include "common/time.hpp"
@@ -44,9 +45,8 @@ struct RecordOptions {
   std::string channels = ".*";
   std::string lcm_url;
   double stall_seconds = 3.0;
-  // Several seconds of the whole bus (about 1.1 MB/s with a VLP-16): a logger held up by a busy CPU or disk
-  // catches up instead of losing what the daemons took.
-  double receive_buffer_mb = 4.0;
+  double receive_buffer_mb =
+      static_cast<double>(ifar::bus::kReceiveBufferBytes) / (1024.0 * 1024.0);  // as every daemon's
 };
 
 int fail(const std::string& message)
@@ -142,8 +142,8 @@ int record(const RecordOptions& options)
   if (error) {
     return fail("cannot create the log folder '" + options.directory + "': " + error.message());
   }
-  const std::string url = ifar::record::loggerUrl(ifar::bus::resolveLcmUrl(options.lcm_url),
-                                                  std::lround(options.receive_buffer_mb * 1024.0 * 1024.0));
+  const std::string url = ifar::bus::withReceiveBuffer(
+      ifar::bus::resolveLcmUrl(options.lcm_url), std::lround(options.receive_buffer_mb * 1024.0 * 1024.0));
   setenv("LCM_DEFAULT_URL", url.c_str(), 1);  // lcm-logger's URL
   ifar::record::LoggerRequest request;
   request.file_pattern = (std::filesystem::path(options.directory) / options.name_pattern).string();

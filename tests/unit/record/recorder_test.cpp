@@ -40,19 +40,6 @@ TEST(LoggerCommand, RotationReplacesNumberingAndSplitZeroIsLeftOut)
                                       "-odd-name.lcmlog"}));
 }
 
-TEST(LoggerUrl, AUdpmUrlGetsTheReceiveBufferAndOtherProvidersAndItsOwnSettingAreKept)
-{
-  EXPECT_EQ(loggerUrl("", 4194304), "udpm://239.255.76.67:7667?ttl=0&recv_buf_size=4194304");
-  EXPECT_EQ(loggerUrl("udpm://239.255.76.67:7781", 1000), "udpm://239.255.76.67:7781?recv_buf_size=1000");
-  EXPECT_EQ(loggerUrl("udpm://239.255.76.67:7781?", 1000), "udpm://239.255.76.67:7781?recv_buf_size=1000");
-  EXPECT_EQ(loggerUrl("udpm://239.255.76.67:7781?recv_buf_size=5", 1000),
-            "udpm://239.255.76.67:7781?recv_buf_size=5");
-  EXPECT_EQ(loggerUrl("udpm://239.255.76.67:7781?ttl=1&recv_buf_size=5", 1000),
-            "udpm://239.255.76.67:7781?ttl=1&recv_buf_size=5");
-  EXPECT_EQ(loggerUrl("memq://", 1000), "memq://");
-  EXPECT_EQ(loggerUrl("udpm://239.255.76.67:7781?ttl=0", 0), "udpm://239.255.76.67:7781?ttl=0");
-}
-
 TEST(LoggerOutput, TheOpenedFileIsReadFromItsLineOnly)
 {
   EXPECT_EQ(openedLogFile("Opening log file \"logs/ifar-2025.lcmlog.00\""), "logs/ifar-2025.lcmlog.00");
