@@ -1,7 +1,5 @@
 #include "bus/run_loop.hpp"
 
-#include "bus/lcm_url.hpp"
-
 #include <poll.h>
 #include <signal.h>
 #include <sys/signalfd.h>
@@ -11,6 +9,7 @@
 #include <cstdlib>
 #include <stdexcept>
 
+#include "bus/lcm_url.hpp"
 #include "common/signals.hpp"
 #include "common/time.hpp"
 

@@ -144,7 +144,9 @@ int record(const RecordOptions& options)
   }
   const std::string url = ifar::bus::withReceiveBuffer(
       ifar::bus::resolveLcmUrl(options.lcm_url), std::lround(options.receive_buffer_mb * 1024.0 * 1024.0));
-  setenv("LCM_DEFAULT_URL", url.c_str(), 1);  // lcm-logger's URL
+  if (!url.empty()) {
+    setenv("LCM_DEFAULT_URL", url.c_str(), 1);  // lcm-logger's URL
+  }
   ifar::record::LoggerRequest request;
   request.file_pattern = (std::filesystem::path(options.directory) / options.name_pattern).string();
   request.channels = options.channels;
@@ -161,7 +163,7 @@ int record(const RecordOptions& options)
       stderr,
       "ifar record: logging channels '%s' on %s to %s (%s); heartbeat \"%s\" on HEARTBEAT; stop with "
       "Ctrl-C\n",
-      options.channels.c_str(), url.c_str(), request.file_pattern.c_str(),
+      options.channels.c_str(), url.empty() ? "LCM's default URL" : url.c_str(), request.file_pattern.c_str(),
       options.rotate > 0 ? ("rotating " + std::to_string(options.rotate) + " files").c_str() : "numbered",
       kProcessName);
   loop.run();
