@@ -13,6 +13,7 @@
 #include <spdlog/spdlog.h>
 #include <CLI/CLI.hpp>
 
+#include "bus/lcm_url.hpp"
 #include "bus/run_loop.hpp"
 #include "common/command_line.hpp"
 #include "common/config.hpp"
@@ -130,7 +131,7 @@ int main(int argc, char** argv)
     ifar::view::FeedSettings feed_settings;
     feed_settings.max_rate_hz = options.max_rate_hz;
     const std::string lcm_url = ifar::bus::resolveLcmUrl(options.lcm_url);
-    const std::string shown_lcm_url = lcm_url.empty() ? "udpm://239.255.76.67:7667?ttl=0" : lcm_url;
+    const std::string shown_lcm_url = lcm_url.empty() ? std::string(ifar::bus::kLcmDefaultUrl) : lcm_url;
     ifar::view::FoxgloveServerInfo foxglove_info;
     foxglove_info.metadata = {{"lcm_url", shown_lcm_url}, {"max_rate_hz", number(options.max_rate_hz)}};
     ifar::view::ViewHub hub(
