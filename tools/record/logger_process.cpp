@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 
@@ -15,7 +16,26 @@
 
 namespace ifar::record {
 
-LoggerProcess::LoggerProcess(const std::vector<std::string>& arguments)
+std::vector<std::string> environmentWith(const std::vector<std::string>& base,
+                                         const std::vector<std::string>& changes)
+{
+  std::vector<std::string> result = base;
+  for (const std::string& change : changes) {
+    const std::string name = change.substr(0, change.find('=') + 1);  // with its '='
+    const auto same = std::find_if(result.begin(), result.end(), [&name](const std::string& variable) {
+      return variable.compare(0, name.size(), name) == 0;
+    });
+    if (same != result.end()) {
+      *same = change;
+    } else {
+      result.push_back(change);
+    }
+  }
+  return result;
+}
+
+LoggerProcess::LoggerProcess(const std::vector<std::string>& arguments,
+                             const std::vector<std::string>& environment)
 {
   const std::string program = tools::findProgram(arguments.front());
   if (program.empty()) {
@@ -35,6 +55,17 @@ LoggerProcess::LoggerProcess(const std::vector<std::string>& arguments)
     argv.push_back(const_cast<char*>(argument.c_str()));  // execv's signature predates const
   }
   argv.push_back(nullptr);
+  std::vector<std::string> parent_environment;
+  for (char** variable = environ; *variable != nullptr; ++variable) {
+    parent_environment.emplace_back(*variable);
+  }
+  const std::vector<std::string> child_environment = environmentWith(parent_environment, environment);
+  std::vector<char*> envp;
+  envp.reserve(child_environment.size() + 1);
+  for (const auto& variable : child_environment) {
+    envp.push_back(const_cast<char*>(variable.c_str()));  // execve's signature predates const
+  }
+  envp.push_back(nullptr);
   sigset_t stop_signals;
   sigemptyset(&stop_signals);
   for (const int signal_number : {SIGINT, SIGTERM, SIGHUP}) {
@@ -53,7 +84,7 @@ LoggerProcess::LoggerProcess(const std::vector<std::string>& arguments)
     if (getppid() != parent || dup2(pipe_fds[1], STDOUT_FILENO) < 0 || dup2(pipe_fds[1], STDERR_FILENO) < 0) {
       _exit(127);
     }
-    execv(program.c_str(), argv.data());
+    execve(program.c_str(), argv.data(), envp.data());
     _exit(127);
   }
   const int fork_error = errno;

@@ -2,7 +2,8 @@
 // lcm-logger as a child of `ifar record`: its stop signals at their defaults and unblocked whatever the
 // parent blocks, in the parent's process group (so Ctrl-C and `ifar launch`'s stop reach both), stopped
 // when the parent dies, and its output (standard output and error) on a pipe the parent reads: it names
-// each file it opens there, and the parent passes every line on.
+// each file it opens there, and the parent passes every line on. Its environment is the parent's with the
+// variables given to it set (the recorder's preload of a longer LCM queue, record_main.cpp).
 
 #include <sys/types.h>
 
@@ -14,8 +15,10 @@ namespace ifar::record {
 
 class LoggerProcess {
  public:
-  /// Starts `arguments` (the program found on PATH); check startError().
-  explicit LoggerProcess(const std::vector<std::string>& arguments);
+  /// Starts `arguments` (the program found on PATH) with `environment` ("NAME=VALUE" each) set over the
+  /// parent's environment; check startError().
+  explicit LoggerProcess(const std::vector<std::string>& arguments,
+                         const std::vector<std::string>& environment = {});
   /// Kills and reaps the process when it still runs.
   ~LoggerProcess();
   LoggerProcess(const LoggerProcess&) = delete;
@@ -40,6 +43,11 @@ class LoggerProcess {
   std::string partial_line_;
   std::optional<std::string> exit_;
 };
+
+/// `base` ("NAME=VALUE" each, as `environ`) with every variable of `changes` set: replaced where `base` has
+/// it, added at the end where not.
+std::vector<std::string> environmentWith(const std::vector<std::string>& base,
+                                         const std::vector<std::string>& changes);
 
 /// The log file named by one of lcm-logger's lines, `Opening log file "PATH"`; nothing for other lines.
 std::optional<std::string> openedLogFile(const std::string& line);

@@ -15,6 +15,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <spdlog/sinks/stdout_sinks.h>
 #include <spdlog/spdlog.h>
@@ -26,6 +27,7 @@
 #include "common/command_line.hpp"
 #include "common/time.hpp"
 #include "ifar/heartbeat_t.hpp"
+#include "tools/ifar/process.hpp"
 #include "tools/record/logger_command.hpp"
 #include "tools/record/logger_process.hpp"
 #include "tools/record/recorder_watch.hpp"
@@ -47,12 +49,59 @@ struct RecordOptions {
   double stall_seconds = 3.0;
   double receive_buffer_mb =
       static_cast<double>(ifar::bus::kReceiveBufferBytes) / (1024.0 * 1024.0);  // as every daemon's
+  // LCM's queue between lcm-logger's receiving thread and its main thread: about three seconds of the
+  // stack's bus (1,600 messages a second, most of them lidar packets of 1.2 kB, so about 6 MB when full),
+  // enough for the backlog a driver publishes at once after it was kept off the CPU.
+  int queue_messages = 5000;
 };
 
 int fail(const std::string& message)
 {
   std::fprintf(stderr, "ifar record: error: %s\n", message.c_str());
   return 1;
+}
+
+/// The library that sets lcm-logger's queue (tools/record/logger_queue_preload.cpp), where the build and
+/// the install put it relative to this program.
+std::string loggerQueueLibrary()
+{
+  return (std::filesystem::path(ifar::tools::executableDirectory()) / IFAR_LOGGER_QUEUE_FROM_BIN)
+      .lexically_normal()
+      .string();
+}
+
+/// What lcm-logger runs with over the recorder's environment, and the queue LCM gives it then.
+struct LoggerEnvironment {
+  std::vector<std::string> variables;  // "NAME=VALUE"
+  int queue_messages = 30;             // LCM's default
+};
+
+/// lcm-logger's LCM URL, and the preload that gives its subscription `queue_messages` of queue (none for
+/// 0, LCM's own 30). Says on standard error when the library is missing.
+LoggerEnvironment loggerEnvironment(const std::string& url, int queue_messages)
+{
+  LoggerEnvironment environment;
+  if (!url.empty()) {
+    environment.variables.push_back("LCM_DEFAULT_URL=" + url);
+  }
+  if (queue_messages == 0) {
+    return environment;
+  }
+  const std::string library = loggerQueueLibrary();
+  if (access(library.c_str(), R_OK) != 0) {
+    std::fprintf(stderr,
+                 "ifar record: warning: %s is missing: lcm-logger keeps LCM's queue of 30 messages and loses "
+                 "what arrives in a burst beyond it\n",
+                 library.c_str());
+    return environment;
+  }
+  const char* preloaded = std::getenv("LD_PRELOAD");
+  environment.variables.push_back(
+      "LD_PRELOAD=" + library +
+      (preloaded != nullptr && *preloaded != '\0' ? ":" + std::string(preloaded) : ""));
+  environment.variables.push_back("IFAR_LOGGER_QUEUE_MESSAGES=" + std::to_string(queue_messages));
+  environment.queue_messages = queue_messages;
+  return environment;
 }
 
 /// Watches lcm-logger from the run loop and publishes the recorder's heartbeats.
@@ -144,9 +193,6 @@ int record(const RecordOptions& options)
   }
   const std::string url = ifar::bus::withReceiveBuffer(
       ifar::bus::resolveLcmUrl(options.lcm_url), std::lround(options.receive_buffer_mb * 1024.0 * 1024.0));
-  if (!url.empty()) {
-    setenv("LCM_DEFAULT_URL", url.c_str(), 1);  // lcm-logger's URL
-  }
   ifar::record::LoggerRequest request;
   request.file_pattern = (std::filesystem::path(options.directory) / options.name_pattern).string();
   request.channels = options.channels;
@@ -154,18 +200,19 @@ int record(const RecordOptions& options)
   request.rotate = options.rotate;
   // The run loop first: it blocks SIGINT/SIGTERM before LCM's threads start; lcm-logger unblocks them.
   ifar::bus::RunLoop loop(url, spdlog::stderr_logger_mt("record"));
-  ifar::record::LoggerProcess logger(ifar::record::loggerArguments(request));
+  const LoggerEnvironment environment = loggerEnvironment(url, options.queue_messages);
+  ifar::record::LoggerProcess logger(ifar::record::loggerArguments(request), environment.variables);
   if (!logger.startError().empty()) {
     return fail(logger.startError() + " (install liblcm-bin; scripts/setup does)");
   }
   Recorder recorder(loop, logger, options);
   std::fprintf(
       stderr,
-      "ifar record: logging channels '%s' on %s to %s (%s); heartbeat \"%s\" on HEARTBEAT; stop with "
-      "Ctrl-C\n",
+      "ifar record: logging channels '%s' on %s to %s (%s, queue of %d messages); heartbeat \"%s\" on "
+      "HEARTBEAT; stop with Ctrl-C\n",
       options.channels.c_str(), url.empty() ? "LCM's default URL" : url.c_str(), request.file_pattern.c_str(),
       options.rotate > 0 ? ("rotating " + std::to_string(options.rotate) + " files").c_str() : "numbered",
-      kProcessName);
+      environment.queue_messages, kProcessName);
   loop.run();
   if (recorder.exitCode() == 0) {
     const std::string how = logger.stop(kLoggerStopTimeoutS);
@@ -204,6 +251,11 @@ int main(int argc, char** argv)
                  "kernel receive buffer lcm-logger asks for on a udpm:// URL without recv_buf_size (0 = the "
                  "system's default; net.core.rmem_max caps it, and LCM says so)")
       ->check(ifar::common::atLeast(0.0))
+      ->capture_default_str();
+  app.add_option("--queue-messages", options.queue_messages,
+                 "messages LCM holds for lcm-logger while its main thread is busy (LCM drops what comes "
+                 "beyond; 0 = LCM's own 30, which a burst of lidar packets overflows)")
+      ->check(CLI::Range(0, 10'000'000))
       ->capture_default_str();
   if (const auto exit_code = ifar::common::parseCommandLine(app, argc, argv)) {
     return *exit_code;

@@ -40,6 +40,16 @@ TEST(LoggerCommand, RotationReplacesNumberingAndSplitZeroIsLeftOut)
                                       "-odd-name.lcmlog"}));
 }
 
+TEST(LoggerEnvironment, AVariableGivenReplacesTheParentsAndANewOneIsAddedAtTheEnd)
+{
+  const std::vector<std::string> parent = {"PATH=/usr/bin", "LCM_DEFAULT_URL=udpm://old", "LCM=x",
+                                           "HOME=/root"};
+  EXPECT_EQ(environmentWith(parent, {"LCM_DEFAULT_URL=udpm://new", "LD_PRELOAD=/lib/a.so", "HOME="}),
+            (std::vector<std::string>{"PATH=/usr/bin", "LCM_DEFAULT_URL=udpm://new", "LCM=x",
+                                      "HOME=", "LD_PRELOAD=/lib/a.so"}));
+  EXPECT_EQ(environmentWith(parent, {}), parent);
+}
+
 TEST(LoggerOutput, TheOpenedFileIsReadFromItsLineOnly)
 {
   EXPECT_EQ(openedLogFile("Opening log file \"logs/ifar-2025.lcmlog.00\""), "logs/ifar-2025.lcmlog.00");
