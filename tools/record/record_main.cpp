@@ -38,6 +38,7 @@ constexpr const char* kProcessName = "recorder";
 constexpr double kWatchPeriodS = 0.1;
 constexpr double kHeartbeatPeriodS = 1.0;
 constexpr double kLoggerStopTimeoutS = 5.0;
+constexpr int kLcmDefaultQueueMessages = 30;  // what LCM gives a subscription that asks for nothing
 
 struct RecordOptions {
   std::string directory = "logs";
@@ -73,7 +74,7 @@ std::string loggerQueueLibrary()
 /// What lcm-logger runs with over the recorder's environment, and the queue LCM gives it then.
 struct LoggerEnvironment {
   std::vector<std::string> variables;  // "NAME=VALUE"
-  int queue_messages = 30;             // LCM's default
+  int queue_messages = kLcmDefaultQueueMessages;
 };
 
 /// lcm-logger's LCM URL, and the preload that gives its subscription `queue_messages` of queue (none for
@@ -90,9 +91,9 @@ LoggerEnvironment loggerEnvironment(const std::string& url, int queue_messages)
   const std::string library = loggerQueueLibrary();
   if (access(library.c_str(), R_OK) != 0) {
     std::fprintf(stderr,
-                 "ifar record: warning: %s is missing: lcm-logger keeps LCM's queue of 30 messages and loses "
+                 "ifar record: warning: %s is missing: lcm-logger keeps LCM's queue of %d messages and loses "
                  "what arrives in a burst beyond it\n",
-                 library.c_str());
+                 library.c_str(), kLcmDefaultQueueMessages);
     return environment;
   }
   const char* preloaded = std::getenv("LD_PRELOAD");

@@ -19,6 +19,7 @@
 
 #include <gtest/gtest.h>
 
+#include "bus/lcm_url.hpp"
 #include "common/lcm_log/log_reader.hpp"
 #include "ifar/heartbeat_t.hpp"
 #include "lcmtypes/checked_decode.hpp"
@@ -59,18 +60,6 @@ int countOn(const std::string& log, const std::string& channel)
   return count;
 }
 
-/// Publishes `bytes` on `channel` every 20 ms until `log` holds one of them (at most 20 s): lcm-logger
-/// subscribes some time after it starts.
-void publishUntilRecorded(BusListener& bus, const std::string& log, const std::string& channel,
-                          const std::vector<std::uint8_t>& bytes)
-{
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
-  while (countOn(log, channel) == 0 && std::chrono::steady_clock::now() < deadline) {
-    bus.lcm().publish(channel, bytes.data(), static_cast<unsigned int>(bytes.size()));
-    bus.spin(0.02);
-  }
-}
-
 class RecorderProcess : public ::testing::Test {
  protected:
   std::string path(const std::string& name) const { return (directory_.path() / name).string(); }
@@ -100,6 +89,37 @@ class RecorderProcess : public ::testing::Test {
       const std::vector<heartbeat_t> beats = recorderBeats(bus, recorder);
       return !beats.empty() && beats.back().health == level && contains(beats.back().message, part);
     };
+  }
+
+  /// Records with `queue_option` (ifar record's --queue-messages), publishes `burst` lidar-sized messages as
+  /// fast as the test can once lcm-logger records, and returns how many of them the log holds.
+  static int recordedOfABurst(const std::string& folder, const std::string& url,
+                              const std::string& queue_option, int burst, std::string& output)
+  {
+    const std::string output_path = folder + ".out";
+    BusListener bus(url, "HEARTBEAT");
+    ChildProcess recorder({toolPath("ifar-record"), "--dir", folder, "--name", "burst.lcmlog", "--split-mb",
+                           "0", "--lcm-url", url, "--queue-messages", queue_option},
+                          ChildOptions{output_path, "", {}});
+    const std::string log = folder + "/burst.lcmlog.00";
+    // lcm-logger subscribes some time after it starts.
+    const std::vector<std::uint8_t> probe = {1};
+    publishUntil(bus, "PROBE", probe, 20.0, [&log] { return countOn(log, "PROBE") > 0; });
+    std::vector<std::uint8_t> packet(1234, 0);
+    for (int index = 0; index < burst; ++index) {
+      packet[0] = static_cast<std::uint8_t>(index);
+      bus.lcm().publish("BURST", packet.data(), static_cast<unsigned int>(packet.size()));
+    }
+    // Until lcm-logger has written what it kept: the count stays the same for half a second.
+    int recorded = -1;
+    for (int count = countOn(log, "BURST"), tries = 0; count != recorded && tries < 40; ++tries) {
+      recorded = count;
+      bus.spin(0.5);
+      count = countOn(log, "BURST");
+    }
+    recorder.stop(SIGINT);
+    output = test_support::readText(output_path);
+    return countOn(log, "BURST");
   }
 
   test_support::TemporaryDirectory directory_{"recorder-process-test"};
@@ -186,36 +206,6 @@ TEST_F(RecorderProcess, HeartbeatSaysErrorWhenTheLoggerStopsWritingOkWhenItGoesO
   }
 }
 
-/// Records with `queue_option` (ifar record's --queue-messages), publishes `burst` lidar-sized messages as
-/// fast as the test can once lcm-logger records, and returns how many of them the log holds.
-int recordedOfABurst(const std::string& folder, const std::string& url, const std::string& queue_option,
-                     int burst, std::string& output)
-{
-  const std::string output_path = folder + ".out";
-  BusListener bus(url, "HEARTBEAT");
-  ChildProcess recorder({toolPath("ifar-record"), "--dir", folder, "--name", "burst.lcmlog", "--split-mb",
-                         "0", "--lcm-url", url, "--queue-messages", queue_option},
-                        ChildOptions{output_path, "", {}});
-  const std::string log = folder + "/burst.lcmlog.00";
-  const std::vector<std::uint8_t> probe = {1};
-  publishUntilRecorded(bus, log, "PROBE", probe);
-  std::vector<std::uint8_t> packet(1234, 0);
-  for (int index = 0; index < burst; ++index) {
-    packet[0] = static_cast<std::uint8_t>(index);
-    bus.lcm().publish("BURST", packet.data(), static_cast<unsigned int>(packet.size()));
-  }
-  // Until lcm-logger has written what it kept: the count stays the same for half a second.
-  int recorded = -1;
-  for (int count = countOn(log, "BURST"), tries = 0; count != recorded && tries < 40; ++tries) {
-    recorded = count;
-    bus.spin(0.5);
-    count = countOn(log, "BURST");
-  }
-  recorder.stop(SIGINT);
-  output = test_support::readText(output_path);
-  return countOn(log, "BURST");
-}
-
 TEST_F(RecorderProcess, ABurstOfMessagesIsRecordedWhole)
 {
   // Packets of a VLP-16's size at once, as a driver publishes its backlog after it was held up: LCM's own
@@ -225,7 +215,7 @@ TEST_F(RecorderProcess, ABurstOfMessagesIsRecordedWhole)
   std::istringstream rmem_max(test_support::readText("/proc/sys/net/core/rmem_max"));
   long buffer_cap = 212992;  // Linux's default when the file cannot be read
   rmem_max >> buffer_cap;
-  const long buffer_bytes = 2 * std::min(buffer_cap, 4L * 1024 * 1024);
+  const long buffer_bytes = 2 * std::min(buffer_cap, bus::kReceiveBufferBytes);
   const int burst = static_cast<int>(std::clamp(buffer_bytes / 4096, 100L, 1500L));
   std::string output;
   EXPECT_EQ(recordedOfABurst(path("queued"), privateUrl(7855), "5000", burst, output), burst) << output;
