@@ -23,6 +23,7 @@
 #include "bench/baselines/grid_astar.hpp"
 #include "bench/baselines/sampling_planners.hpp"
 #include "bench/search_comparison/gppc_suite.hpp"
+#include "bench/search_comparison/map_scale.hpp"
 #include "bench/search_comparison/query_set.hpp"
 #include "common/command_line.hpp"
 #include "common/grid_map/readers.hpp"
@@ -87,6 +88,30 @@ std::vector<std::string> splitList(const std::string& text)
 const std::vector<std::string> kGppcMaps{"gppc/AcrosstheCape.map", "gppc-extra/den520d.map",
                                          "gppc-extra/ArcticStation.map", "gppc-extra/Nightshade.map"};
 
+// The map-scale row: the densest of them (most corners per cell) repeated to 1024 x 1024 cells, the size
+// of large field maps, queried between seeded free cells (no reference lengths exist for it).
+const std::string kMapScaleTile = "gppc-extra/ArcticStation.map";
+constexpr int kMapScaleCells = 1024;
+constexpr std::size_t kMapScaleQueries = 1000;
+constexpr std::uint32_t kMapScaleSeed = 1;
+
+ifar::bench::GppcMapResult runMapScaleRow(const std::string& data_folder)
+{
+  const std::string tile_path = data_folder + "/" + kMapScaleTile;
+  const auto tile = ifar::grid_map::readMovingAiMap(tile_path);
+  if (!tile.ok()) {
+    ifar::bench::GppcMapResult result;
+    result.map = kMapScaleTile + " repeated";
+    result.error = tile.error;
+    return result;
+  }
+  const auto map = ifar::bench::tiledMap(tile.map, kMapScaleCells, kMapScaleCells);
+  std::ostringstream name;
+  name << baseName(kMapScaleTile) << " repeated to " << kMapScaleCells << "x" << kMapScaleCells;
+  return ifar::bench::runGppcQueries(
+      name.str(), map, ifar::bench::seededFreeCellQueries(map, kMapScaleQueries, kMapScaleSeed), false);
+}
+
 std::string firstValueOf(const std::string& path, const std::string& key)
 {
   std::ifstream file(path);
@@ -138,6 +163,13 @@ int runGppcSuite(const std::string& data_folder, const std::string& results_fold
     }
     every_query_exact = every_query_exact && result.exact == result.queries;
   }
+  std::cerr << "ifar bench-search: " << kMapScaleTile << " repeated to " << kMapScaleCells << "x"
+            << kMapScaleCells << " ...\n";
+  results.push_back(runMapScaleRow(data_folder));
+  if (!results.back().error.empty()) {
+    std::cerr << "ifar bench-search: " << results.back().error << "\n";
+    every_file = false;
+  }
   std::ostringstream markdown;
   markdown << "# GPPC any-angle maps: exactness, query and build time, memory\n\n"
            << "Machine: " << header << ". Commit: " << commit << ".\nCommand: `" << command << "`\n\n"
@@ -145,7 +177,11 @@ int runGppcSuite(const std::string& data_folder, const std::string& results_fold
            << " of the .scen length. Query times: one graph::findPath, CPU time of the planning thread "
               "(wall time beside it; nearest-rank percentiles). Build: grid to prior map (every core) to "
               "search snapshot, wall. Graph MB: heap held by the obstacle set, the DV-graph and its search "
-              "snapshot.\n\n"
+              "snapshot. The last row has no .scen: "
+           << kMapScaleQueries
+           << " queries between free cells "
+              "drawn with seed "
+           << kMapScaleSeed << ", counted as found or not.\n\n"
            << ifar::bench::gppcTable(results);
   std::cout << markdown.str();
   std::error_code error;
@@ -241,8 +277,9 @@ int main(int argc, char** argv)
   auto* gppc_option = app.add_flag(
       "--gppc-suite", gppc_suite,
       "instead: ours on the GPPC map and the three gppc-extra maps with their .scen lengths; per map\n"
-      "exact count, worst relative error, median/p99 query time, build time, graph memory; writes\n"
-      "gppc.md and gppc.jsonl into --results (exit 1 when a query is not exact)");
+      "exact count, worst relative error, median/p99 query time, build time, graph memory; then\n"
+      "ArcticStation repeated to 1024x1024 with seeded queries (build time and memory at map scale);\n"
+      "writes gppc.md and gppc.jsonl into --results (exit 1 when a query is not exact)");
   gppc_option->excludes(map_option)->excludes(world_option);
   app.add_option("--data", data_folder, "--gppc-suite: the shared data folder (gppc/, gppc-extra/)")
       ->capture_default_str();

@@ -1,11 +1,15 @@
 #pragma once
 // The GPPC exactness run of `ifar bench-search --gppc-suite`: a MovingAI map and its .scen queries, the
 // zero-inflation prior map built once, every query planned against the .scen length, and per map the
-// exact count, the worst relative error, query times, build time and the graph's memory.
+// exact count, the worst relative error, query times, build time and the graph's memory. The same run
+// takes a grid and queries without reference lengths (the map-scale row: map_scale.hpp).
 
 #include <cstddef>
 #include <string>
 #include <vector>
+
+#include "common/grid_map/grid_map.hpp"
+#include "common/grid_map/readers.hpp"
 
 namespace ifar::bench {
 
@@ -24,6 +28,8 @@ struct GppcMapResult {
   int width = 0;
   int height = 0;
   std::size_t queries = 0;
+  bool reference = true;  // the queries carry optimal lengths; without them only `found` counts
+  std::size_t found = 0;
   std::size_t exact = 0;
   double worst_relative_error = 0.0;  // over the queries found
   std::vector<GppcQueryMiss> misses;  // the queries that are not exact
@@ -46,6 +52,11 @@ struct GppcMapResult {
 
 /// Runs every query of `map_path` + ".scen" on the zero-inflation prior map of `map_path`.
 GppcMapResult runGppcMap(const std::string& map_path);
+
+/// Runs `queries` on the zero-inflation prior map of `map`, named `name` in the result. Without
+/// `reference` the queries' optimal lengths are ignored: nothing is exact or missed, `found` counts.
+GppcMapResult runGppcQueries(const std::string& name, const grid_map::GridMap& map,
+                             const std::vector<grid_map::Scenario>& queries, bool reference);
 
 /// The results as a markdown table, with a list of the queries that are not exact.
 std::string gppcTable(const std::vector<GppcMapResult>& results);

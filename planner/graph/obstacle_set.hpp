@@ -70,24 +70,50 @@ struct NeighbourSides {
   int next = 0;
 };
 
+/// A corner's two loop edges as seen from it, with their sizes for the tolerance: what every tangency
+/// test of the corner needs, worked out once where one corner is tested against many directions.
+struct CornerArms {
+  geometry::Vector to_previous = geometry::Vector::Zero();
+  geometry::Vector to_next = geometry::Vector::Zero();
+  double previous_size = 0.0;  // |x| + |y| of to_previous
+  double next_size = 0.0;
+
+  static CornerArms of(const LoopCorner& corner)
+  {
+    CornerArms arms;
+    arms.to_previous = corner.previous - corner.position;
+    arms.to_next = corner.next - corner.position;
+    arms.previous_size = std::abs(arms.to_previous.x()) + std::abs(arms.to_previous.y());
+    arms.next_size = std::abs(arms.to_next.x()) + std::abs(arms.to_next.y());
+    return arms;
+  }
+};
+
+inline NeighbourSides neighbourSides(const CornerArms& arms, const geometry::Vector& direction)
+{
+  const double previous_cross = direction.x() * arms.to_previous.y() - direction.y() * arms.to_previous.x();
+  const double next_cross = direction.x() * arms.to_next.y() - direction.y() * arms.to_next.x();
+  const double scale = 1e-9 * (std::abs(direction.x()) + std::abs(direction.y()));
+  return {signBeyond(previous_cross, scale * arms.previous_size),
+          signBeyond(next_cross, scale * arms.next_size)};
+}
+
 inline NeighbourSides neighbourSides(const LoopCorner& corner, const geometry::Vector& direction)
 {
-  const geometry::Vector to_previous = corner.previous - corner.position;
-  const geometry::Vector to_next = corner.next - corner.position;
-  const double previous_cross = direction.x() * to_previous.y() - direction.y() * to_previous.x();
-  const double next_cross = direction.x() * to_next.y() - direction.y() * to_next.x();
-  const double scale = 1e-9 * (std::abs(direction.x()) + std::abs(direction.y()));
-  return {signBeyond(previous_cross, scale * (std::abs(to_previous.x()) + std::abs(to_previous.y()))),
-          signBeyond(next_cross, scale * (std::abs(to_next.x()) + std::abs(to_next.y())))};
+  return neighbourSides(CornerArms::of(corner), direction);
 }
 
 /// True when the line through the corner along `direction` keeps both loop neighbours on one side
 /// (touching counts): the reduced visibility graph only keeps edges tangent at both ends. Inline: it
 /// runs for every vertex pair of a build and every vertex of an attachment.
+inline bool isTangent(const CornerArms& arms, const geometry::Vector& direction)
+{
+  const NeighbourSides sides = neighbourSides(arms, direction);
+  return sides.previous * sides.next >= 0;
+}
 inline bool isTangent(const LoopCorner& corner, const geometry::Vector& direction)
 {
-  const NeighbourSides sides = neighbourSides(corner, direction);
-  return sides.previous * sides.next >= 0;
+  return isTangent(CornerArms::of(corner), direction);
 }
 
 /// The side of the line through the corner along `direction` that the blocked wedge lies on: +1 left,

@@ -44,21 +44,28 @@ struct RowResult {
   std::size_t tangent_pairs = 0;
 };
 
-RowResult visibleAfter(const ObstacleSet& obstacles, const std::vector<LoopCorner>& corners,
-                       std::size_t first)
+/// The convex corners of a build in the layout the pair loop streams through: positions and arms apart,
+/// each worked out once instead of once per pair.
+struct CornerTable {
+  std::vector<geometry::Point> positions;
+  std::vector<CornerArms> arms;
+};
+
+RowResult visibleAfter(const ObstacleSet& obstacles, const CornerTable& corners, std::size_t first)
 {
   RowResult row;
-  const LoopCorner& from = corners[first];
+  const geometry::Point from = corners.positions[first];
+  const CornerArms& from_arms = corners.arms[first];
   // Lines from one corner in nearby directions are mostly blocked by the same wall: try that first.
-  SectorBlockerCache blockers(from.position);
-  for (std::size_t second = first + 1; second < corners.size(); ++second) {
-    const LoopCorner& to = corners[second];
-    const geometry::Vector direction = to.position - from.position;
-    if (!isTangent(from, direction) || !isTangent(to, -direction)) {
+  SectorBlockerCache blockers(from);
+  const std::size_t count = corners.positions.size();
+  for (std::size_t second = first + 1; second < count; ++second) {
+    const geometry::Vector direction = corners.positions[second] - from;
+    if (!isTangent(from_arms, direction) || !isTangent(corners.arms[second], -direction)) {
       continue;
     }
     ++row.tangent_pairs;
-    if (obstacles.visibleFrom(to.position, blockers)) {
+    if (obstacles.visibleFrom(corners.positions[second], blockers)) {
       row.visible.push_back(static_cast<std::uint32_t>(second));
     }
   }
@@ -72,7 +79,7 @@ BuildStats addReducedVisibilityGraph(const ObstacleSet& obstacles, DvGraph& grap
                                      unsigned threads)
 {
   BuildStats stats;
-  std::vector<LoopCorner> corners;
+  CornerTable corners;
   std::vector<VertexId> ids;
   for (const auto& corner : obstacles.corners()) {
     if (!isConvexCorner(corner)) {
@@ -85,10 +92,11 @@ BuildStats addReducedVisibilityGraph(const ObstacleSet& obstacles, DvGraph& grap
     vertex.next = corner.next;
     vertex.object_id = obstacles.loops()[corner.loop].object_id;
     ids.push_back(graph.addVertex(vertex));
-    corners.push_back(corner);
+    corners.positions.push_back(corner.position);
+    corners.arms.push_back(CornerArms::of(corner));
   }
-  stats.corners = corners.size();
-  const std::size_t count = corners.size();
+  stats.corners = corners.positions.size();
+  const std::size_t count = stats.corners;
   // Rows (one corner against every later one) are tested on `threads` threads, each taking the next row
   // not yet taken; the edges are then added row by row, so the graph is the same for any thread count.
   std::vector<RowResult> rows(count);

@@ -37,10 +37,10 @@ TEST(GppcSuite, EveryQueryOfTheDoubleCornerMapIsExact)
   EXPECT_NE(table.find("| double_corner | 5x5 | 8 | 8 | "), std::string::npos) << table;
   EXPECT_EQ(table.find("Not exact"), std::string::npos) << table;
   const std::string line = gppcJsonLine(result);
-  EXPECT_EQ(
-      line.rfind("{\"map\": \"double_corner\", \"width\": 5, \"height\": 5, \"queries\": 8, \"exact\": 8, ",
-                 0),
-      0u)
+  EXPECT_EQ(line.rfind("{\"map\": \"double_corner\", \"width\": 5, \"height\": 5, \"queries\": 8, \"found\": "
+                       "8, \"exact\": 8, ",
+                       0),
+            0u)
       << line;
   EXPECT_NE(line.find("\"not_exact\": []}"), std::string::npos) << line;
 }
