@@ -253,9 +253,13 @@ std::string recordLiveRun(const std::filesystem::path& directory, const std::str
   bus.subscribe("GLOBAL_PATH", &LiveAnswers::onPath, &answers);
   // config/planner.yaml names config/vehicle.yaml relative to the working directory, as on the vehicle.
   const std::string source = IFAR_SOURCE_DIR;
+  // The planner runs at a lower priority (nice execs it, so the pid is the planner's): on a two-core
+  // machine its frame work would otherwise keep lcm-logger off the CPU for longer than LCM's queue of 30
+  // messages lasts (40 ms of packets). What it answers does not depend on when it runs, only on which
+  // revolution it takes, and the comparison below follows the revolutions it took.
   test_support::ChildProcess daemon(
-      {std::string(IFAR_BINARY_DIR) + "/bin/ifar-planner", "--config", "config/planner.yaml", "--lcm-url",
-       kLcmUrl, "--log-dir", "", "--log-level", "warn"},
+      {"/usr/bin/nice", "-n", "10", std::string(IFAR_BINARY_DIR) + "/bin/ifar-planner", "--config",
+       "config/planner.yaml", "--lcm-url", kLcmUrl, "--log-dir", "", "--log-level", "warn"},
       test_support::ChildOptions{(directory / "planner.out").string(), source, {}});
   if (!daemon.started()) {
     return "ifar-planner did not start";
@@ -309,17 +313,29 @@ TEST(PlannerLogReplay, RealLogReplaysToTheSameGraphsAndPathsAsTheLivePlanner)
   }
   test_support::TemporaryDirectory directory("ifar-log-replay");
   ASSERT_FALSE(directory.path().empty());
-  const std::string log_path = (directory.path() / "drive.lcmlog").string();
+  // lcm-logger keeps LCM's limit of 30 waiting messages (40 ms of packets), so a logger kept off the CPU
+  // loses packets, and a log that lacks a packet the live planner used cannot replay to its answers. The
+  // test runs alone (RUN_SERIAL) with the planner below the logger's priority; should the logger still
+  // drop messages, the drive is recorded again, at most three times, each attempt reported.
+  constexpr int kRecordingAttempts = 3;
   Published published;
-  const std::string problem = recordLiveRun(directory.path(), log_path, published);
-  ASSERT_EQ(problem, "");
-
-  const LoggedRun run = readLog(log_path);
+  LoggedRun run;
+  for (int attempt = 1; attempt <= kRecordingAttempts; ++attempt) {
+    const std::string log_path =
+        (directory.path() / ("drive-" + std::to_string(attempt) + ".lcmlog")).string();
+    published = Published{};
+    const std::string problem = recordLiveRun(directory.path(), log_path, published);
+    ASSERT_EQ(problem, "");
+    run = readLog(log_path);
+    if (run.packets == published.packets && run.poses == published.poses) {
+      break;
+    }
+    std::cout << "recording " << attempt << ": lcm-logger kept " << run.packets << " of " << published.packets
+              << " packets and " << run.poses << " of " << published.poses << " poses\n";
+  }
   // 2 s of a VLP-16 at 754 packets/s and a pose every 10 ms, every one of them in the log.
   EXPECT_GT(published.packets, 1500);
-  // lcm-logger keeps LCM's limit of 30 waiting messages (40 ms of packets), so a logger starved of the
-  // CPU loses packets; the test runs alone (RUN_SERIAL) to give it the machine.
-  const char* const starved = " (lcm-logger dropped messages: was the machine busy?)";
+  const char* const starved = " (lcm-logger dropped messages in every recording: was the machine busy?)";
   EXPECT_EQ(run.packets, published.packets) << starved;
   EXPECT_EQ(run.poses, published.poses) << starved;
   EXPECT_EQ(run.undecodable, 0);
