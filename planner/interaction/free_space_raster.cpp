@@ -61,21 +61,45 @@ void FreeSpaceRaster::fill(const Polygon& polygon, std::uint8_t layer)
 
 namespace {
 
-/// How far `point` lies outside `polygon` (even-odd rule), 0 inside or within kEpsilon of an edge. One pass
-/// over the edges with squared distances: this runs for every cell near a pushed object's every pose.
-double distanceOutside(const Polygon& polygon, const Point& point)
+/// A polygon edge from `start` to `end` with what geometry::closestPointOnSegment works out of it for
+/// every query, worked out once: a pushed object's outline is measured from every cell near it, at
+/// every pose the push search judges.
+struct MeasuredEdge {
+  Point start;
+  Point end;
+  geometry::Vector direction;
+  double squared_length;
+};
+
+std::vector<MeasuredEdge> measuredEdges(const Polygon& polygon)
 {
-  double nearest_squared = std::numeric_limits<double>::infinity();
-  bool inside = false;
+  std::vector<MeasuredEdge> edges;
+  edges.reserve(polygon.size());
   for (std::size_t index = 0, previous = polygon.size() - 1; index < polygon.size(); previous = index++) {
     const Point& a = polygon[previous];
     const Point& b = polygon[index];
     const geometry::Vector direction = b - a;
-    nearest_squared =
-        std::min(nearest_squared,
-                 (point - geometry::closestPointOnSegment(point, geometry::Segment{a, b})).squaredNorm());
-    if ((a.y() > point.y()) != (b.y() > point.y()) &&
-        point.x() < a.x() + (point.y() - a.y()) * direction.x() / direction.y()) {
+    edges.push_back(MeasuredEdge{a, b, direction, direction.squaredNorm()});
+  }
+  return edges;
+}
+
+/// How far `point` lies outside the polygon of `edges` (even-odd rule), 0 inside or within kEpsilon of
+/// an edge. One pass over the edges with squared distances, each as closestPointOnSegment gives it.
+double distanceOutside(const std::vector<MeasuredEdge>& edges, const Point& point)
+{
+  double nearest_squared = std::numeric_limits<double>::infinity();
+  bool inside = false;
+  for (const MeasuredEdge& edge : edges) {
+    const Point closest =
+        edge.squared_length <= geometry::kEpsilon * geometry::kEpsilon
+            ? edge.start
+            : Point(edge.start +
+                    std::clamp((point - edge.start).dot(edge.direction) / edge.squared_length, 0.0, 1.0) *
+                        edge.direction);
+    nearest_squared = std::min(nearest_squared, (point - closest).squaredNorm());
+    if ((edge.start.y() > point.y()) != (edge.end.y() > point.y()) &&
+        point.x() < edge.start.x() + (point.y() - edge.start.y()) * edge.direction.x() / edge.direction.y()) {
       inside = !inside;
     }
   }
@@ -103,11 +127,16 @@ std::vector<FreeSpaceRaster::CellDistance> FreeSpaceRaster::cellDistancesNear(co
       cellRange(bounds.minimum.y(), bounds.maximum.y(), window_.minimum.y(), rows_);
   const auto [first_column, last_column] =
       cellRange(bounds.minimum.x(), bounds.maximum.x(), window_.minimum.x(), columns_);
+  const std::vector<MeasuredEdge> edges = measuredEdges(polygon);
+  if (last_row >= first_row && last_column >= first_column) {
+    near.reserve(static_cast<std::size_t>(last_row - first_row + 1) *
+                 static_cast<std::size_t>(last_column - first_column + 1));
+  }
   for (int row = first_row; row <= last_row; ++row) {
     for (int column = first_column; column <= last_column; ++column) {
       const Point centre(window_.minimum.x() + (column + 0.5) * resolution_,
                          window_.minimum.y() + (row + 0.5) * resolution_);
-      const double outside = distanceOutside(polygon, centre);
+      const double outside = distanceOutside(edges, centre);
       if (outside <= reach) {
         near.push_back(CellDistance{index(row, column), outside});
       }
@@ -146,6 +175,16 @@ std::optional<std::size_t> FreeSpaceRaster::nearestFree(const Point& point, std:
 {
   return nearestCell(point, radius_cells,
                      [&](std::size_t cell) { return (cells_[cell] & blocked_layers) == 0; });
+}
+
+std::optional<std::size_t> FreeSpaceRaster::nearestFree(const Point& point, std::uint8_t blocked_layers,
+                                                        int radius_cells,
+                                                        const std::vector<std::size_t>& closed_sorted) const
+{
+  return nearestCell(point, radius_cells, [&](std::size_t cell) {
+    return (cells_[cell] & blocked_layers) == 0 &&
+           !std::binary_search(closed_sorted.begin(), closed_sorted.end(), cell);
+  });
 }
 
 std::vector<std::size_t> FreeSpaceRaster::borderCells() const

@@ -2,10 +2,13 @@
 // A small occupancy raster over a window of the local layer, used to tell free-space components apart
 // (with and without the movable object). Cells are filled by scanline from polygons.
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "common/geometry/polygon.hpp"
@@ -41,35 +44,100 @@ class FreeSpaceRaster {
   /// last one of the first): where free space leaves the window.
   std::vector<std::size_t> borderCells() const;
 
+  /// The buffers searchFrom() works in, kept between searches so that a search run for every pose a push
+  /// search judges neither allocates nor clears raster-sized memory. One per thread of searches; any
+  /// raster may use it.
+  class SearchScratch {
+   private:
+    friend class FreeSpaceRaster;
+    struct Queued {
+      std::size_t cell;
+      int column;  // so that the cell's neighbours are found without a division
+    };
+    std::vector<std::uint32_t> stamps;  // the search that last reached (or closed) each cell
+    std::vector<int> steps;             // valid where stamps holds the current search
+    std::vector<Queued> queue;
+    std::uint32_t search = 0;
+  };
+
   /// Visits the cells carrying none of `blocked_layers` 4-connected to `start`, nearest first, with the
   /// number of 4-neighbour steps from `start` to each, until `visit` returns true; returns whether it did.
   /// A template: it runs over thousands of cells for each pose a push search judges.
   template <typename Visit>
   bool searchFrom(std::size_t start, std::uint8_t blocked_layers, Visit&& visit) const
   {
+    SearchScratch scratch;
+    return searchFrom(start, blocked_layers, {}, scratch, std::forward<Visit>(visit));
+  }
+  /// The same search with the cells of `closed` blocked as well (the raster with an object's cells marked,
+  /// without a copy of it), in `scratch`'s buffers.
+  template <typename Visit>
+  bool searchFrom(std::size_t start, std::uint8_t blocked_layers, const std::vector<std::size_t>& closed,
+                  SearchScratch& scratch, Visit&& visit) const
+  {
     if (start >= cells_.size() || (cells_[start] & blocked_layers) != 0) {
       return false;
     }
-    std::vector<int> steps(cells_.size(), -1);
-    std::vector<std::size_t> queue{start};
+    constexpr int kClosed = -1;
+    if (scratch.stamps.size() < cells_.size() ||
+        scratch.search == std::numeric_limits<std::uint32_t>::max()) {
+      scratch.stamps.assign(std::max(scratch.stamps.size(), cells_.size()), 0);
+      scratch.steps.resize(scratch.stamps.size());
+      scratch.search = 0;
+    }
+    const std::uint32_t search = ++scratch.search;
+    std::vector<std::uint32_t>& stamps = scratch.stamps;
+    std::vector<int>& steps = scratch.steps;
+    for (const std::size_t cell : closed) {
+      stamps[cell] = search;
+      steps[cell] = kClosed;
+    }
+    if (stamps[start] == search) {
+      return false;
+    }
+    std::vector<SearchScratch::Queued>& queue = scratch.queue;
+    queue.clear();
+    queue.push_back(
+        SearchScratch::Queued{start, static_cast<int>(start % static_cast<std::size_t>(columns_))});
+    stamps[start] = search;
     steps[start] = 0;
+    const auto columns = static_cast<std::size_t>(columns_);
     for (std::size_t head = 0; head < queue.size(); ++head) {
-      const std::size_t cell = queue[head];
+      const SearchScratch::Queued current = queue[head];
+      const std::size_t cell = current.cell;
       if (visit(cell, steps[cell])) {
         return true;
       }
-      forEachFreeNeighbour(cell, blocked_layers, [&](std::size_t next) {
-        if (steps[next] < 0) {
+      const auto reach = [&](std::size_t next, int column) {
+        if ((cells_[next] & blocked_layers) == 0 && stamps[next] != search) {
+          stamps[next] = search;
           steps[next] = steps[cell] + 1;
-          queue.push_back(next);
+          queue.push_back(SearchScratch::Queued{next, column});
         }
-      });
+      };
+      // The order of forEachFreeNeighbour: the row before, the row after, the column before, the one after.
+      if (cell >= columns) {
+        reach(cell - columns, current.column);
+      }
+      if (cell + columns < cells_.size()) {
+        reach(cell + columns, current.column);
+      }
+      if (current.column > 0) {
+        reach(cell - 1, current.column - 1);
+      }
+      if (current.column + 1 < columns_) {
+        reach(cell + 1, current.column + 1);
+      }
     }
     return false;
   }
   /// The cell nearest `point` within `radius_cells` (Chebyshev rings) carrying none of `blocked_layers`.
   std::optional<std::size_t> nearestFree(const geometry::Point& point, std::uint8_t blocked_layers,
                                          int radius_cells) const;
+  /// The same, with the cells of `closed_sorted` (ascending) taken as blocked too.
+  std::optional<std::size_t> nearestFree(const geometry::Point& point, std::uint8_t blocked_layers,
+                                         int radius_cells,
+                                         const std::vector<std::size_t>& closed_sorted) const;
   std::size_t cellCount() const { return cells_.size(); }
 
   /// 4-connected components of the cells carrying none of `blocked_layers`; blocked cells get -1.

@@ -146,13 +146,14 @@ void PushCollisionChecker::findThinWalls(double inflation)
 
 bool PushCollisionChecker::objectCollides(const Pose2& from, const Pose2& to, std::size_t side) const
 {
+  const BodyToWorld to_world(to);
   const Bounds after = boundsOf(transformed(collision_outlines_[side], to));
   for (std::size_t index = 0; index < obstacles_.size(); ++index) {
     if (!obstacle_bounds_[index].overlaps(after)) {
       continue;
     }
     for (const Point& sample : collision_samples_[side]) {
-      const Point world = to.transform(sample);
+      const Point world = to_world(sample);
       if (obstacle_bounds_[index].contains(world) &&
           geometry::locatePoint(obstacles_[index], world) == geometry::Containment::Inside &&
           geometry::distanceToBoundary(obstacles_[index], world) > allowed_depth_m_) {
@@ -163,6 +164,7 @@ bool PushCollisionChecker::objectCollides(const Pose2& from, const Pose2& to, st
   if (thin_walls_.empty()) {
     return false;  // only a thin wall looks at where the move starts
   }
+  const BodyToWorld from_world(from);
   const Bounds before = boundsOf(transformed(collision_outlines_[side], from));
   const Bounds swept{before.minimum.cwiseMin(after.minimum), before.maximum.cwiseMax(after.maximum)};
   for (const ThinWall& wall : thin_walls_) {
@@ -170,8 +172,8 @@ bool PushCollisionChecker::objectCollides(const Pose2& from, const Pose2& to, st
       continue;
     }
     for (std::size_t index = 0; index < collision_samples_[side].size(); ++index) {
-      if (!wall.exempt[side][index] && wall.crossedBy(from.transform(collision_samples_[side][index]),
-                                                      to.transform(collision_samples_[side][index]))) {
+      if (!wall.exempt[side][index] && wall.crossedBy(from_world(collision_samples_[side][index]),
+                                                      to_world(collision_samples_[side][index]))) {
         return true;
       }
     }
@@ -186,9 +188,10 @@ bool PushCollisionChecker::turnConfined(const Pose2& pose, const Vector& depth_d
   }
   // A point of an inflated obstacle deeper than inflation - gap is closer than the gap to the wall.
   const double depth = inflation_m_ - kConfinedFaceGapM;
+  const BodyToWorld to_world(pose);
   return std::all_of(face_.ends.begin(), face_.ends.end(), [&](const Point& end) {
-    return insideDeeperThan(pose.transform(end), depth) &&
-           insideDeeperThan(pose.transform(end + depth_direction * kConfinedFaceProbeM), depth);
+    return insideDeeperThan(to_world(end), depth) &&
+           insideDeeperThan(to_world(end + depth_direction * kConfinedFaceProbeM), depth);
   });
 }
 
@@ -211,8 +214,9 @@ bool PushCollisionChecker::pointBlocked(const Point& world) const
 
 bool PushCollisionChecker::switchFree(const Pose2& pose, const SwitchPath& path) const
 {
+  const BodyToWorld to_world(pose);
   return std::none_of(path.samples.begin(), path.samples.end(),
-                      [&](const Point& sample) { return pointBlocked(pose.transform(sample)); });
+                      [&](const Point& sample) { return pointBlocked(to_world(sample)); });
 }
 
 bool PushCollisionChecker::crossesAnObstacle(const geometry::Segment& segment) const

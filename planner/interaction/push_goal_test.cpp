@@ -157,16 +157,18 @@ bool PushGoalTest::onwardOpen(const Pose2& pose, const PushGoalRegion& region) c
                    })) {
     return true;
   }
-  FreeSpaceRaster moved = *surroundings_;
+  // The cells the moved object covers are closed to the search (the surroundings carry obstacles only).
   std::vector<std::size_t> covered;
+  covered.reserve(neighbourhood.size());
   for (const FreeSpaceRaster::CellDistance& near : neighbourhood) {
     if (near.distance_m <= clearance_m_) {
       covered.push_back(near.cell);
     }
   }
-  moved.mark(covered, FreeSpaceRaster::kMovable);
-  const std::uint8_t blocked = FreeSpaceRaster::kObstacle | FreeSpaceRaster::kMovable;
-  const auto start_cell = moved.nearestFree(region.segment.start, blocked, waypoint_search_cells_);
+  std::sort(covered.begin(), covered.end());
+  const std::uint8_t blocked = FreeSpaceRaster::kObstacle;
+  const auto start_cell =
+      surroundings_->nearestFree(region.segment.start, blocked, waypoint_search_cells_, covered);
   if (!start_cell) {
     return false;
   }
@@ -174,7 +176,7 @@ bool PushGoalTest::onwardOpen(const Pose2& pose, const PushGoalRegion& region) c
   int missing = region.outlet_count;
   bool too_far = false;
   // Nearest first: an outlet's first cell is as near as it gets.
-  moved.searchFrom(*start_cell, blocked, [&](std::size_t cell, int steps) {
+  surroundings_->searchFrom(*start_cell, blocked, covered, onward_search_, [&](std::size_t cell, int steps) {
     const auto outlet = static_cast<std::size_t>(region.outlets[cell]);
     if (outlet != 0 && !reached[outlet]) {
       if (steps > region.outlet_step_limits[outlet]) {

@@ -3,7 +3,8 @@
 // by the vehicle's half width and a margin, is clear of the object, and the object leaves the way on
 // open: pushed along a corridor it would close the corridor further on, so where either side's free space
 // reached beyond the surroundings before the push, the start waypoint must still reach it, and not much
-// farther round than with the object gone. Built once per object; every test is const.
+// farther round than with the object gone. Built once per object; every test is const, and the tests of one
+// PushGoalTest run on one thread (the onward check keeps its search buffers between calls).
 
 #include <optional>
 
@@ -60,6 +61,9 @@ class PushGoalTest {
   int waypoint_search_cells_ = 0;
   /// The obstacles around the object, out to beyond the farthest push, for the onward check.
   std::optional<FreeSpaceRaster> surroundings_;
+  /// The onward check's search buffers, kept from one pose to the next: the const tests of one
+  /// PushGoalTest run on one thread (each planning builds its own).
+  mutable FreeSpaceRaster::SearchScratch onward_search_;
 };
 
 }  // namespace ifar::interaction

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 #include "common/geometry/polygon.hpp"
@@ -77,6 +78,78 @@ TEST(FreeSpaceRasterTest, CellsNearAgreeWithThePolygonsOwnContainmentAndDistance
     }
     EXPECT_EQ(raster.cellsNear(ell, reach), expected) << "reach " << reach;
   }
+}
+
+// Every cell a search visits, in order, with its steps.
+using Visits = std::vector<std::pair<std::size_t, int>>;
+
+TEST(FreeSpaceRasterTest, ASearchWithClosedCellsVisitsWhatTheRasterWithThoseCellsMarkedDoes)
+{
+  // A wall across the window with a gap at columns 6-7, and an object's cells that close part of the gap.
+  FreeSpaceRaster raster = unitWindow();
+  raster.fill({Point(0.0, 0.42), Point(0.58, 0.42), Point(0.58, 0.48), Point(0.0, 0.48)},
+              FreeSpaceRaster::kObstacle);
+  raster.fill({Point(0.82, 0.42), Point(1.0, 0.42), Point(1.0, 0.48), Point(0.82, 0.48)},
+              FreeSpaceRaster::kObstacle);
+  const std::vector<std::size_t> closed = {cellAt(4, 6), cellAt(5, 6), cellAt(5, 5)};
+  FreeSpaceRaster marked = raster;
+  marked.mark(closed, FreeSpaceRaster::kMovable);
+  const auto search = [](const FreeSpaceRaster& on, const auto& run) {
+    Visits visits;
+    run(on, [&](std::size_t cell, int steps) {
+      visits.emplace_back(cell, steps);
+      return false;
+    });
+    return visits;
+  };
+  const std::uint8_t both = FreeSpaceRaster::kObstacle | FreeSpaceRaster::kMovable;
+  const Visits expected = search(marked, [&](const FreeSpaceRaster& on, const auto& visit) {
+    on.searchFrom(cellAt(0, 0), both, visit);
+  });
+  // Only column 7 of the gap stays open (8 wall cells, 3 closed): the far side is reached through it,
+  // 12 steps to cell (5, 7).
+  ASSERT_EQ(expected.size(), 100U - 8U - 3U);
+  const auto far_side = std::find_if(expected.begin(), expected.end(),
+                                     [](const auto& visit) { return visit.first == cellAt(5, 7); });
+  ASSERT_NE(far_side, expected.end());
+  EXPECT_EQ(far_side->second, 12);
+  // One scratch for several searches of different rasters: what one search reached must not leak into
+  // the next.
+  FreeSpaceRaster::SearchScratch scratch;
+  const FreeSpaceRaster other = unitWindow();
+  for (int round = 0; round < 3; ++round) {
+    EXPECT_EQ(search(raster,
+                     [&](const FreeSpaceRaster& on, const auto& visit) {
+                       on.searchFrom(cellAt(0, 0), FreeSpaceRaster::kObstacle, closed, scratch, visit);
+                     }),
+              expected)
+        << "round " << round;
+    EXPECT_EQ(search(other,
+                     [&](const FreeSpaceRaster& on, const auto& visit) {
+                       on.searchFrom(cellAt(9, 9), FreeSpaceRaster::kObstacle, {}, scratch, visit);
+                     })
+                  .size(),
+              100U);
+  }
+  // A start on a closed cell reaches nothing.
+  EXPECT_TRUE(search(raster, [&](const FreeSpaceRaster& on, const auto& visit) {
+                on.searchFrom(cellAt(5, 5), FreeSpaceRaster::kObstacle, closed, scratch, visit);
+              }).empty());
+}
+
+TEST(FreeSpaceRasterTest, NearestFreeSkipsClosedCellsAsItSkipsMarkedOnes)
+{
+  const FreeSpaceRaster raster = unitWindow();
+  std::vector<std::size_t> closed = {cellAt(5, 5), cellAt(4, 4), cellAt(4, 5), cellAt(4, 6), cellAt(5, 4)};
+  std::sort(closed.begin(), closed.end());
+  FreeSpaceRaster marked = raster;
+  marked.mark(closed, FreeSpaceRaster::kMovable);
+  const Point point(0.55, 0.55);
+  const auto expected = marked.nearestFree(point, FreeSpaceRaster::kObstacle | FreeSpaceRaster::kMovable, 2);
+  ASSERT_TRUE(expected.has_value());
+  EXPECT_EQ(*expected, cellAt(5, 6));
+  EXPECT_EQ(raster.nearestFree(point, FreeSpaceRaster::kObstacle, 2, closed), expected);
+  EXPECT_EQ(raster.nearestFree(point, FreeSpaceRaster::kObstacle, 2), cellAt(5, 5));
 }
 
 }  // namespace
