@@ -227,7 +227,8 @@ std::vector<int> FreeSpaceRaster::labelComponents(std::uint8_t blocked_layers, i
     while (!stack.empty()) {
       const std::size_t cell = stack.back();
       stack.pop_back();
-      forEachFreeNeighbour(cell, blocked_layers, [&](std::size_t next) {
+      const auto column = static_cast<int>(cell % static_cast<std::size_t>(columns_));
+      forEachFreeNeighbour(cell, column, blocked_layers, [&](std::size_t next, int /*next_column*/) {
         if (labels[next] < 0) {
           labels[next] = component_count;
           stack.push_back(next);

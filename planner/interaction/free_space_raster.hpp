@@ -55,7 +55,7 @@ class FreeSpaceRaster {
       int column;  // so that the cell's neighbours are found without a division
     };
     std::vector<std::uint32_t> stamps;  // the search that last reached (or closed) each cell
-    std::vector<int> steps;             // valid where stamps holds the current search
+    std::vector<int> steps;             // valid where the current search reached the cell
     std::vector<Queued> queue;
     std::uint32_t search = 0;
   };
@@ -78,7 +78,6 @@ class FreeSpaceRaster {
     if (start >= cells_.size() || (cells_[start] & blocked_layers) != 0) {
       return false;
     }
-    constexpr int kClosed = -1;
     if (scratch.stamps.size() < cells_.size() ||
         scratch.search == std::numeric_limits<std::uint32_t>::max()) {
       scratch.stamps.assign(std::max(scratch.stamps.size(), cells_.size()), 0);
@@ -89,8 +88,7 @@ class FreeSpaceRaster {
     std::vector<std::uint32_t>& stamps = scratch.stamps;
     std::vector<int>& steps = scratch.steps;
     for (const std::size_t cell : closed) {
-      stamps[cell] = search;
-      steps[cell] = kClosed;
+      stamps[cell] = search;  // taken as reached: never queued
     }
     if (stamps[start] == search) {
       return false;
@@ -101,33 +99,19 @@ class FreeSpaceRaster {
         SearchScratch::Queued{start, static_cast<int>(start % static_cast<std::size_t>(columns_))});
     stamps[start] = search;
     steps[start] = 0;
-    const auto columns = static_cast<std::size_t>(columns_);
     for (std::size_t head = 0; head < queue.size(); ++head) {
       const SearchScratch::Queued current = queue[head];
       const std::size_t cell = current.cell;
       if (visit(cell, steps[cell])) {
         return true;
       }
-      const auto reach = [&](std::size_t next, int column) {
-        if ((cells_[next] & blocked_layers) == 0 && stamps[next] != search) {
+      forEachFreeNeighbour(cell, current.column, blocked_layers, [&](std::size_t next, int column) {
+        if (stamps[next] != search) {
           stamps[next] = search;
           steps[next] = steps[cell] + 1;
           queue.push_back(SearchScratch::Queued{next, column});
         }
-      };
-      // The order of forEachFreeNeighbour: the row before, the row after, the column before, the one after.
-      if (cell >= columns) {
-        reach(cell - columns, current.column);
-      }
-      if (cell + columns < cells_.size()) {
-        reach(cell + columns, current.column);
-      }
-      if (current.column > 0) {
-        reach(cell - 1, current.column - 1);
-      }
-      if (current.column + 1 < columns_) {
-        reach(cell + 1, current.column + 1);
-      }
+      });
     }
     return false;
   }
@@ -155,20 +139,29 @@ class FreeSpaceRaster {
     return static_cast<std::size_t>(row) * static_cast<std::size_t>(columns_) +
            static_cast<std::size_t>(column);
   }
-  /// Calls `step(next)` for each 4-neighbour of `cell` inside the window that carries none of `blocked`.
+  /// Calls `step(next, next_column)` for each 4-neighbour of `cell` (in `column`) inside the window that
+  /// carries none of `blocked`: the row before, the row after, the column before, the column after. The
+  /// caller passes the column, so a search that carries it finds the neighbours without a division.
   template <typename Step>
-  void forEachFreeNeighbour(std::size_t cell, std::uint8_t blocked, Step&& step) const
+  void forEachFreeNeighbour(std::size_t cell, int column, std::uint8_t blocked, Step&& step) const
   {
-    const int row = static_cast<int>(cell / static_cast<std::size_t>(columns_));
-    const int column = static_cast<int>(cell % static_cast<std::size_t>(columns_));
-    const int neighbours[4][2] = {{row - 1, column}, {row + 1, column}, {row, column - 1}, {row, column + 1}};
-    for (const auto& neighbour : neighbours) {
-      if (neighbour[0] >= 0 && neighbour[0] < rows_ && neighbour[1] >= 0 && neighbour[1] < columns_) {
-        const std::size_t next = index(neighbour[0], neighbour[1]);
-        if ((cells_[next] & blocked) == 0) {
-          step(next);
-        }
+    const auto columns = static_cast<std::size_t>(columns_);
+    const auto visit = [&](std::size_t next, int next_column) {
+      if ((cells_[next] & blocked) == 0) {
+        step(next, next_column);
       }
+    };
+    if (cell >= columns) {
+      visit(cell - columns, column);
+    }
+    if (cell + columns < cells_.size()) {
+      visit(cell + columns, column);
+    }
+    if (column > 0) {
+      visit(cell - 1, column - 1);
+    }
+    if (column + 1 < columns_) {
+      visit(cell + 1, column + 1);
     }
   }
   std::optional<std::size_t> nearestCell(const geometry::Point& point, int radius_cells,
