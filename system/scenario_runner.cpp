@@ -12,7 +12,6 @@
 
 #include <fmt/format.h>
 
-#include "common/percentile.hpp"
 #include "executive/modes/mode.hpp"
 #include "system/achievable_map.hpp"
 #include "system/run_trace.hpp"
@@ -31,18 +30,6 @@ constexpr std::int64_t kReportPeriodUs = 1'000'000;
 double secondsSince(std::chrono::steady_clock::time_point start)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-FrameTimes frameTimes(const std::vector<double>& milliseconds)
-{
-  FrameTimes times;
-  times.frames = milliseconds.size();
-  if (!milliseconds.empty()) {
-    times.median_ms = common::nearestRankPercentile(milliseconds, 50.0);
-    times.p99_ms = common::nearestRankPercentile(milliseconds, 99.0);
-    times.max_ms = *std::max_element(milliseconds.begin(), milliseconds.end());
-  }
-  return times;
 }
 
 /// Why the request cannot run, empty when it can.
@@ -122,9 +109,8 @@ class Scenario {
   std::string planner_no_path_;  // the planner's status message while it has no path
   bool ended_ = false;
   SaturatedPushWatch saturated_pushes_;
-  std::vector<double> frame_ms_;        // per planner frame, for summary_.planner_frame
-  std::vector<double> interaction_ms_;  // ... and summary_.interaction
-  RunTraceRecorder trace_;              // of the leg in hand
+  PlannerFrameRecord frames_;  // each planner frame's stage times, for summary_'s
+  RunTraceRecorder trace_;     // of the leg in hand
   // The goal in hand: its index (0: request.goal, then request.further_goals), where it is, and where
   // its leg began.
   std::size_t goal_index_ = 0;
@@ -211,8 +197,7 @@ void Scenario::plannerFinished(const planner::PlannerJob& job, const planner::Pl
   if (!job.frame) {
     return;
   }
-  frame_ms_.push_back(result.status.timings.total_ms);
-  interaction_ms_.push_back(result.status.timings.interaction_ms);
+  frames_.add(result.status.timings);
   if (observe_frame_) {
     observe_frame_(
         FrameView{simulatedSeconds(now_us), stack_.planner(), result, summary_.trajectory, objects_});
@@ -383,8 +368,9 @@ RunSummary Scenario::run()
   }
   summary_.sim_time_s = simulatedSeconds(now_us);
   summary_.goal_distance_m = (vehicle_.position() - goal_).norm();
-  summary_.planner_frame = frameTimes(frame_ms_);
-  summary_.interaction = frameTimes(interaction_ms_);
+  summary_.planner_frame = frames_.total();
+  summary_.interaction = frames_.interaction();
+  summary_.stages = frames_.stages();
   summary_.undecided_saturated_pushes = saturated_pushes_.undecided();
   summary_.longest_saturated_push_s = saturated_pushes_.longestUndecidedSeconds();
   for (const auto& object : objects_) {

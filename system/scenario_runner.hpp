@@ -23,6 +23,7 @@
 #include "planner/node/node_settings.hpp"
 #include "sim/node/node_settings.hpp"
 #include "sim/world/world.hpp"
+#include "system/frame_times.hpp"
 #include "system/loss_accounting.hpp"
 
 namespace ifar::runner {
@@ -56,15 +57,6 @@ struct RunRequest {
   bool account_losses = true;
 };
 
-/// Wall-clock milliseconds of one kind of planner work over a run's frames (this process's clock, so a
-/// loaded machine shows in them). NaN while no frame was timed.
-struct FrameTimes {
-  std::size_t frames = 0;
-  double median_ms = std::numeric_limits<double>::quiet_NaN();
-  double p99_ms = std::numeric_limits<double>::quiet_NaN();  // nearest rank
-  double max_ms = std::numeric_limits<double>::quiet_NaN();
-};
-
 /// How long past the tactile monitor's window a push at maximum force may last before its decision
 /// counts as missing: the decision has to reach the push sequence and the vehicle has to ease off.
 constexpr double kDecisionAllowanceS = 2.0;
@@ -96,6 +88,7 @@ struct RunSummary {
   double goal_distance_m = 0.0;             // final ground-truth distance to the goal
   FrameTimes planner_frame;                 // each planner frame: perception, graphs, interaction, search
   FrameTimes interaction;                   // its interaction stage alone (no frame budget in the runner)
+  StageFrameTimes stages;                   // the frame's other stages, each alone
   std::vector<geometry::Pose2> trajectory;  // ground truth, one per control cycle
   std::vector<geometry::Pose2> final_objects;  // ground truth object poses at the end, world-file order
   /// Where the distance beyond the achievable way went (valid only when asked for and computable): with

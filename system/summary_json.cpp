@@ -21,6 +21,13 @@ std::string timesJson(const FrameTimes& times)
                      jsonNumber(times.median_ms), jsonNumber(times.p99_ms), jsonNumber(times.max_ms));
 }
 
+std::string stagesJson(const StageFrameTimes& stages)
+{
+  return fmt::format("{{\"perception\":{},\"local_graph\":{},\"merge\":{},\"search\":{}}}",
+                     timesJson(stages.perception), timesJson(stages.local_graph), timesJson(stages.merge),
+                     timesJson(stages.search));
+}
+
 std::string lossesJson(const LossAccount& losses)
 {
   if (!losses.valid) {
@@ -57,14 +64,15 @@ std::string summaryJson(const RunSummary& summary)
       "{{\"arrived\":{},\"reason\":{},\"distance_m\":{},\"time_s\":{},\"pushes\":{},\"replans\":{},"
       "\"affordance_updates\":{},\"blocked_passages\":{},\"escalations\":{},\"goal_distance_m\":{},"
       "\"wall_time_s\":{},"
-      "\"planner_frame_ms\":{},\"interaction_ms\":{},\"undecided_saturated_pushes\":{},"
+      "\"planner_frame_ms\":{},\"interaction_ms\":{},\"stage_ms\":{},\"undecided_saturated_pushes\":{},"
       "\"longest_saturated_push_s\":{},\"routes\":{},\"routes_switched\":{},\"losses\":{},\"legs\":{}}}",
       summary.arrived ? "true" : "false", common::jsonString(summary.reason), jsonNumber(summary.distance_m),
       jsonNumber(summary.sim_time_s), summary.pushes, summary.replans, summary.affordance_updates,
       summary.blocked_passages, summary.escalations, jsonNumber(summary.goal_distance_m),
       jsonNumber(summary.wall_time_s), timesJson(summary.planner_frame), timesJson(summary.interaction),
-      summary.undecided_saturated_pushes, jsonNumber(summary.longest_saturated_push_s), summary.routes,
-      summary.routes_switched, lossesJson(summary.losses), legsJson(summary.legs));
+      stagesJson(summary.stages), summary.undecided_saturated_pushes,
+      jsonNumber(summary.longest_saturated_push_s), summary.routes, summary.routes_switched,
+      lossesJson(summary.losses), legsJson(summary.legs));
 }
 
 }  // namespace ifar::runner

@@ -84,9 +84,16 @@ import json, sys
 run = json.loads(open(sys.argv[1]).read().splitlines()[-1])
 summary = json.loads(open(sys.argv[2]).read())
 for a, b, where in [(run, summary, ""), (run["planner_frame_ms"], summary["planner_frame_ms"], "planner_frame_ms."),
-                    (run["interaction_ms"], summary["interaction_ms"], "interaction_ms.")]:
+                    (run["interaction_ms"], summary["interaction_ms"], "interaction_ms."),
+                    (run["stage_ms"], summary["stage_ms"], "stage_ms.")]:
     if list(a) != list(b):
         sys.exit("keys differ at %s: %s / %s" % (where or "top", list(a), list(b)))
+# Every PLANNER_STATUS gives each stage a time, and a stage is a part of its frame.
+for source, where in [(run, "ifar run"), (summary, "ifar run-summary")]:
+    frames = source["planner_frame_ms"]
+    for stage, times in source["stage_ms"].items():
+        if times["frames"] != frames["frames"] or times["max"] is None or times["max"] > frames["max"]:
+            sys.exit("%s: stage %s %s against the frames %s" % (where, stage, times, frames))
 if summary["losses"] != {"valid": False, "problem": "not computed from a log (ifar run computes it)"}:
     sys.exit("losses: %s" % summary["losses"])
 if summary["pushes"] != run["pushes"] or abs(summary["distance_m"] - run["distance_m"]) > 0.1:

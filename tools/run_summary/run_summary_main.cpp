@@ -8,7 +8,6 @@
 // events that could be read, with a warning on stderr naming the first bad byte; a log in which no event
 // can be read is an error.
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -21,7 +20,6 @@
 #include "common/command_line.hpp"
 #include "common/config_search.hpp"
 #include "common/lcm_log/log_reader.hpp"
-#include "common/percentile.hpp"
 #include "ifar/affordance_t.hpp"
 #include "ifar/exec_status_t.hpp"
 #include "ifar/path_t.hpp"
@@ -30,6 +28,7 @@
 #include "ifar/world_state_t.hpp"
 #include "lcmtypes/checked_decode.hpp"
 #include "sim/world/world_file.hpp"
+#include "system/frame_times.hpp"
 #include "system/run_picture.hpp"
 #include "system/summary_json.hpp"
 
@@ -62,19 +61,6 @@ bool decode(const ifar::lcm_log::LogEvent& event, Message& message)
 {
   return ifar::lcmtypes::decodeLcm(message, event.data.data(), event.data.size()).bytes ==
          static_cast<int>(event.data.size());
-}
-
-/// Median, p99 (nearest rank) and maximum of per-frame times, as the headless runner reports them.
-ifar::runner::FrameTimes frameTimes(const std::vector<double>& milliseconds)
-{
-  ifar::runner::FrameTimes times;
-  times.frames = milliseconds.size();
-  if (!milliseconds.empty()) {
-    times.median_ms = ifar::common::nearestRankPercentile(milliseconds, 50.0);
-    times.p99_ms = ifar::common::nearestRankPercentile(milliseconds, 99.0);
-    times.max_ms = *std::max_element(milliseconds.begin(), milliseconds.end());
-  }
-  return times;
 }
 
 }  // namespace
@@ -140,8 +126,7 @@ int main(int argc, char** argv)
   int affordance_updates = 0;
   int blocked_passages = 0;
   int paths = 0;
-  std::vector<double> frame_ms;
-  std::vector<double> interaction_ms;
+  ifar::runner::PlannerFrameRecord frames;
   std::int64_t first_event_us = -1;
   std::int64_t last_event_us = 0;
   int undecodable = 0;
@@ -182,8 +167,8 @@ int main(int argc, char** argv)
     } else if (event.channel == "PLANNER_STATUS") {
       ifar::planner_status_t status{};
       if (decode(event, status)) {
-        frame_ms.push_back(status.total_ms);
-        interaction_ms.push_back(status.interaction_ms);
+        frames.add(ifar::planner::StageTimings{status.perception_ms, status.local_graph_ms, status.merge_ms,
+                                               status.interaction_ms, status.search_ms, status.total_ms});
       } else {
         ++undecodable;
       }
@@ -249,8 +234,9 @@ int main(int argc, char** argv)
     summary.affordance_updates = affordance_updates;
     summary.blocked_passages = blocked_passages;
     summary.goal_distance_m = remaining;
-    summary.planner_frame = frameTimes(frame_ms);
-    summary.interaction = frameTimes(interaction_ms);
+    summary.planner_frame = frames.total();
+    summary.interaction = frames.interaction();
+    summary.stages = frames.stages();
     summary.losses.problem = "not computed from a log (ifar run computes it)";
     std::printf("%s\n", ifar::runner::summaryJson(summary).c_str());
   } else {

@@ -26,6 +26,8 @@ TEST(RunnerSummaryJson, ExactLine)
   summary.goal_distance_m = 0.42;
   summary.planner_frame = FrameTimes{103, 4.1, 9.75, 12.0};
   summary.interaction = FrameTimes{103, 0.0, 2.5, 140.9};
+  summary.stages = StageFrameTimes{FrameTimes{103, 2.0, 6.5, 7.0}, FrameTimes{103, 0.5, 1.25, 1.5},
+                                   FrameTimes{103, 0.25, 0.5, 0.75}, FrameTimes{103, 0.125, 0.375, 2.0}};
   summary.undecided_saturated_pushes = 1;
   summary.longest_saturated_push_s = 6.25;
   summary.trajectory = {geometry::Pose2{1.0, 2.0, 0.0}};
@@ -43,6 +45,10 @@ TEST(RunnerSummaryJson, ExactLine)
       "\"goal_distance_m\":0.420,\"wall_time_s\":12.500,\"planner_frame_ms\":{\"frames\":103,\"median\":4."
       "100,\"p99\":9.750,\"max\":12.000},"
       "\"interaction_ms\":{\"frames\":103,\"median\":0.000,\"p99\":2.500,\"max\":140.900},"
+      "\"stage_ms\":{\"perception\":{\"frames\":103,\"median\":2.000,\"p99\":6.500,\"max\":7.000},"
+      "\"local_graph\":{\"frames\":103,\"median\":0.500,\"p99\":1.250,\"max\":1.500},"
+      "\"merge\":{\"frames\":103,\"median\":0.250,\"p99\":0.500,\"max\":0.750},"
+      "\"search\":{\"frames\":103,\"median\":0.125,\"p99\":0.375,\"max\":2.000}},"
       "\"undecided_saturated_pushes\":1,\"longest_saturated_push_s\":6.250,\"routes\":4,\"routes_switched\":"
       "1,"
       "\"losses\":{\"valid\":true,\"achievable_m\":21.000,\"remaining_m\":0.420,\"excess_m\":2.877,"
