@@ -44,6 +44,17 @@ WorldSetResult namosimWorlds(const std::string& folder, double vehicle_width_m)
       result.notes.push_back(stem + ": not imported: " + first.world.error());
       continue;
     }
+    if (first.incomplete) {
+      // Driven as it stands, such a file measures nothing: with no robot drawn the scale is a guess
+      // (1 unit = 1 cm makes a room-sized map a toy one the vehicle cannot stand in) and the start is
+      // made up; a file without walls or goals is no scenario either.
+      std::string why = stem + ": not driven: not a complete scenario";
+      for (const std::string& warning : first.warnings) {
+        why.append("; ").append(warning);
+      }
+      result.notes.push_back(why);
+      continue;
+    }
     std::vector<std::string> driven_robots;
     for (const sim::NamosimRobotSummary& robot : first.robots) {
       if (!robot.goals.empty()) {

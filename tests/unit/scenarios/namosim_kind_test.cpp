@@ -1,8 +1,9 @@
-// The namosim kind's task list on the scenario SVGs of the shared data: every file gives tasks, one per goal
-// of each robot with goals, as many as the importer reads for that robot.
+// The namosim kind's task list on the scenario SVGs of the shared data: every complete file gives tasks, one
+// per goal of each robot with goals, as many as the importer reads for that robot.
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <map>
 #include <string>
@@ -47,6 +48,7 @@ TEST(NamosimKind, EverySvgGivesATaskPerGoalOfEachRobot)
     tasks_per_file[file] += tasks.size();
   }
   std::size_t files = 0;
+  std::size_t incomplete = 0;
   for (const auto& entry : std::filesystem::directory_iterator(folder)) {
     if (entry.path().extension() != ".svg") {
       continue;
@@ -61,10 +63,22 @@ TEST(NamosimKind, EverySvgGivesATaskPerGoalOfEachRobot)
     for (const sim::NamosimRobotSummary& robot : import.robots) {
       goals += robot.goals.size();
     }
+    if (import.incomplete) {
+      // Not a scenario as it stands (citi_ing draws no robot: its scale is unknown): no task, a note.
+      EXPECT_EQ(tasks_per_file[stem], 0u) << stem;
+      const bool noted = std::any_of(set.notes.begin(), set.notes.end(), [&](const std::string& note) {
+        return note.rfind(stem + ": not driven: not a complete scenario", 0) == 0;
+      });
+      EXPECT_TRUE(noted) << stem << " has no note saying why it is not driven";
+      ++incomplete;
+      continue;
+    }
     EXPECT_GT(tasks_per_file[stem], 0u) << stem << " gave no task";
     EXPECT_EQ(tasks_per_file[stem], goals) << stem;
   }
   EXPECT_GE(files, 12u);
+  // citi_ing.svg is the one file of the shared data without a drawn robot.
+  EXPECT_EQ(incomplete, 1u);
 }
 
 TEST(NamosimKind, AMissingFolderSkipsTheKindWithANote)
