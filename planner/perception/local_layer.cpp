@@ -177,8 +177,8 @@ LocalLayer buildLocalLayer(const ClassifiedPoints& points, const geometry::Point
   const double outward_m =
       settings.exact_inflation ? settings.inflation_radius_m - reach * settings.cell_size_m : 0.0;
   // Each class gets its own image: a movable object must not merge into the wall it leans on.
-  const auto dilate_class = [&](const std::vector<geometry::Point>& class_points,
-                                std::vector<std::uint8_t>& occupancy) {
+  const auto build_class = [&](const std::vector<geometry::Point>& class_points, ObstacleClass obstacle_class,
+                               std::vector<std::uint8_t>& occupancy) {
     occupancy.assign(static_cast<std::size_t>(cells) * static_cast<std::size_t>(cells), 0);
     if (class_points.empty()) {
       return;
@@ -188,31 +188,12 @@ LocalLayer buildLocalLayer(const ClassifiedPoints& points, const geometry::Point
     // The crop holds every point inside the layer, so what falls outside it is outside the layer.
     layer.points_outside_layer += rasterise(class_points, layer.grid, image);
     cv::dilate(image, image, kernel, cv::Point(-1, -1), 1, cv::BORDER_CONSTANT, cv::Scalar(0));
-  };
-  dilate_class(points.background, layer.background_occupancy);
-  dilate_class(points.movable, layer.movable_occupancy);
-  cv::Mat background(cells, cells, CV_8UC1, layer.background_occupancy.data());
-  cv::Mat movable(cells, cells, CV_8UC1, layer.movable_occupancy.data());
-  if (!points.background.empty()) {
-    // Where the grown images of the two classes touch, their outlines would share an edge, and a way
-    // along it (no wider than nothing) would pass for free: the wall's outline takes in the object's
-    // cells next to it, so the two overlap there. A free cell between them keeps the gap open.
-    cv::Mat traced = background.clone();
-    if (!points.movable.empty()) {
-      cv::Mat beside;
-      cv::dilate(background, beside, cv::Mat::ones(3, 3, CV_8UC1), cv::Point(-1, -1), 1, cv::BORDER_CONSTANT,
-                 cv::Scalar(0));
-      traced.setTo(255, beside & movable);
-    }
-    traceContours(traced, layer.grid, ObstacleClass::Background, settings, outward_m, layer);
-  }
-  if (!points.movable.empty()) {
-    traceContours(movable, layer.grid, ObstacleClass::Movable, settings, outward_m, layer);
-  }
-  for (std::vector<std::uint8_t>* occupancy : {&layer.background_occupancy, &layer.movable_occupancy}) {
-    std::transform(occupancy->begin(), occupancy->end(), occupancy->begin(),
+    traceContours(image, layer.grid, obstacle_class, settings, outward_m, layer);
+    std::transform(occupancy.begin(), occupancy.end(), occupancy.begin(),
                    [](std::uint8_t cell) { return static_cast<std::uint8_t>(cell != 0 ? 1 : 0); });
-  }
+  };
+  build_class(points.background, ObstacleClass::Background, layer.background_occupancy);
+  build_class(points.movable, ObstacleClass::Movable, layer.movable_occupancy);
   return layer;
 }
 

@@ -244,58 +244,5 @@ TEST(LocalLayer, WithoutExactInflationBordersLieTheDiscsWholeCellsOut)
   EXPECT_NEAR(sum / sides, 2.0 * settings.cell_size_m, 0.01);
 }
 
-/// A wall along y = 0 (x from -2 to 2) and a box's face along y = `box_face_y` (x from -0.3 to 0.3), one
-/// layer; whether any point on the line x = 0.02 between the two lies strictly inside an outline of each
-/// class, and whether one lies in none.
-struct SeamProbe {
-  bool inside_both = false;
-  bool free_between = false;
-};
-
-SeamProbe probeBetweenWallAndBox(double box_face_y)
-{
-  const PerceptionSettings settings = sixtyMetreLayer();
-  ClassifiedPoints points;
-  for (double x = -2.0; x <= 2.0; x += 0.05) {
-    points.background.emplace_back(x, 0.0);
-  }
-  for (double x = -0.3; x <= 0.3; x += 0.05) {
-    points.movable.emplace_back(x, box_face_y);
-  }
-  const LocalLayer layer = buildLocalLayer(points, geometry::Point(0.0, 0.0), settings);
-  SeamProbe probe;
-  for (double y = 0.0; y <= box_face_y; y += 0.01) {
-    const geometry::Point point(0.02, y);
-    bool in_background = false;
-    bool in_movable = false;
-    for (const LayerPolygon& polygon : layer.polygons) {
-      if (geometry::locatePoint(polygon.vertices, point) == geometry::Containment::Inside) {
-        (polygon.obstacle_class == ObstacleClass::Movable ? in_movable : in_background) = true;
-      }
-    }
-    probe.inside_both = probe.inside_both || (in_background && in_movable);
-    probe.free_between = probe.free_between || (!in_background && !in_movable);
-  }
-  return probe;
-}
-
-// Grown by the half width, a box 0.6 m from a wall leaves no room between their outlines. Traced from
-// separate images (the box must not merge into the wall), the two would only share an edge, and a way
-// along that edge would pass for free; they overlap instead.
-TEST(LocalLayer, TheOutlinesOfABoxAndAWallWhoseGrownCellsTouchOverlap)
-{
-  const SeamProbe probe = probeBetweenWallAndBox(0.6);
-  EXPECT_TRUE(probe.inside_both);
-  EXPECT_FALSE(probe.free_between);
-}
-
-// A free cell between their grown cells keeps the gap open: the outlines neither meet nor overlap.
-TEST(LocalLayer, AGapBetweenABoxAndAWallStaysOpen)
-{
-  const SeamProbe probe = probeBetweenWallAndBox(0.9);
-  EXPECT_FALSE(probe.inside_both);
-  EXPECT_TRUE(probe.free_between);
-}
-
 }  // namespace
 }  // namespace ifar::perception
