@@ -3,13 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
-#include <optional>
 
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
-
-#include "common/geometry/segment.hpp"
 
 namespace ifar::perception {
 namespace {
@@ -88,143 +84,6 @@ void traceContours(const cv::Mat& image, const LayerGrid& grid, ObstacleClass ob
     }
     layer.polygons.push_back(std::move(polygon));
   }
-}
-
-/// Points sorted by the grid cell they fall in, over a window of the grid, so that the points near a cell
-/// are found without looking at the others.
-class CellBuckets {
- public:
-  CellBuckets(const std::vector<geometry::Point>& points, const LayerGrid& grid, const cv::Rect& window)
-      : window_(window), starts_(static_cast<std::size_t>(window.area()) + 1, 0)
-  {
-    std::vector<std::size_t> slots;
-    slots.reserve(points.size());
-    for (const geometry::Point& point : points) {
-      const std::optional<std::size_t> slot = slotOf(grid.cellOf(point));
-      slots.push_back(slot.value_or(kOutside));
-      if (slot) {
-        ++starts_[*slot + 1];
-      }
-    }
-    std::partial_sum(starts_.begin(), starts_.end(), starts_.begin());
-    points_.resize(starts_.back());
-    std::vector<std::size_t> next(starts_.begin(), starts_.end() - 1);
-    for (std::size_t index = 0; index < points.size(); ++index) {
-      if (slots[index] != kOutside) {
-        points_[next[slots[index]]++] = points[index];
-      }
-    }
-  }
-
-  /// The point nearest `centre` no farther than `reach`, among those in the cells at most `reach_cells`
-  /// columns and rows from `cell`.
-  std::optional<geometry::Point> nearest(const geometry::Point& centre, const cv::Point& cell,
-                                         int reach_cells, double reach) const
-  {
-    std::optional<geometry::Point> found;
-    double found_squared = reach * reach;
-    const cv::Rect around =
-        cv::Rect(cell.x - reach_cells, cell.y - reach_cells, 2 * reach_cells + 1, 2 * reach_cells + 1) &
-        window_;
-    for (int row = around.y; row < around.y + around.height; ++row) {
-      const std::size_t first = slotIn(around.x, row);
-      for (std::size_t index = starts_[first];
-           index < starts_[first + static_cast<std::size_t>(around.width)]; ++index) {
-        const double squared = (points_[index] - centre).squaredNorm();
-        if (squared <= found_squared) {
-          found = points_[index];
-          found_squared = squared;
-        }
-      }
-    }
-    return found;
-  }
-
- private:
-  static constexpr std::size_t kOutside = std::numeric_limits<std::size_t>::max();
-
-  std::size_t slotIn(int column, int row) const
-  {
-    return static_cast<std::size_t>(row - window_.y) * static_cast<std::size_t>(window_.width) +
-           static_cast<std::size_t>(column - window_.x);
-  }
-
-  std::optional<std::size_t> slotOf(const std::optional<std::pair<int, int>>& cell) const
-  {
-    if (!cell || !window_.contains(cv::Point(cell->first, cell->second))) {
-      return std::nullopt;
-    }
-    return slotIn(cell->first, cell->second);
-  }
-
-  cv::Rect window_;
-  std::vector<std::size_t> starts_;  ///< per cell of the window (row-major), where its points begin
-  std::vector<geometry::Point> points_;
-};
-
-/// An object's grown cells next to the wall's grown cells where the wall return and the object return
-/// that grew them (the nearest of each class) are closer together than `vehicle_width_m` and the cell
-/// lies across the gap between them: there the two outlines would share an edge along a way the vehicle
-/// does not fit through. Where the returns are farther apart the cells are left out, so a gap the vehicle
-/// fits through stays open whatever cells the returns fall in; where the object runs along the wall (the
-/// cell beside the line between the two returns, not across it) the object's cells stay the object's.
-std::vector<cv::Point> narrowSeamCells(const ClassifiedPoints& points, const LayerGrid& grid,
-                                       const cv::Mat& background, const cv::Mat& movable, int grown_cells,
-                                       double inflation_radius_m, double vehicle_width_m)
-{
-  // Objects are few and near the vehicle while the layer can hold a map's walls: only the part of the
-  // images round the objects' grown cells (and a cell of the wall's beyond) is looked at.
-  std::vector<cv::Point> object_cells;
-  object_cells.reserve(points.movable.size());
-  for (const geometry::Point& point : points.movable) {
-    if (const std::optional<std::pair<int, int>> cell = grid.cellOf(point)) {
-      object_cells.emplace_back(cell->first, cell->second);
-    }
-  }
-  std::vector<cv::Point> seam_cells;
-  if (object_cells.empty()) {
-    return seam_cells;
-  }
-  const int margin = grown_cells + 2;
-  const cv::Rect objects_box = cv::boundingRect(object_cells);
-  const cv::Rect region = cv::Rect(objects_box.x - margin, objects_box.y - margin,
-                                   objects_box.width + 2 * margin, objects_box.height + 2 * margin) &
-                          cv::Rect(0, 0, movable.cols, movable.rows);
-  cv::Mat beside;
-  cv::dilate(background(region), beside, cv::Mat::ones(3, 3, CV_8UC1), cv::Point(-1, -1), 1,
-             cv::BORDER_CONSTANT, cv::Scalar(0));
-  cv::findNonZero(beside & movable(region), seam_cells);
-  std::vector<cv::Point> narrow;
-  if (seam_cells.empty()) {
-    return narrow;
-  }
-  for (cv::Point& cell : seam_cells) {
-    cell += region.tl();
-  }
-  // A grown cell's centre lies within the disc's reach (the radius and half a cell) of the centre of the
-  // cell whose return grew it, the return within half a diagonal of that, and the wall's grown cell is a
-  // neighbour of the seam cell: the returns that grew the seam lie within this of it.
-  const double reach = inflation_radius_m + 3.0 * grid.cell_size_m;
-  const int reach_cells = static_cast<int>(std::ceil(reach / grid.cell_size_m));
-  // Across the gap, the line between the two returns passes through the cell: within half its diagonal.
-  const double across_tolerance = std::sqrt(0.5) * grid.cell_size_m;
-  const cv::Rect window = cv::boundingRect(seam_cells);
-  const cv::Rect searched = cv::Rect(window.x - reach_cells, window.y - reach_cells,
-                                     window.width + 2 * reach_cells, window.height + 2 * reach_cells) &
-                            cv::Rect(0, 0, movable.cols, movable.rows);
-  const CellBuckets walls(points.background, grid, searched);
-  const CellBuckets objects(points.movable, grid, searched);
-  const double width_squared = vehicle_width_m * vehicle_width_m;
-  for (const cv::Point& cell : seam_cells) {
-    const geometry::Point centre = grid.cellCentre(cell.x, cell.y);
-    const std::optional<geometry::Point> wall = walls.nearest(centre, cell, reach_cells, reach);
-    const std::optional<geometry::Point> object = objects.nearest(centre, cell, reach_cells, reach);
-    if (wall && object && (*wall - *object).squaredNorm() < width_squared &&
-        geometry::distanceToSegment(centre, geometry::Segment{*wall, *object}) <= across_tolerance) {
-      narrow.push_back(cell);
-    }
-  }
-  return narrow;
 }
 
 }  // namespace
@@ -318,8 +177,8 @@ LocalLayer buildLocalLayer(const ClassifiedPoints& points, const geometry::Point
   const double outward_m =
       settings.exact_inflation ? settings.inflation_radius_m - reach * settings.cell_size_m : 0.0;
   // Each class gets its own image: a movable object must not merge into the wall it leans on.
-  const auto dilate_class = [&](const std::vector<geometry::Point>& class_points,
-                                std::vector<std::uint8_t>& occupancy) {
+  const auto build_class = [&](const std::vector<geometry::Point>& class_points, ObstacleClass obstacle_class,
+                               std::vector<std::uint8_t>& occupancy) {
     occupancy.assign(static_cast<std::size_t>(cells) * static_cast<std::size_t>(cells), 0);
     if (class_points.empty()) {
       return;
@@ -329,39 +188,12 @@ LocalLayer buildLocalLayer(const ClassifiedPoints& points, const geometry::Point
     // The crop holds every point inside the layer, so what falls outside it is outside the layer.
     layer.points_outside_layer += rasterise(class_points, layer.grid, image);
     cv::dilate(image, image, kernel, cv::Point(-1, -1), 1, cv::BORDER_CONSTANT, cv::Scalar(0));
-  };
-  dilate_class(points.background, layer.background_occupancy);
-  dilate_class(points.movable, layer.movable_occupancy);
-  cv::Mat background(cells, cells, CV_8UC1, layer.background_occupancy.data());
-  cv::Mat movable(cells, cells, CV_8UC1, layer.movable_occupancy.data());
-  if (!points.background.empty()) {
-    // Where the grown images of the two classes touch, their outlines would only share an edge, and a
-    // way along it (of no width) would pass for free. Where wall and object are closer together than the
-    // vehicle is wide, the wall's outline takes in the object's cells next to it, so the two overlap and
-    // that way is closed; a gap the vehicle fits through stays open. Those cells are drawn into the wall's
-    // image for its tracing only: they are the object's, and its own outline is traced as seen (push
-    // planning takes the object's size from it).
-    std::vector<cv::Point> drawn;
-    for (const cv::Point& cell :
-         narrowSeamCells(points, layer.grid, background, movable, reach, settings.inflation_radius_m,
-                         2.0 * settings.inflation_radius_m)) {
-      if (background.at<std::uint8_t>(cell) == 0) {
-        background.at<std::uint8_t>(cell) = 255;
-        drawn.push_back(cell);
-      }
-    }
-    traceContours(background, layer.grid, ObstacleClass::Background, settings, outward_m, layer);
-    for (const cv::Point& cell : drawn) {
-      background.at<std::uint8_t>(cell) = 0;
-    }
-  }
-  if (!points.movable.empty()) {
-    traceContours(movable, layer.grid, ObstacleClass::Movable, settings, outward_m, layer);
-  }
-  for (std::vector<std::uint8_t>* occupancy : {&layer.background_occupancy, &layer.movable_occupancy}) {
-    std::transform(occupancy->begin(), occupancy->end(), occupancy->begin(),
+    traceContours(image, layer.grid, obstacle_class, settings, outward_m, layer);
+    std::transform(occupancy.begin(), occupancy.end(), occupancy.begin(),
                    [](std::uint8_t cell) { return static_cast<std::uint8_t>(cell != 0 ? 1 : 0); });
-  }
+  };
+  build_class(points.background, ObstacleClass::Background, layer.background_occupancy);
+  build_class(points.movable, ObstacleClass::Movable, layer.movable_occupancy);
   return layer;
 }
 

@@ -1,9 +1,5 @@
 #include "planner/perception/local_layer.hpp"
 
-#include <algorithm>
-#include <cmath>
-#include <limits>
-#include <optional>
 #include <utility>
 
 #include <gtest/gtest.h>
@@ -246,98 +242,6 @@ TEST(LocalLayer, WithoutExactInflationBordersLieTheDiscsWholeCellsOut)
     sides += 2;
   }
   EXPECT_NEAR(sum / sides, 2.0 * settings.cell_size_m, 0.01);
-}
-
-/// A wall's returns along y = 0 (x from -2 to 2, unless `with_wall` is false), a box face's along y =
-/// `box_face_y` (x from `box_west_x` to 0.3) and `more_wall`, one layer, its cells 0.15 m with a border at y
-/// = 0. Along the line x = 0.02 between wall and box: whether a cell is grown from both classes, whether a
-/// point lies strictly inside an outline of each class, whether one lies in none, and the lowest point
-/// inside the box's outline.
-struct SeamProbe {
-  bool occupied_both = false;
-  bool inside_both = false;
-  bool free_between = false;
-  double movable_from_m = std::numeric_limits<double>::infinity();
-};
-
-SeamProbe probeBetweenWallAndBox(double box_face_y, bool with_wall = true,
-                                 const std::vector<geometry::Point>& more_wall = {}, double box_west_x = -0.3)
-{
-  const PerceptionSettings settings = sixtyMetreLayer();
-  ClassifiedPoints points;
-  for (int step = 0; with_wall && step <= 80; ++step) {
-    points.background.emplace_back(-2.0 + 0.05 * step, 0.0);
-  }
-  points.background.insert(points.background.end(), more_wall.begin(), more_wall.end());
-  const int box_steps = static_cast<int>(std::lround((0.3 - box_west_x) / 0.05));
-  for (int step = 0; step <= box_steps; ++step) {
-    points.movable.emplace_back(box_west_x + 0.05 * step, box_face_y);
-  }
-  const LocalLayer layer = buildLocalLayer(points, geometry::Point(0.0, 0.0), settings);
-  SeamProbe probe;
-  const int probe_steps = static_cast<int>(std::floor(box_face_y / 0.01));
-  for (int step = 0; step <= probe_steps; ++step) {
-    const double y = 0.01 * step;
-    const geometry::Point point(0.02, y);
-    const std::optional<std::size_t> cell = layer.grid.indexOf(point);
-    probe.occupied_both = probe.occupied_both || (cell && layer.background_occupancy[*cell] != 0 &&
-                                                  layer.movable_occupancy[*cell] != 0);
-    bool in_background = false;
-    bool in_movable = false;
-    for (const LayerPolygon& polygon : layer.polygons) {
-      if (geometry::locatePoint(polygon.vertices, point) == geometry::Containment::Inside) {
-        (polygon.obstacle_class == ObstacleClass::Movable ? in_movable : in_background) = true;
-      }
-    }
-    probe.inside_both = probe.inside_both || (in_background && in_movable);
-    probe.free_between = probe.free_between || (!in_background && !in_movable);
-    if (in_movable) {
-      probe.movable_from_m = std::min(probe.movable_from_m, y);
-    }
-  }
-  return probe;
-}
-
-// 0.6 m from the wall, narrower than the 0.7 m vehicle: grown by the half width, wall and box share a row
-// of cells, so traced from separate images (the box must not merge into the wall) their outlines would
-// share an edge, and a way along it would pass for free. They overlap instead, the wall's outline taking
-// in the box's cells next to it; the box's outline is what it is without the wall (its size is what push
-// planning models).
-TEST(LocalLayer, ABoxAndAWallCloserThanTheVehicleIsWideOverlap)
-{
-  const SeamProbe probe = probeBetweenWallAndBox(0.6);
-  EXPECT_TRUE(probe.occupied_both);
-  EXPECT_TRUE(probe.inside_both);
-  EXPECT_FALSE(probe.free_between);
-  const SeamProbe box_alone = probeBetweenWallAndBox(0.6, false);
-  EXPECT_DOUBLE_EQ(probe.movable_from_m, box_alone.movable_from_m);
-}
-
-// 0.72 m apart the grown cells still share a row, but the vehicle fits between: the outlines meet
-// without overlapping, as they do whatever cells the returns fall in. 0.8 m apart a free row is left.
-TEST(LocalLayer, ABoxAndAWallAsFarApartAsTheVehicleIsWideLeaveTheWayBetweenOpen)
-{
-  const SeamProbe touching = probeBetweenWallAndBox(0.72);
-  EXPECT_TRUE(touching.occupied_both);
-  EXPECT_FALSE(touching.inside_both);
-  const SeamProbe apart = probeBetweenWallAndBox(0.8);
-  EXPECT_FALSE(apart.occupied_both);
-  EXPECT_FALSE(apart.inside_both);
-  EXPECT_TRUE(apart.free_between);
-}
-
-// A longer box 0.72 m from the wall, its west end against a post: post and box are closer than the
-// vehicle is wide, but at the post, not across the way between box and wall, which stays open away from
-// the post (the wall's outline takes in the cell of the box where it meets the post).
-TEST(LocalLayer, ABoxAgainstAPostLeavesTheWayOnItsOtherSideOpen)
-{
-  std::vector<geometry::Point> post;
-  for (int step = 0; step <= 16; ++step) {
-    post.emplace_back(-0.92, 0.72 + 0.05 * step);
-  }
-  const SeamProbe probe = probeBetweenWallAndBox(0.72, true, post, -0.9);
-  EXPECT_TRUE(probe.occupied_both);
-  EXPECT_FALSE(probe.inside_both);
 }
 
 }  // namespace
